@@ -1,0 +1,31 @@
+"""memstribo: friction, adhesion, stiction and coating wear of rough silicon MEMS gear teeth.
+
+The model is organised by topic, one module each, in the order of the chain::
+
+    roughness  -> nanoblock -> potentials/adhesion -> friction   (flat surfaces, thesis ch. 2-3)
+    gear       -> contact   -> mesh                               (meshing cycle, ch. 4)
+    coating    -> asperity/stresses -> damage                     (functionalised teeth, ch. 5)
+
+Each public function implements one published relation in SI units; :mod:`memstribo.chain`
+composes them into the main job (``memstribo run``). Heavy libraries (SurfaceTopography,
+matplotlib, dask) are imported only where they are used, so ``import memstribo`` is quick.
+"""
+
+from importlib.metadata import PackageNotFoundError, version
+
+try:
+    __version__ = version("memstribo")
+except PackageNotFoundError:  # running from a source tree that is not installed
+    __version__ = "0+unknown"
+
+from .errors import ConvergenceError, DataFileError, InputError, MemstriboError  # noqa: E402
+from .parameters import get_parameter_values  # noqa: E402
+
+__all__ = [
+    "__version__",
+    "ConvergenceError",
+    "DataFileError",
+    "InputError",
+    "MemstriboError",
+    "get_parameter_values",
+]

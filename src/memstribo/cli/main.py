@@ -1,0 +1,110 @@
+"""Entry point of the ``memstribo`` command: option parsing, parameters, errors, output."""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import pkgutil
+import sys
+from types import ModuleType
+
+from .. import __version__
+from ..errors import MemstriboError
+from ..output import dumps_json
+
+EXIT_USAGE = 2
+
+DESCRIPTION = """\
+Friction, adhesion, stiction and coating wear between the teeth of silicon MEMS
+microgears, from their measured nanoscale roughness (all results in SI units).
+"""
+
+EPILOG = """\
+Every model parameter can be changed with --set NAME=VALUE (values may carry units:
+--set normal_load="50 uN") or a TOML file (--config FILE); 'memstribo parameters' lists
+them with their defaults and sources. Add --json for one JSON object of SI values.
+"""
+
+
+def _command_modules() -> list[ModuleType]:
+    package = importlib.import_module(__package__)
+    modules = []
+    for info in pkgutil.iter_modules(package.__path__):
+        if info.name in ("main", "common") or info.name.startswith("_"):
+            continue
+        module = importlib.import_module(f"{__package__}.{info.name}")
+        if hasattr(module, "register"):
+            modules.append(module)
+    return sorted(modules, key=lambda m: (getattr(m, "ORDER", 100), m.NAME))
+
+
+def common_options() -> argparse.ArgumentParser:
+    """Options every subcommand takes: --json, --set, --config, --parameter-set."""
+    parent = argparse.ArgumentParser(add_help=False)
+    group = parent.add_argument_group("parameters and output")
+    group.add_argument("--json", action="store_true", help="print exactly one JSON object of SI values")
+    group.add_argument("--set", dest="overrides", action="append", default=[], metavar="NAME=VALUE",
+                       help="override a model parameter; VALUE may carry a unit ('195.5 nm'); repeatable")
+    group.add_argument("--config", metavar="FILE", help="TOML file of parameter overrides")
+    group.add_argument("--parameter-set", default="silicon_thesis", metavar="NAME",
+                       help="parameter set to start from (default: silicon_thesis)")
+    return parent
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="memstribo", description=DESCRIPTION, epilog=EPILOG,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--version", action="version", version=f"memstribo {__version__}")
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
+    parents = [common_options()]
+    for module in _command_modules():
+        module.register(subparsers, parents)
+    return parser
+
+
+def load_parameters(args: argparse.Namespace):
+    """The parameter set named by ``--parameter-set`` with ``--config`` then ``--set`` applied."""
+    from ..parameters import get_parameter_values, parse_assignment, read_config
+
+    params = get_parameter_values(args.parameter_set)
+    args.config_tables = {}
+    if args.config:
+        config = read_config(args.config)
+        params = params.updated(config.pop("parameters"), origin=f"config file {args.config}")
+        args.config_tables = config
+    if args.overrides:
+        overrides = dict(parse_assignment(text) for text in args.overrides)
+        params = params.updated(overrides, origin="--set")
+    return params
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "handler", None):
+        parser.print_help()
+        return EXIT_USAGE
+    try:
+        params = load_parameters(args)
+        result = args.handler(args, params)
+    except MemstriboError as exc:
+        print(f"memstribo {args.command}: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        print(f"memstribo {args.command}: interrupted", file=sys.stderr)
+        return 130
+    except Exception as exc:  # a bug: say so briefly, full traceback on request
+        if os.environ.get("MEMSTRIBO_DEBUG"):
+            raise
+        print(f"memstribo {args.command}: internal error: {type(exc).__name__}: {exc}\n"
+              "This is a bug in memstribo; rerun with MEMSTRIBO_DEBUG=1 for the traceback and report it.",
+              file=sys.stderr)
+        return 1
+    if result is not None:
+        print(dumps_json(result.values) if args.json else result.to_text())
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

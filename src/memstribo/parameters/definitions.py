@@ -1,0 +1,129 @@
+"""What each model parameter is: canonical name, SI unit, type, allowed range.
+
+The *values* live in parameter sets (``sets/*.toml``) with their provenance; this table
+says what a value must look like. Each topic has its own section: add a parameter to the
+section of the module that uses it, and give it a default in ``sets/silicon_thesis.toml``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class ParameterSpec:
+    """Definition of one model parameter.
+
+    Attributes
+    ----------
+    name : str
+        Canonical name, used by ``--set NAME=VALUE``, config files and the library.
+    unit : str
+        SI unit in pint syntax (``""`` for dimensionless); values are stored in it.
+    description : str
+        One line saying what it is.
+    kind : str
+        ``"float"``, ``"int"``, ``"str"`` or ``"bool"``.
+    minimum, maximum : float or None
+        Allowed range; ``None`` for no bound.
+    exclusive_minimum, exclusive_maximum : bool
+        Whether the bounds themselves are excluded.
+    optional : bool
+        Whether the value may be ``None`` ("derive it", see the description).
+    choices : tuple of str or None
+        Allowed values of a string parameter.
+    """
+
+    name: str
+    unit: str
+    description: str
+    kind: str = "float"
+    minimum: float | None = None
+    maximum: float | None = None
+    exclusive_minimum: bool = False
+    exclusive_maximum: bool = False
+    optional: bool = False
+    choices: tuple[str, ...] | None = None
+
+    def allowed(self) -> str:
+        """Human-readable description of the allowed values."""
+        if self.kind == "str":
+            return "one of " + ", ".join(repr(c) for c in self.choices) if self.choices else "a string"
+        if self.kind == "bool":
+            return "true or false"
+        parts = []
+        if self.minimum is not None:
+            parts.append(f"{'>' if self.exclusive_minimum else '>='} {self.minimum:g}")
+        if self.maximum is not None:
+            parts.append(f"{'<' if self.exclusive_maximum else '<='} {self.maximum:g}")
+        what = "an integer" if self.kind == "int" else "a number"
+        text = what + (" " + " and ".join(parts) if parts else "")
+        if self.unit:
+            text += f" (SI unit {self.unit}, or a value with a unit)"
+        if self.optional:
+            text += ", or unset to derive it"
+        return text
+
+
+def _positive(name, unit, description, **kw):
+    return ParameterSpec(name, unit, description, minimum=0.0, exclusive_minimum=True, **kw)
+
+
+def _nonnegative(name, unit, description, **kw):
+    return ParameterSpec(name, unit, description, minimum=0.0, **kw)
+
+
+_SPECS = [
+    # --- material (potentials, adhesion) ------------------------------------------------
+    _positive("youngs_modulus", "Pa", "Young's modulus E of the tooth material (silicon)"),
+    ParameterSpec("poisson_ratio", "", "Poisson's ratio nu of the tooth material",
+                  minimum=-1.0, maximum=0.5, exclusive_minimum=True),
+    _positive("counter_youngs_modulus", "Pa", "Young's modulus of the counter body (gear tooth); unset: same as youngs_modulus",
+              optional=True),
+    ParameterSpec("counter_poisson_ratio", "", "Poisson's ratio of the counter body; unset: same as poisson_ratio",
+                  minimum=-1.0, maximum=0.5, exclusive_minimum=True, optional=True),
+    _positive("lattice_constant", "m", "Lattice constant of the crystal"),
+    _positive("bond_length", "m", "Chemical bond length D_chem (also the sliding distance per bond break)"),
+    _positive("bond_energy", "J", "Energy of one chemical bond U_chem"),
+    _nonnegative("vdw_bond_energy", "J", "Energy of one van der Waals bond U_vdW"),
+    _positive("hamaker_constant", "J", "Hamaker constant A"),
+    _positive("cutoff_distance", "m", "Cut-off (contact) separation D0 of the vdW interaction"),
+    _positive("work_of_adhesion", "J/m^2", "Work of adhesion w12; unset: A / (12 pi D0^2) (3-34)", optional=True),
+    ParameterSpec("threshold_strain", "", "Strain at which an atomic block turns rigid (bilinear law)",
+                  minimum=0.0, maximum=1.0, exclusive_minimum=True),
+    # --- nanoblock geometry ---------------------------------------------------------------
+    _positive("atomic_width", "m", "Width w_at of a square atomic-subscale block"),
+    _positive("atomic_height", "m", "Height H_at of an atomic-subscale block"),
+    _positive("adhesive_width", "m", "Width w_adh of a square adhesive-subscale block (the nanoblock)"),
+    _positive("adhesive_height", "m", "Height H_adh of an adhesive-subscale block"),
+    ParameterSpec("atomic_per_side", "", "Atomic blocks per side m of a nanoblock (m x m blocks)", kind="int",
+                  minimum=1),
+    _positive("atomic_pitch", "m", "Centre-to-centre pitch of the atomic blocks (about lambda_q)"),
+    _positive("bulk_height", "m", "Height of the elastic bulk segment under a nanoblock; unset: adhesive_width",
+              optional=True),
+    ParameterSpec("slider_blocks", "", "Adhesive blocks in the sliding structure of the flat-friction models",
+                  kind="int", minimum=1),
+    # --- roughness (default synthetic profile) -----------------------------------------------
+    _positive("roughness_rq", "m", "Rq of the default synthetic roughness profile"),
+    _positive("roughness_rms_slope", "", "rms slope (Delta q) of the default synthetic roughness profile"),
+    _positive("roughness_sample_spacing", "m", "Sampling step of the default synthetic profile (as measured)"),
+    _positive("roughness_resample_spacing", "m", "Step after PCHIP resampling; unset: no resampling", optional=True),
+    ParameterSpec("roughness_seed", "", "Seed of the default synthetic roughness profile", kind="int", minimum=0),
+    # --- gear geometry and operation ----------------------------------------------------------
+    ParameterSpec("teeth_pinion", "", "Number of teeth z1 of the pinion (driver)", kind="int", minimum=5),
+    ParameterSpec("teeth_gear", "", "Number of teeth z2 of the gear (driven)", kind="int", minimum=5),
+    _positive("module", "m", "Module m of the gear pair (pitch diameter / teeth)"),
+    ParameterSpec("pressure_angle", "rad", "Pressure angle (give units: '20 deg')", minimum=0.0,
+                  maximum=math.pi / 2, exclusive_minimum=True, exclusive_maximum=True),
+    _positive("addendum_coefficient", "", "Addendum in modules (standard: 1)"),
+    _positive("face_width", "m", "Face width of the teeth"),
+    _positive("normal_load", "N", "Normal load F_ext carried by the teeth in contact"),
+    _positive("drive_torque", "N*m", "Torque on the pinion; F_t = T / r_pitch,pinion (4-27)"),
+    _positive("pinion_speed", "rad/s", "Angular speed omega1 of the pinion (sets the time axis only)"),
+    # --- meshing simulation ---------------------------------------------------------------------
+    # --- coatings and wear ----------------------------------------------------------------------
+    # --- damage and lifetime --------------------------------------------------------------------
+]
+
+SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}

@@ -1,0 +1,106 @@
+"""References as data, and a record of which ones a run used.
+
+Each model function names its sources with :func:`cites`; calling it records the keys,
+so a run can list the papers it rests on (:func:`used_references`), as PyBaMM's
+``print_citations`` does. Add new sources to :data:`REFERENCES`.
+"""
+
+from __future__ import annotations
+
+import functools
+
+REFERENCES: dict[str, str] = {
+    "thesis": (
+        "N. S. T. Almuramady, 'Dry friction between rough surfaces of silicon and functionalized gear "
+        "microelectromechanical systems', PhD thesis, Cardiff University. Equation numbers such as (3-7) in "
+        "memstribo's docstrings are this thesis's."
+    ),
+    "model": "memstribo's specification, docs/model.md (decisions where the thesis is ambiguous).",
+    "borodich_savencu_2017": (
+        "F. M. Borodich, O. Savencu, 'Hierarchical models of engineering rough surfaces and bio-inspired "
+        "adhesives', in Bio-inspired Structured Adhesives, Springer, 2017. doi:10.1007/978-3-319-59114-8_10"
+    ),
+    "borodich_2014": (
+        "F. M. Borodich, 'The Hertz-type and adhesive contact problems for depth-sensing indentation', "
+        "Adv. Appl. Mech. 47 (2014) 225-366. doi:10.1016/B978-0-12-800130-1.00003-5"
+    ),
+    "galin_1961": "L. A. Galin, Contact Problems in the Theory of Elasticity, 1953; transl. NC State College, 1961.",
+    "sneddon_1965": (
+        "I. N. Sneddon, 'The relation between load and penetration in the axisymmetric Boussinesq problem "
+        "for a punch of arbitrary profile', Int. J. Eng. Sci. 3 (1965) 47-57. doi:10.1016/0020-7225(65)90019-4"
+    ),
+    "johnson_1985": "K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985. doi:10.1017/CBO9781139171731",
+    "hamilton_1983": (
+        "G. M. Hamilton, 'Explicit equations for the stresses beneath a sliding spherical contact', "
+        "Proc. IMechE C 197 (1983) 53-59. doi:10.1243/PIME_PROC_1983_197_076_02"
+    ),
+    "polonsky_keer_1999": (
+        "I. A. Polonsky, L. M. Keer, 'A numerical method for solving rough contact problems based on the "
+        "multi-level multi-summation and conjugate gradient techniques', Wear 231 (1999) 206-219. "
+        "doi:10.1016/S0043-1648(99)00113-1"
+    ),
+    "maugis_1992": (
+        "D. Maugis, 'Adhesion of spheres: the JKR-DMT transition using a Dugdale model', "
+        "J. Colloid Interface Sci. 150 (1992) 243-269. doi:10.1016/0021-9797(92)90285-T"
+    ),
+    "kendall_1971": (
+        "K. Kendall, 'The adhesion and surface energy of elastic solids', J. Phys. D 4 (1971) 1186. "
+        "doi:10.1088/0022-3727/4/8/320"
+    ),
+    "israelachvili_2011": "J. N. Israelachvili, Intermolecular and Surface Forces, 3rd ed., Academic Press, 2011.",
+    "iso_4287": "ISO 4287:1997, Geometrical Product Specifications (GPS) - Surface texture: Profile method.",
+    "iso_25178": "ISO 25178-2:2012, Geometrical product specifications (GPS) - Surface texture: Areal.",
+    "fritsch_carlson_1980": (
+        "F. N. Fritsch, R. E. Carlson, 'Monotone piecewise cubic interpolation', SIAM J. Numer. Anal. 17 "
+        "(1980) 238-246. doi:10.1137/0717021"
+    ),
+    "jacobs_2017": (
+        "T. D. B. Jacobs, T. Junge, L. Pastewka, 'Quantitative characterization of surface topography using "
+        "spectral analysis', Surf. Topogr.: Metrol. Prop. 5 (2017) 013001. doi:10.1088/2051-672X/aa51f8"
+    ),
+    "teodorescu_2009": (
+        "M. Teodorescu, S. Theodossiades, H. Rahnejat, 'Impact dynamics of rough and surface protected MEMS "
+        "gears', Tribol. Int. 42 (2009) 197-205. doi:10.1016/j.triboint.2008.04.012"
+    ),
+    "goryacheva_torskaya_2003": (
+        "I. G. Goryacheva, E. V. Torskaya, 'Stress and fracture analysis in periodic contact problem for "
+        "coated bodies', Fatigue Fract. Eng. Mater. Struct. 26 (2003) 343-348. doi:10.1046/j.1460-2695.2003.00620.x"
+    ),
+    "rabotnov_1963": "Yu. N. Rabotnov, 'On the equations of state for creep', Progress in Applied Mechanics, 1963.",
+    "srinivasan_1998": (
+        "U. Srinivasan, M. R. Houston, R. T. Howe, R. Maboudian, 'Alkyltrichlorosilane-based self-assembled "
+        "monolayer films for stiction reduction in silicon micromachines', J. Microelectromech. Syst. 7 (1998) "
+        "252-260. doi:10.1109/84.679393"
+    ),
+}
+
+_used: dict[str, None] = {}
+
+
+def cites(*keys: str):
+    """Decorator: record ``keys`` in the run's reference list each time the function runs."""
+    unknown = [key for key in keys if key not in REFERENCES]
+    if unknown:
+        raise KeyError(f"unknown reference key(s) {unknown}; add them to memstribo.references.REFERENCES")
+
+    def decorate(function):
+        @functools.wraps(function)
+        def wrapper(*args, **kwargs):
+            for key in keys:
+                _used[key] = None
+            return function(*args, **kwargs)
+
+        wrapper.references = keys
+        return wrapper
+
+    return decorate
+
+
+def used_references() -> list[tuple[str, str]]:
+    """The references used since the start (or the last :func:`reset_used_references`)."""
+    return [(key, REFERENCES[key]) for key in _used]
+
+
+def reset_used_references() -> None:
+    """Forget the references recorded so far."""
+    _used.clear()

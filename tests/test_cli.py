@@ -1,0 +1,52 @@
+"""The CLI framework: help, version, --set/--config, errors without tracebacks."""
+
+import subprocess
+import sys
+
+from memstribo import __version__
+
+
+def test_help_lists_subcommands(cli, capsys):
+    import pytest
+
+    with pytest.raises(SystemExit) as exc:
+        from memstribo.cli.main import main
+
+        main(["--help"])
+    assert exc.value.code == 0
+    out = capsys.readouterr().out
+    assert "parameters" in out
+
+
+def test_version():
+    out = subprocess.run([sys.executable, "-m", "memstribo.cli.main", "--version"], capture_output=True, text=True)
+    assert out.returncode == 0
+    assert __version__ in out.stdout
+
+
+def test_parameters_json_and_set(cli):
+    values = cli.json("parameters", "--set", "normal_load=50 uN", "--set", "poisson_ratio=0.5")
+    assert values["normal_load"] == 50e-6
+    assert values["poisson_ratio"] == 0.5
+
+
+def test_config_file(cli, tmp_path):
+    config = tmp_path / "c.toml"
+    config.write_text('[parameters]\nnormal_load = "100 uN"\nface_width = "4 um"\n')
+    values = cli.json("parameters", "--config", config)
+    assert values["normal_load"] == 100e-6
+    assert values["face_width"] == 4e-6
+
+
+def test_bad_parameter_exits_2_without_traceback(cli):
+    code, out, err = cli("parameters", "--set", "youngs_modulus=-1")
+    assert code == 2
+    assert "youngs_modulus" in err and "Traceback" not in err
+    code, out, err = cli("parameters", "--set", "poisson")
+    assert code == 2 and "NAME=VALUE" in err
+
+
+def test_no_command_prints_help(cli):
+    code, out, err = cli()
+    assert code == 2
+    assert "usage" in out
