@@ -1,0 +1,478 @@
+"""Closed-form contact solutions: the references the numerical contact solver is checked against.
+
+All functions take and return SI values and broadcast over numpy arrays. The elastic
+bodies enter through the contact (reduced) modulus ``contact_modulus`` E* with
+``1/E* = (1 - nu1**2)/E1 + (1 - nu2**2)/E2``.
+
+Line contacts (plane strain) are per unit face width: ``load`` is w [N/m]. In plane
+strain the surface displacement of a half-plane under a finite load grows like
+``log(distance)``, so the rigid-body approach of a line contact is defined only relative to
+a datum. memstribo's datum (also used by :func:`memstribo.contact.solve_line_contact`) is
+the far field: the surface displacement under a load w tends to
+``(2 w / (pi E*)) ln(reference_distance / r)`` at a distance ``r`` from the load, i.e. the
+displacement vanishes at ``reference_distance`` from a point load. With this datum the
+Hertz approach :func:`hertz_line_approach` is exact for any ``reference_distance``;
+:func:`hertz_line_approach_to_point` gives the approach measured to a surface point at a
+finite distance instead.
+
+References
+----------
+.. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985,
+   sections 2.8, 4.2, 4.3, 5.6 and 13.1. :doi:`10.1017/CBO9781139171731`
+.. [2] N. S. T. Almuramady, PhD thesis, Cardiff University, Eqs. (4-22) to (4-26).
+.. [3] H. M. Westergaard, 'Bearing pressures and cracks', J. Appl. Mech. 6 (1939) A49-A53.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from memstribo.errors import InputError
+from memstribo.references import cites
+
+__all__ = [
+    "hertz_line_half_width",
+    "hertz_line_peak_pressure",
+    "hertz_line_pressure",
+    "hertz_line_approach",
+    "hertz_line_approach_to_point",
+    "hertz_sphere_radius",
+    "hertz_sphere_approach",
+    "hertz_sphere_peak_pressure",
+    "hertz_sphere_pressure",
+    "flat_punch_line_pressure",
+    "westergaard_mean_pressure",
+    "westergaard_contact_half_width",
+    "westergaard_pressure",
+]
+
+
+def _positive(name, value):
+    array = np.asanyarray(value, dtype=float)
+    if not np.all(np.isfinite(array)) or np.any(array <= 0):
+        raise InputError(f"{name} must be positive and finite, got {value!r}")
+    return array
+
+
+# --------------------------------------------------------------------------- Hertz line contact
+
+
+@cites("johnson_1985", "thesis")
+def hertz_line_half_width(load, radius, contact_modulus):
+    r"""Half-width of the Hertz line (cylinder) contact.
+
+    Parameters
+    ----------
+    load : numeric
+        Load per unit face width w [N/m].
+    radius : numeric
+        Effective radius of curvature R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        Contact half-width a [m].
+
+    Notes
+    -----
+    .. math:: a = \sqrt{\frac{4 w R}{\pi E^*}}
+
+    Eq. (4.43) in [1]_ and Eq. (4-22) in [2]_ (section 6 of docs/model.md).
+
+    Examples
+    --------
+    >>> round(hertz_line_half_width(12.5, 20e-6, 100e9) * 1e9, 2)
+    56.42
+    """
+    w = _positive("load", load)
+    return np.sqrt(4.0 * w * _positive("radius", radius) / (np.pi * _positive("contact_modulus", contact_modulus)))
+
+
+@cites("johnson_1985", "thesis")
+def hertz_line_peak_pressure(load, radius, contact_modulus):
+    r"""Peak pressure of the Hertz line contact.
+
+    Parameters
+    ----------
+    load : numeric
+        Load per unit face width w [N/m].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        Peak pressure p0 [Pa].
+
+    Notes
+    -----
+    .. math:: p_0 = \frac{2 w}{\pi a} = \sqrt{\frac{w E^*}{\pi R}}
+
+    Eq. (4.44) in [1]_, Eq. (4-23) in [2]_.
+    """
+    return 2.0 * _positive("load", load) / (np.pi * hertz_line_half_width(load, radius, contact_modulus))
+
+
+@cites("johnson_1985")
+def hertz_line_pressure(x, load, radius, contact_modulus):
+    r"""Hertz pressure distribution of a line contact.
+
+    Parameters
+    ----------
+    x : numeric
+        Position from the contact centre [m].
+    load : numeric
+        Load per unit face width w [N/m].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        Pressure p(x) [Pa], zero outside the contact.
+
+    Notes
+    -----
+    .. math:: p(x) = p_0 \sqrt{1 - x^2/a^2}, \quad |x| \le a
+
+    Eq. (4.42) in [1]_.
+    """
+    a = hertz_line_half_width(load, radius, contact_modulus)
+    p0 = hertz_line_peak_pressure(load, radius, contact_modulus)
+    ratio = np.asanyarray(x, dtype=float) / a
+    return p0 * np.sqrt(np.clip(1.0 - ratio**2, 0.0, None))
+
+
+@cites("johnson_1985")
+def hertz_line_approach(load, radius, contact_modulus, reference_distance):
+    r"""Approach of a Hertz line contact relative to memstribo's far-field datum.
+
+    Parameters
+    ----------
+    load : numeric
+        Load per unit face width w [N/m].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    reference_distance : numeric
+        Datum distance L [m]: the displacement due to a point load is taken as zero at
+        distance L from it (module docstring).
+
+    Returns
+    -------
+    numeric
+        Approach (elastic displacement at the contact centre) delta [m].
+
+    Notes
+    -----
+    With the half-plane displacement :math:`u(x) = \frac{2}{\pi E^*}\int p(s)\ln\frac{L}{|x-s|}ds`
+    and the Hertz pressure, :math:`u(0)` is
+
+    .. math:: \delta = \frac{w}{\pi E^*}\left(1 + 2\ln\frac{2L}{a}\right)
+
+    the far-field limit of the cylinder approach in section 5.6 of [1]_ (derivation in
+    docs/contact.md). A 2D approach needs such a reference length; it is not a property of
+    the contact alone.
+    """
+    w = _positive("load", load)
+    L = _positive("reference_distance", reference_distance)
+    a = hertz_line_half_width(load, radius, contact_modulus)
+    return w / (np.pi * _positive("contact_modulus", contact_modulus)) * (1.0 + 2.0 * np.log(2.0 * L / a))
+
+
+@cites("johnson_1985")
+def hertz_line_approach_to_point(load, radius, contact_modulus, distance):
+    r"""Approach of a Hertz line contact measured to a surface point at a finite distance.
+
+    Parameters
+    ----------
+    load : numeric
+        Load per unit face width w [N/m].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    distance : numeric
+        Distance d >= a of the surface reference point from the contact centre [m].
+
+    Returns
+    -------
+    numeric
+        u(0) - u(d) [m], the displacement of the centre relative to that point.
+
+    Notes
+    -----
+    With D = d/a >= 1,
+
+    .. math:: \delta(d) = \frac{2w}{\pi E^*}\left(D^2 - D\sqrt{D^2-1} + \operatorname{arccosh} D\right)
+
+    which gives a²/(2R) at D = 1 (the contact edge) and tends to
+    :func:`hertz_line_approach` with L = d for D >> 1 (docs/contact.md).
+    """
+    w = _positive("load", load)
+    a = hertz_line_half_width(load, radius, contact_modulus)
+    D = _positive("distance", distance) / a
+    if np.any(D < 1.0):
+        raise InputError("distance must be at least the Hertz half-width a (the point must lie outside the contact)")
+    return 2.0 * w / (np.pi * _positive("contact_modulus", contact_modulus)) * (
+        D**2 - D * np.sqrt(D**2 - 1.0) + np.arccosh(D))
+
+
+# ------------------------------------------------------------------------------ Hertz sphere
+
+
+@cites("johnson_1985")
+def hertz_sphere_radius(force, radius, contact_modulus):
+    r"""Contact radius of a Hertz sphere-on-flat contact.
+
+    Parameters
+    ----------
+    force : numeric
+        Normal force F [N].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        Contact radius a [m].
+
+    Notes
+    -----
+    .. math:: a = \left(\frac{3 F R}{4 E^*}\right)^{1/3}
+
+    Eq. (4.22) in [1]_.
+    """
+    return np.cbrt(3.0 * _positive("force", force) * _positive("radius", radius)
+                   / (4.0 * _positive("contact_modulus", contact_modulus)))
+
+
+@cites("johnson_1985")
+def hertz_sphere_approach(force, radius, contact_modulus):
+    r"""Approach (mutual indentation) of a Hertz sphere contact.
+
+    Parameters
+    ----------
+    force : numeric
+        Normal force F [N].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        Approach delta = a²/R [m].
+
+    Notes
+    -----
+    Eq. (4.23) in [1]_.
+    """
+    return hertz_sphere_radius(force, radius, contact_modulus) ** 2 / _positive("radius", radius)
+
+
+@cites("johnson_1985")
+def hertz_sphere_peak_pressure(force, radius, contact_modulus):
+    r"""Peak pressure of a Hertz sphere contact.
+
+    Parameters
+    ----------
+    force : numeric
+        Normal force F [N].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        p0 = 3F/(2 pi a²) [Pa].
+
+    Notes
+    -----
+    Eq. (4.21) in [1]_.
+    """
+    a = hertz_sphere_radius(force, radius, contact_modulus)
+    return 3.0 * _positive("force", force) / (2.0 * np.pi * a**2)
+
+
+@cites("johnson_1985")
+def hertz_sphere_pressure(r, force, radius, contact_modulus):
+    r"""Hertz pressure distribution of a sphere contact.
+
+    Parameters
+    ----------
+    r : numeric
+        Radial distance from the contact centre [m].
+    force : numeric
+        Normal force F [N].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        p(r) = p0 sqrt(1 - r²/a²) inside the contact, 0 outside [Pa].
+
+    Notes
+    -----
+    Eq. (4.20) in [1]_.
+    """
+    a = hertz_sphere_radius(force, radius, contact_modulus)
+    ratio = np.asanyarray(r, dtype=float) / a
+    return hertz_sphere_peak_pressure(force, radius, contact_modulus) * np.sqrt(np.clip(1.0 - ratio**2, 0.0, None))
+
+
+# ------------------------------------------------------------------- rigid flat punch (2D)
+
+
+@cites("johnson_1985")
+def flat_punch_line_pressure(x, load, half_width):
+    r"""Pressure under a rigid flat punch pressed into a half-plane (plane strain).
+
+    Parameters
+    ----------
+    x : numeric
+        Position from the punch centre [m].
+    load : numeric
+        Load per unit face width w [N/m].
+    half_width : numeric
+        Punch half-width b [m].
+
+    Returns
+    -------
+    numeric
+        p(x) = w / (pi sqrt(b² - x²)) for |x| < b, 0 outside [Pa] (singular at the edges).
+
+    Notes
+    -----
+    Eq. (2.64) in [1]_ (section 2.8).
+    """
+    b = _positive("half_width", half_width)
+    x = np.asanyarray(x, dtype=float)
+    inside = np.abs(x) < b
+    squared = np.where(inside, b**2 - x**2, 1.0)
+    return np.where(inside, _positive("load", load) / (np.pi * np.sqrt(squared)), 0.0)
+
+
+# ----------------------------------------------------- Westergaard periodic wavy contact (2D)
+
+
+def _westergaard_full_contact_pressure(amplitude, wavelength, contact_modulus):
+    return np.pi * _positive("contact_modulus", contact_modulus) * _positive("amplitude", amplitude) / _positive(
+        "wavelength", wavelength)
+
+
+@cites("johnson_1985")
+def westergaard_mean_pressure(half_width, amplitude, wavelength, contact_modulus):
+    r"""Mean pressure of a periodic wavy line contact for a given contact half-width.
+
+    The undeformed gap is :math:`h(x) = \Delta (1 - \cos(2\pi x/\lambda))` (peak-to-valley 2Δ)
+    against a flat, periodic with wavelength λ.
+
+    Parameters
+    ----------
+    half_width : numeric
+        Contact half-width a, 0 <= a <= λ/2 [m].
+    amplitude : numeric
+        Amplitude Δ [m].
+    wavelength : numeric
+        Wavelength λ [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        Mean (nominal) pressure p̄ = p* sin²(π a/λ) with p* = π E* Δ/λ [Pa].
+
+    Notes
+    -----
+    Eq. (13.6) in [1]_ (Westergaard [3]_).
+    """
+    p_star = _westergaard_full_contact_pressure(amplitude, wavelength, contact_modulus)
+    return p_star * np.sin(np.pi * np.asanyarray(half_width, dtype=float) / wavelength) ** 2
+
+
+@cites("johnson_1985")
+def westergaard_contact_half_width(mean_pressure, amplitude, wavelength, contact_modulus):
+    r"""Contact half-width of a periodic wavy line contact at a given mean pressure.
+
+    Parameters
+    ----------
+    mean_pressure : numeric
+        Mean pressure p̄ [Pa]; at p̄ >= p* = π E* Δ/λ the contact is complete (a = λ/2).
+    amplitude : numeric
+        Amplitude Δ [m].
+    wavelength : numeric
+        Wavelength λ [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        a = (λ/π) arcsin(sqrt(p̄/p*)) [m].
+
+    Notes
+    -----
+    Inverse of Eq. (13.6) in [1]_.
+    """
+    p_star = _westergaard_full_contact_pressure(amplitude, wavelength, contact_modulus)
+    ratio = np.clip(_positive("mean_pressure", mean_pressure) / p_star, 0.0, 1.0)
+    return wavelength / np.pi * np.arcsin(np.sqrt(ratio))
+
+
+@cites("johnson_1985")
+def westergaard_pressure(x, mean_pressure, amplitude, wavelength, contact_modulus):
+    r"""Pressure of a periodic wavy line contact (Westergaard).
+
+    Parameters
+    ----------
+    x : numeric
+        Position from a crest (the centre of a contact) [m].
+    mean_pressure : numeric
+        Mean pressure p̄ [Pa].
+    amplitude : numeric
+        Amplitude Δ [m] of :math:`h(x) = \Delta (1 - \cos(2\pi x/\lambda))`.
+    wavelength : numeric
+        Wavelength λ [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        p(x) [Pa].
+
+    Notes
+    -----
+    Partial contact (p̄ < p*), Eq. (13.7) in [1]_:
+
+    .. math:: p(x) = \frac{2\bar p \cos(\pi x/\lambda)}{\sin^2(\pi a/\lambda)}
+              \sqrt{\sin^2(\pi a/\lambda) - \sin^2(\pi x/\lambda)}
+
+    Full contact (p̄ >= p*): :math:`p(x) = \bar p + p^* \cos(2\pi x/\lambda)`.
+    """
+    p_bar = _positive("mean_pressure", mean_pressure)
+    p_star = _westergaard_full_contact_pressure(amplitude, wavelength, contact_modulus)
+    x = np.asanyarray(x, dtype=float)
+    if np.all(p_bar >= p_star):
+        return p_bar + p_star * np.cos(2.0 * np.pi * x / wavelength)
+    a = westergaard_contact_half_width(mean_pressure, amplitude, wavelength, contact_modulus)
+    s_a = np.sin(np.pi * a / wavelength) ** 2
+    s_x = np.sin(np.pi * x / wavelength) ** 2
+    return 2.0 * p_bar * np.abs(np.cos(np.pi * x / wavelength)) / s_a * np.sqrt(np.clip(s_a - s_x, 0.0, None))
