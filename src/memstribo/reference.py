@@ -83,7 +83,7 @@ def hertz_line_half_width(load, radius, contact_modulus):
 
     Examples
     --------
-    >>> round(hertz_line_half_width(12.5, 20e-6, 100e9) * 1e9, 2)
+    >>> round(float(hertz_line_half_width(12.5, 20e-6, 100e9)) * 1e9, 2)
     56.42
     """
     w = _positive("load", load)
