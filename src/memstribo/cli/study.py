@@ -1,0 +1,69 @@
+"""``memstribo study SPEC.toml``: a grid or list of points through dask.distributed, resumable."""
+
+from __future__ import annotations
+
+import sys
+
+from .common import CommandResult
+
+NAME = "study"
+HELP = "run a parameter study (grid or list of points) on Dask; resumable after an interruption"
+ORDER = 80
+
+DESCRIPTION = """\
+Run a parameter study: every point of SPEC.toml (a [study] table with a grid and/or a list
+of points over model parameters and coating, wear, roughness, seed, steps) through
+dask.distributed. Each finished point is written at once to OUT/points/; after an
+interruption (even kill -9) rerun with --resume: no point is lost and none is computed
+twice. Results go to OUT/results.nc and OUT/results.csv. See docs/studies.md.
+"""
+
+
+def register(subparsers, parents):
+    import argparse
+
+    parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=DESCRIPTION,
+                                   formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("spec", metavar="SPEC.toml", help="study specification (see examples/study_load_wear.toml)")
+    parser.add_argument("--out", default=None, metavar="DIR",
+                        help="output folder (default: memstribo-study-<spec file name>)")
+    parser.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                        help="address of an existing Dask scheduler (tcp://host:8786); default: a local cluster")
+    parser.add_argument("--workers", type=int, default=None, metavar="N",
+                        help="worker processes of the local cluster (default: number of cores)")
+    parser.add_argument("--resume", action="store_true", help="finish a study interrupted in --out")
+    parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
+                        help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    parser.set_defaults(handler=run)
+
+
+def run(args, params):
+    from pathlib import Path
+
+    from ..errors import InputError
+    from ..study import load_study_spec, run_study
+
+    spec = load_study_spec(args.spec)
+    if args.workers is not None and args.workers < 1:
+        raise InputError(f"--workers {args.workers}: give a positive integer.")
+    out = Path(args.out) if args.out else Path(f"memstribo-study-{Path(args.spec).stem}")
+    progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
+    result = run_study(spec, out, params, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
+                       progress=progress)
+    values = {
+        "name": spec.name,
+        "function": spec.function,
+        "points": result.n_points,
+        "computed": result.n_computed,
+        "reused": result.n_reused,
+        "failed": result.n_failed,
+        "elapsed": result.elapsed,
+        "folder": str(result.folder),
+        "results_netcdf": str(result.folder / "results.nc"),
+        "results_csv": str(result.folder / "results.csv"),
+    }
+    units = {"elapsed": "s"}
+    notes = [f"  failed point {pid}: {message}" for pid, message in list(result.errors.items())[:10]]
+    if result.n_failed > 10:
+        notes.append(f"  ... and {result.n_failed - 10} more (see the 'error' column of results.csv)")
+    return CommandResult(values=values, units=units, title=f"study '{spec.name}'", notes=notes)

@@ -1,0 +1,617 @@
+"""Parameter studies on dask.distributed: grids or lists of points, resumable.
+
+A study is a list of *points*; each point is a set of overrides (model parameters such as
+``normal_load`` or ``module``, plus the study keys ``coating``, ``wear``, ``roughness``,
+``seed`` and ``steps``) applied to a base parameter set. A *point function* turns the
+parameters of one point into a dict of scalar results (SI units). The default point
+function, ``"mesh"``, is the meshing-cycle summary of :func:`memstribo.mesh.simulate_mesh`
+and :func:`memstribo.mesh.summarize` (the keys of ``memstribo mesh --json``).
+
+The points run on a dask.distributed cluster: an embedded ``LocalCluster`` (processes, one
+thread each, no dashboard) or an existing cluster given by its scheduler address. Results do
+not depend on the scheduler or the number of workers: every point is a pure function of its
+parameters (random roughness is seeded by the point's ``roughness_seed``) and holds no global
+state.
+
+Every finished point is written at once to ``OUT/points/<id>.json`` (temporary file,
+``fsync``, atomic rename); ``OUT/study.json`` (the manifest) lists every point and a hash of
+the study. After an interruption, even ``kill -9``, rerunning with ``resume=True`` computes
+only the points that have no file yet: none is lost and none is computed twice. At the end
+``OUT/results.nc`` and ``OUT/results.csv`` gather all points.
+
+Spec file (TOML)::
+
+    [parameters]                    # optional: base overrides for every point
+    mesh_steps = 40
+
+    [study]
+    name = "load sweep"
+    function = "mesh"               # built-in name, or "package.module:function"
+
+    [study.fixed]                   # optional: overrides for every point
+    coating = "OTS"
+
+    [study.grid]                    # every combination, in the order written
+    normal_load = ["25 uN", "100 uN", "300 uN"]
+    wear = {start = 0.0, stop = 1.0, num = 6}
+
+    [[study.points]]                # and/or an explicit list of points
+    normal_load = "50 uN"
+    module = "4 um"
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib
+import itertools
+import json
+import logging
+import os
+import socket
+import sys
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .errors import InputError, MemstriboError, did_you_mean
+from .output import dumps_json, ensure_directory, to_jsonable
+
+__all__ = ["StudySpec", "StudyResult", "STUDY_KEYS", "POINT_FUNCTIONS", "load_study_spec", "study_spec",
+           "prepare_points", "run_study", "evaluate_point", "mesh_point", "study_dataset"]
+
+#: Keys of a point that are not model parameters, with their unit and meaning.
+STUDY_KEYS: dict[str, tuple[str, str]] = {
+    "coating": ("", "coating name (e.g. 'OTS'), or 'none' for bare silicon"),
+    "wear": ("", "worn fraction Omega of the gear's coating, 0 to 1 (needs a coating)"),
+    "roughness": ("", "roughness: 'synthetic' (default) or the path of a measured profile/AFM file"),
+    "seed": ("", "seed of the synthetic roughness (sets the parameter roughness_seed)"),
+    "steps": ("", "number of positions along the path of contact (default: the model's)"),
+}
+
+POINTS_FOLDER = "points"
+MANIFEST = "study.json"
+FORMAT_VERSION = 1
+
+
+@dataclass(frozen=True)
+class StudySpec:
+    """A study: which point function to run on which points.
+
+    Attributes
+    ----------
+    name : str
+        Title of the study.
+    function : str
+        Point function: a name of :data:`POINT_FUNCTIONS` or ``"package.module:function"``.
+    points : tuple of dict
+        The points, each ``{key: value}`` with values as written (units allowed: ``"25 uN"``).
+    parameters : dict
+        Base parameter overrides applied to every point before its own.
+    source : str
+        Where the spec comes from (file name or "python").
+    """
+
+    name: str
+    function: str
+    points: tuple[dict[str, Any], ...]
+    parameters: dict[str, Any] = field(default_factory=dict)
+    source: str = "python"
+
+
+@dataclass(frozen=True)
+class StudyResult:
+    """What a study run did.
+
+    Attributes
+    ----------
+    folder : pathlib.Path
+        The output folder.
+    n_points : int
+        Points in the study.
+    n_computed : int
+        Points computed by this run.
+    n_reused : int
+        Points found finished on disk (``resume``) and not computed again.
+    n_failed : int
+        Points whose function raised an error (recorded in their file, see ``errors``).
+    elapsed : float
+        Wall time of this run [s].
+    dataset : xarray.Dataset
+        All points: inputs and results over dimension ``point`` (also in results.nc/.csv).
+    errors : dict
+        ``{point id: message}`` of the failed points.
+    """
+
+    folder: Path
+    n_points: int
+    n_computed: int
+    n_reused: int
+    n_failed: int
+    elapsed: float
+    dataset: Any
+    errors: dict[str, str]
+
+
+# --- spec ----------------------------------------------------------------------------------------
+
+def _expand_values(key: str, values: Any, where: str) -> list[Any]:
+    if isinstance(values, Mapping):
+        unknown = set(values) - {"start", "stop", "num"}
+        if unknown or not {"start", "stop", "num"} <= set(values):
+            raise InputError(f"{where}: range '{key}' must be a table {{start, stop, num}}, got {dict(values)}.")
+        unit = _unit_of(key)
+        from .units import to_si
+
+        start = to_si(values["start"], unit, key)
+        stop = to_si(values["stop"], unit, key)
+        num = values["num"]
+        if not isinstance(num, int) or isinstance(num, bool) or num < 1:
+            raise InputError(f"{where}: range '{key}' needs num = a positive integer, got {num!r}.")
+        return [float(v) for v in np.linspace(start, stop, num)]
+    if isinstance(values, list):
+        if not values:
+            raise InputError(f"{where}: '{key}' has an empty list of values.")
+        return list(values)
+    return [values]
+
+
+def _unit_of(key: str) -> str:
+    from .parameters import SPECS
+
+    if key in STUDY_KEYS:
+        return STUDY_KEYS[key][0]
+    if key in SPECS:
+        return SPECS[key].unit
+    return ""
+
+
+def study_spec(study: Mapping[str, Any], parameters: Mapping[str, Any] | None = None,
+               source: str = "python") -> StudySpec:
+    """Build a :class:`StudySpec` from the ``[study]`` table of a spec file (as a dict).
+
+    Raises
+    ------
+    InputError
+        Unknown keys, empty grids, or neither a grid nor a list of points.
+    """
+    where = f"study spec {source}"
+    allowed = {"name", "function", "fixed", "grid", "points"}
+    unknown = sorted(set(study) - allowed)
+    if unknown:
+        raise InputError(f"{where}: unknown key(s) {unknown} in [study]; allowed: {sorted(allowed)}."
+                         f"{did_you_mean(unknown[0], allowed)}")
+    fixed = dict(study.get("fixed", {}))
+    grid = study.get("grid", {})
+    listed = study.get("points", [])
+    if not isinstance(grid, Mapping) or not isinstance(listed, list) or not isinstance(fixed, Mapping):
+        raise InputError(f"{where}: [study.grid] and [study.fixed] must be tables, [[study.points]] a list of tables.")
+    if not grid and not listed:
+        raise InputError(f"{where}: no points: give a [study.grid] table and/or [[study.points]] tables.")
+    points: list[dict[str, Any]] = []
+    if grid:
+        axes = [(key, _expand_values(key, values, where)) for key, values in grid.items()]
+        for combination in itertools.product(*(values for _, values in axes)):
+            points.append({**fixed, **dict(zip((key for key, _ in axes), combination))})
+    for entry in listed:
+        if not isinstance(entry, Mapping):
+            raise InputError(f"{where}: every [[study.points]] entry must be a table, got {entry!r}.")
+        points.append({**fixed, **entry})
+    function = study.get("function", "mesh")
+    if not isinstance(function, str):
+        raise InputError(f"{where}: function must be a name, e.g. 'mesh', got {function!r}.")
+    return StudySpec(name=str(study.get("name", "study")), function=function, points=tuple(points),
+                     parameters=dict(parameters or {}), source=source)
+
+
+def load_study_spec(path: str | Path) -> StudySpec:
+    """Read a study spec TOML file (``[study]`` table, optional ``[parameters]``)."""
+    from .parameters import read_config
+
+    config = read_config(path)
+    if "study" not in config:
+        raise InputError(f"study spec '{path}' has no [study] table; see 'memstribo study --help'.")
+    return study_spec(config["study"], config.get("parameters"), source=str(path))
+
+
+# --- points ----------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class _Point:
+    id: str
+    index: int
+    inputs: dict[str, Any]          # as written in the spec
+    params: Any                     # Parameters with the point's overrides
+    options: dict[str, Any]         # coating, wear, roughness, steps (SI, validated)
+
+
+def _point_options(raw: Mapping[str, Any], where: str, base_folder: Path | None) -> tuple[dict, dict]:
+    """Split a point into parameter overrides and study options (validated)."""
+    from .parameters import SPECS
+    from .units import to_si
+
+    overrides, options = {}, {}
+    for key, value in raw.items():
+        if key in STUDY_KEYS:
+            options[key] = value
+        elif key in SPECS:
+            overrides[key] = value
+        else:
+            raise InputError(f"{where}: unknown key '{key}': neither a model parameter nor one of "
+                             f"{sorted(STUDY_KEYS)}.{did_you_mean(key, list(SPECS) + list(STUDY_KEYS))}")
+    if "seed" in options:
+        overrides["roughness_seed"] = options.pop("seed")
+    clean: dict[str, Any] = {}
+    coating = options.get("coating", "none")
+    if coating is None or str(coating).strip().lower() in ("none", "bare", ""):
+        clean["coating"] = None
+    else:
+        clean["coating"] = str(coating)
+    if "wear" in options:
+        wear = to_si(options["wear"], "", "wear")
+        if not 0.0 <= wear <= 1.0:
+            raise InputError(f"{where}: wear = {options['wear']!r} is outside 0 to 1 (the worn fraction Omega).")
+        clean["wear"] = wear
+    else:
+        clean["wear"] = 0.0 if clean["coating"] else 1.0
+    if clean["coating"] is None and clean["wear"] != 1.0:
+        raise InputError(f"{where}: wear = {clean['wear']:g} needs a coating (bare silicon is wear = 1).")
+    roughness = options.get("roughness", "synthetic")
+    if str(roughness).strip().lower() == "synthetic":
+        clean["roughness"] = None
+    else:
+        path = Path(str(roughness)).expanduser()
+        if not path.is_absolute() and base_folder is not None:
+            path = base_folder / path
+        if not path.is_file():
+            raise InputError(f"{where}: roughness file '{roughness}' does not exist.")
+        clean["roughness"] = str(path.resolve())
+    if "steps" in options:
+        steps = options["steps"]
+        if not isinstance(steps, int) or isinstance(steps, bool) or steps < 2:
+            raise InputError(f"{where}: steps = {steps!r} must be an integer >= 2.")
+        clean["steps"] = steps
+    else:
+        clean["steps"] = None
+    return overrides, clean
+
+
+def prepare_points(spec: StudySpec, params) -> list[_Point]:
+    """Validate every point of ``spec`` against ``params`` (before anything runs).
+
+    Raises
+    ------
+    InputError
+        A point with an unknown key or a value outside its range (the message names the point).
+    """
+    base = params.updated(spec.parameters, origin=f"study spec {spec.source}") if spec.parameters else params
+    base_folder = Path(spec.source).parent if spec.source != "python" else None
+    points = []
+    for index, raw in enumerate(spec.points):
+        where = f"study point {index} ({_describe(raw)})"
+        overrides, options = _point_options(raw, where, base_folder)
+        try:
+            point_params = base.updated(overrides, origin=f"study point {index}") if overrides else base
+        except InputError as exc:
+            raise InputError(f"{where}: {exc}") from None
+        digest = _hash({"inputs": raw, "parameters": point_params.to_dict(), "options": options})[:10]
+        points.append(_Point(f"p{index:06d}-{digest}", index, dict(raw), point_params, options))
+    return points
+
+
+def _describe(raw: Mapping[str, Any]) -> str:
+    return ", ".join(f"{k}={v}" for k, v in raw.items()) or "base parameters"
+
+
+def _hash(value: Any) -> str:
+    text = json.dumps(to_jsonable(value), sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+# --- point functions ---------------------------------------------------------------------------------
+
+def _read_roughness(path: str | None):
+    if path is None:
+        return None
+    from .readers import read_topography
+
+    return read_topography(path)
+
+
+def mesh_point(params, coating: str | None = None, wear: float = 1.0, roughness: str | None = None,
+               steps: int | None = None) -> dict[str, float]:
+    """The meshing-cycle summary of one study point (the default point function).
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters
+        The point's parameters.
+    coating : str or None
+        Coating name (:func:`memstribo.coating.get_coating`); None for bare silicon.
+    wear : float
+        Worn fraction Omega of the gear's coating [-] (1 for bare silicon).
+    roughness : str or None
+        Path of a measured profile or AFM map; None for the default synthetic profile.
+    steps : int or None
+        Positions along the path of contact (None: the model's default).
+
+    Returns
+    -------
+    dict
+        :func:`memstribo.mesh.summarize` of the meshing cycle (SI units).
+    """
+    from . import mesh
+
+    coating_object = None
+    if coating is not None:
+        from .coating import get_coating
+
+        coating_object = get_coating(coating)
+    dataset = mesh.simulate_mesh(params, _read_roughness(roughness), steps=steps, coating=coating_object,
+                                 wear=wear)
+    return mesh.summarize(dataset)
+
+
+#: Built-in point functions by name.
+POINT_FUNCTIONS: dict[str, str] = {
+    "mesh": "memstribo.study:mesh_point",
+}
+
+
+def resolve_function(name: str) -> Callable:
+    """The point function called ``name`` (built-in name or ``"package.module:function"``)."""
+    target = POINT_FUNCTIONS.get(name, name)
+    module_name, sep, attribute = target.partition(":")
+    if not sep or not module_name or not attribute:
+        raise InputError(f"unknown point function {name!r}: use one of {sorted(POINT_FUNCTIONS)} or "
+                         f"'package.module:function'.{did_you_mean(name, POINT_FUNCTIONS)}")
+    try:
+        module = importlib.import_module(module_name)
+    except ImportError as exc:
+        raise InputError(f"point function {name!r}: cannot import module '{module_name}': {exc}") from None
+    function = getattr(module, attribute, None)
+    if not callable(function):
+        raise InputError(f"point function {name!r}: '{module_name}' has no function '{attribute}'.")
+    return function
+
+
+def evaluate_point(function_name: str, params, options: Mapping[str, Any]) -> dict[str, Any]:
+    """Run one point (on a worker): ``{"values": {...}, "error": None or message, "seconds": ...}``.
+
+    Model errors (:class:`memstribo.errors.MemstriboError`) are recorded, not raised, so that
+    one impossible point (e.g. stiction at start-up) does not stop a study of thousands.
+    """
+    from .references import reset_used_references
+
+    reset_used_references()
+    start = time.perf_counter()
+    try:
+        function = resolve_function(function_name)
+        values = function(params, **options)
+        if not isinstance(values, Mapping):
+            raise InputError(f"point function {function_name!r} returned {type(values).__name__}, not a dict.")
+        values = {str(k): to_jsonable(v) for k, v in values.items()}
+        error = None
+    except MemstriboError as exc:
+        values, error = {}, f"{type(exc).__name__}: {exc}"
+    return {"values": values, "error": error, "seconds": time.perf_counter() - start,
+            "host": socket.gethostname(), "pid": os.getpid()}
+
+
+# --- running -------------------------------------------------------------------------------------------
+
+def _write_json_atomic(path: Path, value: Any) -> None:
+    tmp = path.with_name(path.name + ".tmp")
+    with open(tmp, "w", encoding="utf-8") as handle:
+        handle.write(dumps_json(value))
+        handle.flush()
+        os.fsync(handle.fileno())
+    os.replace(tmp, path)
+
+
+def _finished_points(folder: Path, ids: set[str]) -> dict[str, dict]:
+    """Point files already on disk (complete ones only: a torn .tmp is ignored and removed)."""
+    done = {}
+    points_folder = folder / POINTS_FOLDER
+    if not points_folder.is_dir():
+        return done
+    for path in points_folder.iterdir():
+        if path.name.endswith(".tmp"):
+            path.unlink(missing_ok=True)
+            continue
+        if path.suffix != ".json" or path.stem not in ids:
+            continue
+        try:
+            record = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            continue  # unreadable: compute it again
+        done[path.stem] = record
+    return done
+
+
+def _connect(scheduler: str | None, workers: int | None):
+    """A dask.distributed Client: to ``scheduler`` or to a new quiet LocalCluster."""
+    from distributed import Client, LocalCluster
+
+    if scheduler:
+        try:
+            return Client(scheduler, timeout="10s", set_as_default=False), None
+        except (OSError, TimeoutError) as exc:
+            raise InputError(f"cannot connect to the Dask scheduler at '{scheduler}': {exc}. "
+                             "Start one with 'dask scheduler' (see docs/studies.md).") from None
+    n_workers = workers or os.cpu_count() or 1
+    cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                           silence_logs=logging.ERROR)
+    return Client(cluster, set_as_default=False), cluster
+
+
+def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str | None = None,
+              workers: int | None = None, resume: bool = False, progress: bool = False) -> StudyResult:
+    """Run the points of ``spec`` on Dask and write each one as soon as it is finished.
+
+    Parameters
+    ----------
+    spec : StudySpec
+        The study (see :func:`load_study_spec`).
+    out : str or pathlib.Path
+        Output folder: ``study.json`` (manifest), ``points/<id>.json``, ``results.nc``/``.csv``.
+    params : memstribo.parameters.Parameters, optional
+        Base parameters (default: the thesis set).
+    scheduler : str, optional
+        Address of an existing Dask scheduler (``tcp://host:8786``); default: a LocalCluster.
+    workers : int, optional
+        Worker processes of the LocalCluster (default: the number of cores).
+    resume : bool
+        Finish a study started in ``out`` (the spec and parameters must be the same).
+    progress : bool
+        Show a progress bar on stderr (points done, rate, time left).
+
+    Raises
+    ------
+    InputError
+        Bad spec or point, ``out`` holding another study, or ``out`` holding this study without ``resume``.
+    """
+    from .parameters import get_parameter_values
+
+    start = time.perf_counter()
+    params = params if params is not None else get_parameter_values()
+    if workers is not None and (not isinstance(workers, int) or workers < 1):
+        raise InputError(f"workers = {workers!r}: give a positive integer.")
+    resolve_function(spec.function)  # fail early on a bad name
+    points = prepare_points(spec, params)
+    folder = ensure_directory(out)
+    study_hash = _hash({"function": spec.function, "points": [[p.id, p.inputs] for p in points],
+                        "parameters": params.to_dict(), "base": spec.parameters})
+    manifest_path = folder / MANIFEST
+    if manifest_path.exists():
+        try:
+            manifest = json.loads(manifest_path.read_text(encoding="utf-8"))
+        except ValueError:
+            raise InputError(f"'{manifest_path}' is not a study manifest; choose another --out.") from None
+        if not resume:
+            raise InputError(f"'{folder}' already holds a study; add --resume to finish it or choose another --out.")
+        if manifest.get("hash") != study_hash:
+            raise InputError(f"--resume: '{folder}' holds a different study (other points, function or "
+                             "parameters); choose another --out.")
+    else:
+        _write_json_atomic(manifest_path, {
+            "format": FORMAT_VERSION, "name": spec.name, "function": spec.function, "source": spec.source,
+            "hash": study_hash, "parameter_set": params.name, "base_overrides": spec.parameters,
+            "points": [{"id": p.id, "index": p.index, "inputs": p.inputs} for p in points],
+        })
+    ensure_directory(folder / POINTS_FOLDER)
+    by_id = {p.id: p for p in points}
+    done = _finished_points(folder, set(by_id))
+    todo = [p for p in points if p.id not in done]
+    n_computed = 0
+    if todo:
+        n_computed = _compute(spec, todo, folder, len(points), len(done), scheduler, workers, progress)
+    records = _finished_points(folder, set(by_id))
+    missing = sorted(set(by_id) - set(records))
+    if missing:  # cannot happen unless files vanished while running
+        raise InputError(f"{len(missing)} point(s) have no result file in '{folder / POINTS_FOLDER}'; rerun with --resume.")
+    ordered = [records[p.id] for p in points]
+    dataset = study_dataset(ordered, spec)
+    from .output import write_dataset
+
+    write_dataset(dataset, folder, "results")
+    errors = {r["id"]: r["error"] for r in ordered if r.get("error")}
+    return StudyResult(folder, len(points), n_computed, len(done), len(errors), time.perf_counter() - start,
+                       dataset, errors)
+
+
+def _compute(spec, todo, folder, total, already, scheduler, workers, progress) -> int:
+    from distributed import as_completed
+    from tqdm import tqdm
+
+    client, cluster = _connect(scheduler, workers)
+    bar = tqdm(total=total, initial=already, unit="point", desc=spec.name, file=sys.stderr,
+               disable=not progress, dynamic_ncols=True)
+    computed = 0
+    try:
+        futures = {}
+        for point in todo:
+            future = client.submit(evaluate_point, spec.function, point.params, point.options,
+                                   key=f"memstribo-{point.id}-{os.getpid()}", pure=False)
+            futures[future] = point
+        for future in as_completed(futures, loop=client.loop):
+            point = futures[future]
+            try:
+                outcome = future.result()
+            except Exception as exc:  # a bug in the point function: record it, carry on
+                outcome = {"values": {}, "error": f"{type(exc).__name__}: {exc}", "seconds": None}
+            record = {"id": point.id, "index": point.index, "inputs": point.inputs, **outcome}
+            _write_json_atomic(folder / POINTS_FOLDER / f"{point.id}.json", record)
+            computed += 1
+            bar.update(1)
+    finally:
+        bar.close()
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    return computed
+
+
+def study_dataset(records: list[dict], spec: StudySpec | None = None):
+    """The points as an :class:`xarray.Dataset` over dimension ``point`` (inputs, then results).
+
+    Inputs keep the values written in the spec, converted to SI where they carry units.
+    """
+    import xarray as xr
+
+    from .parameters import SPECS
+    from .units import to_si
+
+    n = len(records)
+    data: dict[str, Any] = {}
+    input_keys = list(dict.fromkeys(k for r in records for k in r["inputs"]))
+    for key in input_keys:
+        raw = [r["inputs"].get(key) for r in records]
+        unit = _unit_of(key)
+        if key in SPECS and SPECS[key].kind in ("float", "int") or key in ("wear", "seed", "steps"):
+            values = np.array([np.nan if v is None else to_si(v, unit, key) for v in raw], dtype=float)
+        else:
+            values = np.array(["" if v is None else str(v) for v in raw], dtype=object)
+        description = SPECS[key].description if key in SPECS else STUDY_KEYS.get(key, ("", key))[1]
+        data[f"input_{key}"] = ("point", values, {"units": unit, "long_name": f"input: {description}"})
+    output_keys = list(dict.fromkeys(k for r in records for k in r.get("values", {})))
+    units = _result_units(spec)
+    for key in output_keys:
+        raw = [r.get("values", {}).get(key) for r in records]
+        if all(isinstance(v, (int, float, bool)) or v is None for v in raw):
+            values = np.array([np.nan if v is None else float(v) for v in raw], dtype=float)
+        else:
+            values = np.array([json.dumps(v) if not isinstance(v, str) else v for v in raw], dtype=object)
+        data[key] = ("point", values, {"units": units.get(key, ""), "long_name": key.replace("_", " ")})
+    data["error"] = ("point", np.array([r.get("error") or "" for r in records], dtype=object),
+                     {"units": "", "long_name": "error message of a failed point (empty: ok)"})
+    ids = np.array([r["id"] for r in records], dtype=object)
+    dataset = xr.Dataset({k: xr.Variable(*v) for k, v in data.items()},
+                         coords={"point": ("point", np.arange(n)), "point_id": ("point", ids)})
+    dataset.attrs["title"] = spec.name if spec else "study"
+    if spec is not None:
+        dataset.attrs["point_function"] = spec.function
+    return dataset
+
+
+def _result_units(spec: StudySpec | None) -> dict[str, str]:
+    """Units of the point function's results, where it declares them (``function.units``)."""
+    if spec is None:
+        return {}
+    try:
+        function = resolve_function(spec.function)
+    except InputError:
+        return {}
+    units = getattr(function, "units", None)
+    if units is None and spec.function == "mesh":
+        try:
+            from . import mesh
+
+            units = getattr(mesh, "SUMMARY_UNITS", None)
+        except ImportError:
+            units = None
+    return dict(units or {})

@@ -1,0 +1,211 @@
+"""Studies on dask.distributed: spec expansion, determinism across schedulers, resume after kill -9."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from memstribo.errors import InputError
+from memstribo.study import StudySpec, load_study_spec, prepare_points, run_study, study_spec
+
+TESTS = Path(__file__).resolve().parent
+HERTZ = "_study_points:hertz_point"
+
+
+@pytest.fixture(autouse=True)
+def _workers_find_test_functions(monkeypatch):
+    """Dask worker processes import the test point functions from tests/ (spawned, via PYTHONPATH)."""
+    monkeypatch.syspath_prepend(str(TESTS))
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(TESTS), os.environ.get("PYTHONPATH", "")]))
+
+
+def write_spec(path: Path, body: str) -> Path:
+    path.write_text(body, encoding="utf-8")
+    return path
+
+
+# --- spec ----------------------------------------------------------------------------------------
+
+def test_grid_is_the_product_in_written_order_and_fixed_applies_to_all():
+    spec = study_spec({"function": HERTZ, "fixed": {"module": "4 um"},
+                       "grid": {"normal_load": ["25 uN", "50 uN"], "seed": [1, 2, 3]},
+                       "points": [{"normal_load": "75 uN"}]})
+    assert len(spec.points) == 2 * 3 + 1
+    assert [p["seed"] for p in spec.points[:3]] == [1, 2, 3]
+    assert [p["normal_load"] for p in spec.points[::3]] == ["25 uN", "50 uN", "75 uN"]
+    assert all(p["module"] == "4 um" for p in spec.points)
+
+
+def test_range_table_is_linspace_in_si(params):
+    spec = study_spec({"function": HERTZ, "grid": {"normal_load": {"start": "25 uN", "stop": "300 uN", "num": 12}}})
+    loads = [p["normal_load"] for p in spec.points]
+    np.testing.assert_allclose(loads, np.arange(25, 301, 25) * 1e-6, rtol=1e-12)
+    points = prepare_points(spec, params)
+    assert points[-1].params["normal_load"] == pytest.approx(300e-6, rel=1e-12)
+
+
+def test_point_ids_are_stable_and_distinct(params):
+    spec = study_spec({"function": HERTZ, "grid": {"seed": [1, 2]}})
+    first, again = prepare_points(spec, params), prepare_points(spec, params)
+    assert [p.id for p in first] == [p.id for p in again]
+    assert len({p.id for p in first}) == 2
+    assert first[1].params["roughness_seed"] == 2
+
+
+@pytest.mark.parametrize("study, match", [
+    ({"function": HERTZ}, "no points"),
+    ({"function": HERTZ, "grid": {"normal_lod": ["25 uN"]}}, "unknown key 'normal_lod'.*normal_load"),
+    ({"function": HERTZ, "grid": {"normal_load": []}}, "empty list"),
+    ({"function": HERTZ, "grid": {"normal_load": ["-5 uN"]}}, "study point 0.*outside its range"),
+    ({"function": HERTZ, "grid": {"normal_load": {"start": 1, "stop": 2}}}, "start, stop, num"),
+    ({"function": HERTZ, "grid": {"wear": [1.5]}, "fixed": {"coating": "OTS"}}, "outside 0 to 1"),
+    ({"function": HERTZ, "grid": {"wear": [0.5]}}, "needs a coating"),
+    ({"function": HERTZ, "grid": {"roughness": ["no/such/file.txt"]}}, "does not exist"),
+    ({"function": HERTZ, "grid": {"steps": [1]}}, "integer >= 2"),
+    ({"function": HERTZ, "grid": {"seed": [1]}, "grdi": {}}, "unknown key.*grdi"),
+])
+def test_bad_specs_raise_input_error(params, study, match):
+    with pytest.raises(InputError, match=match):
+        prepare_points(study_spec(study), params)
+
+
+def test_unknown_point_function_is_an_input_error(params, tmp_path):
+    spec = study_spec({"function": "mseh", "grid": {"seed": [1]}})
+    with pytest.raises(InputError, match="unknown point function 'mseh'.*mesh"):
+        run_study(spec, tmp_path / "out", params)
+    spec = study_spec({"function": "no_such_module:f", "grid": {"seed": [1]}})
+    with pytest.raises(InputError, match="cannot import module"):
+        run_study(spec, tmp_path / "out", params)
+
+
+def test_spec_file_needs_a_study_table(tmp_path):
+    path = write_spec(tmp_path / "s.toml", "normal_load = '25 uN'\n")
+    with pytest.raises(InputError, match=r"no \[study\] table"):
+        load_study_spec(path)
+
+
+# --- running ----------------------------------------------------------------------------------------
+
+SPEC = f"""
+[parameters]
+module = "3.9 um"
+
+[study]
+name = "hertz check"
+function = "{HERTZ}"
+
+[study.grid]
+normal_load = ["25 uN", "50 uN", "100 uN"]
+seed = [1, 2]
+"""
+
+
+def test_results_identical_with_one_worker_and_an_external_two_worker_cluster(params, tmp_path):
+    from distributed import LocalCluster
+
+    spec = load_study_spec(write_spec(tmp_path / "s.toml", SPEC))
+    one = run_study(spec, tmp_path / "one", params, workers=1)
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None, processes=True) as cluster:
+        two = run_study(spec, tmp_path / "two", params, scheduler=cluster.scheduler_address)
+    assert one.n_points == two.n_points == 6 and one.n_computed == 6 and one.n_failed == 0
+    for name in ("half_width", "peak_pressure", "noise", "input_normal_load"):
+        np.testing.assert_array_equal(one.dataset[name].values, two.dataset[name].values)
+    # the seed decides the random number, the load does not
+    noise = one.dataset["noise"].values
+    assert noise[0] == noise[2] == noise[4] != noise[1]
+    # closed form: Hertz half width grows as sqrt(load)
+    width = one.dataset["half_width"].values
+    assert width[4] / width[0] == pytest.approx(2.0, rel=1e-12)
+    assert one.dataset["half_width"].attrs["units"] == "m"
+    csv = (tmp_path / "one" / "results.csv").read_text().splitlines()
+    assert csv[0].startswith("point,input_normal_load [N]") and len(csv) == 7
+    assert (tmp_path / "one" / "results.nc").is_file()
+
+
+def test_rerun_needs_resume_and_resume_reuses_everything(params, tmp_path):
+    spec = load_study_spec(write_spec(tmp_path / "s.toml", SPEC))
+    run_study(spec, tmp_path / "out", params, workers=1)
+    with pytest.raises(InputError, match="already holds a study; add --resume"):
+        run_study(spec, tmp_path / "out", params, workers=1)
+    again = run_study(spec, tmp_path / "out", params, resume=True)
+    assert (again.n_computed, again.n_reused) == (0, 6)
+    other = study_spec({"function": HERTZ, "grid": {"seed": [7]}}, source=str(tmp_path / "s.toml"))
+    with pytest.raises(InputError, match="holds a different study"):
+        run_study(other, tmp_path / "out", params, resume=True)
+    with pytest.raises(InputError, match="holds a different study"):
+        run_study(spec, tmp_path / "out", params.updated({"face_width": "3 um"}), resume=True)
+
+
+def test_failed_points_are_recorded_and_the_study_goes_on(params, tmp_path):
+    spec = study_spec({"function": "_study_points:failing_point",
+                       "grid": {"normal_load": ["50 uN", "200 uN"]}})
+    result = run_study(spec, tmp_path / "out", params, workers=1)
+    assert result.n_failed == 1 and result.n_points == 2
+    (message,) = result.errors.values()
+    assert "too high" in message
+    assert result.dataset["error"].values[0] == "" and np.isnan(result.dataset["load"].values[1])
+
+
+def test_kill_9_then_resume_loses_no_point_and_computes_none_twice(tmp_path):
+    """A real `memstribo study` process group is killed with SIGKILL mid-study, then resumed."""
+    spec = write_spec(tmp_path / "s.toml", f"""
+[study]
+name = "kill test"
+function = "{HERTZ}"
+[study.grid]
+seed = {list(range(12))}
+""")
+    out = tmp_path / "out"
+    env = {**os.environ, "MEMSTRIBO_TEST_POINT_DELAY": "0.4"}
+    command = [sys.executable, "-m", "memstribo.cli.main", "study", str(spec), "--out", str(out), "--workers", "1"]
+    process = subprocess.Popen(command, env=env, start_new_session=True,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    points = out / "points"
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and len(list(points.glob("*.json"))) < 3:
+        time.sleep(0.05)
+    os.killpg(process.pid, signal.SIGKILL)
+    process.wait(timeout=30)
+    before = {p.name: (p.stat().st_mtime_ns, p.read_text()) for p in points.glob("*.json")}
+    assert 3 <= len(before) < 12, "the study should have been killed part-way"
+    assert not (out / "results.csv").exists()
+
+    resumed = subprocess.run(command + ["--resume", "--json"], env={**os.environ}, capture_output=True,
+                             text=True, timeout=120)
+    assert resumed.returncode == 0, resumed.stderr
+    summary = json.loads(resumed.stdout)
+    assert summary["points"] == 12
+    assert summary["reused"] == len(before)
+    assert summary["computed"] == 12 - len(before)
+    after = {p.name: (p.stat().st_mtime_ns, p.read_text()) for p in points.glob("*.json")}
+    assert len(after) == 12
+    for name, state in before.items():
+        assert after[name] == state, f"{name} was computed twice"
+    rows = (out / "results.csv").read_text().splitlines()
+    assert len(rows) == 13
+    assert not list(points.glob("*.tmp"))
+
+
+def test_cli_study_json_and_bad_input_exit_2(cli, tmp_path):
+    spec = write_spec(tmp_path / "s.toml", SPEC)
+    values = cli.json("study", spec, "--out", tmp_path / "out", "--workers", "1")
+    assert values["points"] == 6 and values["computed"] == 6 and values["failed"] == 0
+    assert Path(values["results_csv"]).is_file()
+    for argv, message in [
+        (("study", tmp_path / "missing.toml"), "does not exist"),
+        (("study", spec, "--out", tmp_path / "out"), "add --resume"),
+        (("study", spec, "--out", tmp_path / "x", "--workers", "0"), "positive integer"),
+        (("study", write_spec(tmp_path / "b.toml", "[study]\nfunction='mesh'\n[study.grid]\nfoo=[1]\n")),
+         "unknown key 'foo'"),
+    ]:
+        code, out, err = cli(*argv)
+        assert code == 2, err
+        assert message in err and "Traceback" not in err
