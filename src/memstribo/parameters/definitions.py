@@ -123,7 +123,20 @@ _SPECS = [
     _positive("pinion_speed", "rad/s", "Angular speed omega1 of the pinion (sets the time axis only)"),
     # --- meshing simulation ---------------------------------------------------------------------
     # --- coatings and wear ----------------------------------------------------------------------
+    ParameterSpec("coating_wear", "", "Worn fraction Omega of the gear tooth's coating (0 coated, 1 bare; 5.5.3)",
+                  minimum=0.0, maximum=1.0),
     # --- damage and lifetime --------------------------------------------------------------------
+    _positive("asperity_degree", "", "Degree d of the atomic asperity shape f(r) = B_d r^d (5-6)"),
+    _positive("asperity_shape_coefficient", "",
+              "B_d of f(r) = B_d r^d, SI number in m^(1-d) (m^-3 for d = 4); give the number without a unit"),
+    _positive("asperity_half_width", "m", "Half width of an atomic asperity (edge of the power-law shape, 5.5.2)"),
+    _nonnegative("asperity_friction_coefficient", "",
+                 "Friction coefficient mu of the traction mu*p on an atomic asperity in the stress solution"),
+    ParameterSpec("peaks_per_cycle", "", "Load peaks k on a nanoblock per meshing cycle (Figure 5-18)", kind="int",
+                  minimum=1),
+    _positive("damage_exponent", "", "Exponent m of the damage law omega = sum c1 (dtau1)^m (5-10)"),
+    _positive("damage_coefficient", "",
+              "c1 of the damage law (5-10), SI number in Pa^-m; unset: unknown (relative lives only)", optional=True),
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}
