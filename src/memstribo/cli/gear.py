@@ -1,0 +1,63 @@
+"""``memstribo gear``: geometry, kinematics and Hertz contact of the involute spur pair."""
+
+from __future__ import annotations
+
+from .common import CommandResult
+
+NAME = "gear"
+HELP = "involute spur pair: radii, path of contact, contact ratio, Hertz contact at the pitch point, F_t"
+ORDER = 40
+
+
+def register(subparsers, parents):
+    parser = subparsers.add_parser(
+        NAME, parents=parents, help=HELP, description=HELP + ". Change the pair with --set teeth_pinion=..., "
+        "teeth_gear, module, pressure_angle ('20 deg'), face_width, addendum_coefficient, normal_load, drive_torque.")
+    parser.set_defaults(handler=run)
+
+
+def gear_summary(params) -> tuple[dict, dict]:
+    """The values and units that ``memstribo gear`` prints (SI)."""
+    from ..gear import GearPair, contact_modulus, tangential_force
+
+    pair = GearPair.from_parameters(params)
+    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"],
+                              params["counter_youngs_modulus"], params["counter_poisson_ratio"])
+    zone = pair.single_tooth_zone
+    hertz = pair.hertz(0.0, params["normal_load"], modulus)
+    values = {
+        "module": pair.module,
+        "pressure_angle": pair.pressure_angle,
+        "pitch_radii": pair.pitch_radii.tolist(),
+        "base_radii": pair.base_radii.tolist(),
+        "tip_radii": pair.tip_radii.tolist(),
+        "base_pitch": pair.base_pitch,
+        "first_contact": pair.first_contact,
+        "last_contact": pair.last_contact,
+        "path_of_contact": pair.path_of_contact,
+        "contact_ratio": pair.contact_ratio,
+        "single_tooth_zone": None if zone is None else list(zone),
+        "effective_radius_pitch": float(pair.effective_radius(0.0)),
+        "contact_modulus": modulus,
+        "hertz_half_width": float(hertz.half_width),
+        "hertz_peak_pressure": float(hertz.peak_pressure),
+        "tangential_force": tangential_force(params["drive_torque"], pair.pitch_radii[0]),
+    }
+    units = {"module": "m", "pressure_angle": "rad", "pitch_radii": "m", "base_radii": "m", "tip_radii": "m",
+             "base_pitch": "m", "first_contact": "m", "last_contact": "m", "path_of_contact": "m",
+             "contact_ratio": "", "single_tooth_zone": "m", "effective_radius_pitch": "m", "contact_modulus": "Pa",
+             "hertz_half_width": "m", "hertz_peak_pressure": "Pa", "tangential_force": "N"}
+    return values, units
+
+
+def run(args, params):
+    import math
+
+    values, units = gear_summary(params)
+    notes = [
+        f"  pressure angle {math.degrees(values['pressure_angle']):.4g} deg; radii as [pinion, gear]; positions c on "
+        "the line of action, 0 at the pitch point.",
+        f"  Hertz line contact at the pitch point under normal_load = {params['normal_load'] * 1e6:.4g} uN "
+        "(Eqs. 4-22..4-26); the thesis prints a = 58.9 nm, which does not follow from its inputs.",
+    ]
+    return CommandResult(values=values, units=units, title="involute spur gear pair (thesis 4.3-4.7)", notes=notes)
