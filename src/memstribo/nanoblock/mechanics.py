@@ -569,7 +569,7 @@ def elastic_interlocking_energy(stiffness, delta_compression):
 
     Examples
     --------
-    >>> float(elastic_interlocking_energy(40.0, 0.1e-9))
+    >>> print(f"{float(elastic_interlocking_energy(40.0, 0.1e-9)):.3g}")  # [J]
     2e-19
     """
     k = np.asarray(stiffness, dtype=float)
