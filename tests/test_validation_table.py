@@ -1,0 +1,64 @@
+"""docs/validation.md is generated from the code: it must equal a fresh generation."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from memstribo.validation import ValidationRow, all_rows, compare
+from memstribo.validation.__main__ import DEFAULT_OUTPUT, format_number, render_markdown, summary
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+@pytest.fixture(scope="module")
+def rows():
+    return all_rows()
+
+
+def test_committed_validation_md_equals_a_fresh_generation(rows):
+    assert DEFAULT_OUTPUT == REPO / "docs" / "validation.md"
+    committed = DEFAULT_OUTPUT.read_text(encoding="utf-8")
+    fresh = render_markdown(rows)
+    assert committed == fresh, ("docs/validation.md is out of date: run 'python -m memstribo.validation' "
+                                "and commit the result")
+
+
+def test_every_row_names_its_command_and_explains_a_difference(rows):
+    assert rows, "no validation rows at all"
+    for row in rows:
+        assert row.command.startswith(("memstribo ", "python ")), row
+        assert row.tolerance and row.reference and row.quantity, row
+        if not row.agrees:
+            assert row.note, f"row {row.quantity!r} differs without a note saying why"
+
+
+def test_render_groups_by_topic_escapes_pipes_and_counts():
+    rows = [compare("alpha", "a|b", "closed form", 1.0, 1.0000001, "m", rtol=1e-6, command="memstribo x --json"),
+            ValidationRow("beta", "trend", "thesis 4.9", None, None, "", "trend", False, "memstribo y",
+                          "differs: see docs"),
+            compare("alpha", "c", "thesis (3-1)", 2.0, 3.0, "", atol=0.1, command="memstribo z", note="why")]
+    text = render_markdown(rows)
+    assert text.index("## alpha") < text.index("## beta")
+    assert text.count("## alpha") == 1
+    assert "a\\|b" in text and "| - | - |" in text
+    assert "**3 comparisons: 1 agree, 2 differ" in text
+    assert summary(rows) == {"rows": 3, "agree": 1, "differ": 2}
+    assert "GENERATED FILE" in text
+
+
+def test_format_number_is_six_significant_digits():
+    assert format_number(3.878787878) == "3.87879"
+    assert format_number(2.82e-3) == "0.00282"
+    assert format_number(None) == "-"
+
+
+def test_check_mode_reports_an_outdated_file(tmp_path):
+    stale = tmp_path / "validation.md"
+    stale.write_text("old\n", encoding="utf-8")
+    run = subprocess.run([sys.executable, "-m", "memstribo.validation", "--check", "--output", str(stale)],
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 1 and "out of date" in run.stderr
