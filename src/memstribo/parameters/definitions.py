@@ -110,6 +110,7 @@ _SPECS = [
     _positive("roughness_sample_spacing", "m", "Sampling step of the default synthetic profile (as measured)"),
     _positive("roughness_resample_spacing", "m", "Step after PCHIP resampling; unset: no resampling", optional=True),
     ParameterSpec("roughness_seed", "", "Seed of the default synthetic roughness profile", kind="int", minimum=0),
+    _positive("roughness_length", "m", "Length of the default synthetic roughness profile"),
     # --- gear geometry and operation ----------------------------------------------------------
     ParameterSpec("teeth_pinion", "", "Number of teeth z1 of the pinion (driver)", kind="int", minimum=5),
     ParameterSpec("teeth_gear", "", "Number of teeth z2 of the gear (driven)", kind="int", minimum=5),
