@@ -1,0 +1,101 @@
+"""``memstribo coating``: friction of SAM-coated teeth at a wear state Omega (thesis 5.5.3)."""
+
+from __future__ import annotations
+
+from .common import CommandResult, format_value
+
+NAME = "coating"
+HELP = "COF, friction force and stiction margin of SAM-coated teeth for worn fractions Omega"
+ORDER = 70
+
+
+def register(subparsers, parents):
+    parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=HELP + (
+        ". The pinion's coating is fully worn and a fraction Omega of the gear's (thesis 5.5.3): "
+        "Omega = 0 is the fully coated pair, Omega = 1 bare silicon (equal to 'memstribo mesh')."))
+    parser.add_argument("--coating", default="OTS", help="coating name: OTS (default) or FDTS")
+    parser.add_argument("--wear", default=None, metavar="W",
+                        help="worn fraction Omega from 0 to 1, or a comma-separated list '0,0.2,0.4' for a table "
+                             "(default: the parameter coating_wear)")
+    parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
+    parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and figures (COF vs Omega, "
+                                                     "friction vs tangential force) to DIR")
+    parser.add_argument("--progress", action="store_true", help="show the mesh progress bar on stderr")
+    parser.set_defaults(handler=run)
+
+
+def parse_wear_list(text) -> list[float]:
+    """'0,0.2,0.4' -> [0.0, 0.2, 0.4], each checked to lie in 0..1."""
+    from ..coating import check_wear
+    from ..errors import InputError
+
+    items = [item.strip() for item in str(text).split(",")]
+    if not items or any(item == "" for item in items):
+        raise InputError(f"--wear must be a number from 0 to 1 or a comma-separated list of them, got {text!r}.")
+    try:
+        numbers = [float(item.rstrip("%")) / (100.0 if item.endswith("%") else 1.0) for item in items]
+    except ValueError:
+        raise InputError(f"--wear must be a number from 0 to 1 or a comma-separated list of them, got {text!r}.") from None
+    return [float(w) for w in check_wear(numbers)]
+
+
+def run(args, params):
+    import sys
+
+    from ..coating import SWEEP_VARIABLES, get_coating, wear_sweep
+    from ..errors import InputError
+
+    coating = get_coating(args.coating)
+    wears = parse_wear_list(params["coating_wear"] if args.wear is None else args.wear)
+    if args.steps is not None and args.steps < 2:
+        raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
+    sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=args.progress and sys.stderr.isatty())
+    units = {key: unit for key, (unit, _) in SWEEP_VARIABLES.items()}
+    points = []
+    for i, w in enumerate(wears):
+        point = {"wear": w}
+        for key in SWEEP_VARIABLES:
+            value = float(sweep[key].values[i])
+            point[key] = bool(value) if key == "stiction" else value
+        points.append(point)
+    notes = [f"  coating {coating.name}: U_vdW = {coating.vdw_bond_energy:.4g} J, A = {coating.hamaker_constant:.3g} J, "
+             f"w = {coating.work_of_adhesion:.4g} J/m^2; the pinion's coating fully worn (thesis 5.5.3)"]
+    if args.out:
+        notes.extend(_write_outputs(sweep, coating, args.out))
+    if len(points) == 1:
+        return CommandResult(values={"coating": coating.name, **points[0]}, units={"wear": "", **units},
+                             title=f"{coating.name}-coated teeth at wear Omega = {wears[0]:g}", notes=notes)
+    if args.json:
+        return CommandResult(values={"coating": coating.name, "points": points})
+    keys = ["wear", *SWEEP_VARIABLES]
+    width = 14
+    lines = ["  " + "".join(f"{k:>{width}}" for k in keys)]
+    for point in points:
+        lines.append("  " + "".join(f"{format_value(point[k], units.get(k, '')):>{width}}" for k in keys))
+    return CommandResult(values={}, title=f"{coating.name}-coated teeth over wear states Omega",
+                         notes=lines + notes)
+
+
+def _write_outputs(sweep, coating, folder) -> list[str]:
+    from ..output import new_figure, save_figure, write_dataset
+
+    written = write_dataset(sweep, folder, "coating_wear")
+    wear = sweep["wear"].values * 100
+    fig, ax = new_figure(figsize=(5, 3.5))
+    ax.plot(wear, sweep["cof"].values, "o-", label="total")
+    for key, label in (("cof_chemical", "chemical"), ("cof_vdw", "vdW"), ("cof_elastic", "elastic")):
+        ax.plot(wear, sweep[key].values, ".--", label=label)
+    ax.set_xlabel("worn fraction of the gear's coating Omega [%]")
+    ax.set_ylabel("COF [-]")
+    ax.set_title(f"COF vs wear, {coating.name} (thesis Figure 5-28)")
+    ax.legend()
+    written += save_figure(fig, folder, "cof_vs_wear")
+    fig, ax = new_figure(figsize=(5, 3.5))
+    ax.plot(wear, sweep["friction_force"].values * 1e3, "o-", label="friction force F_f")
+    ax.plot(wear, sweep["tangential_force"].values * 1e3, "k--", label="tangential force F_t")
+    ax.set_xlabel("worn fraction of the gear's coating Omega [%]")
+    ax.set_ylabel("force [mN]")
+    ax.set_title("friction vs available tangential force (thesis Figure 5-24)")
+    ax.legend()
+    written += save_figure(fig, folder, "friction_vs_tangential")
+    return ["  wrote " + ", ".join(str(p) for p in written)]
