@@ -1,0 +1,497 @@
+"""Adhesion of silicon asperities: contact modulus, work of adhesion, Maugis-Dugdale law,
+bilinear elastic-perfectly rigid law, no-slip coefficient and pull-off forces.
+
+Thesis sections 3.3.3 and 3.5 ([1]_); decisions in docs/model.md §2-3 and
+docs/nanoscale-physics.md. All quantities SI.
+
+References
+----------
+.. [1] N. S. T. Almuramady, 'Dry friction between rough surfaces of silicon and
+   functionalized gear MEMS', PhD thesis, Cardiff University.
+.. [2] D. Maugis, 'Adhesion of spheres: the JKR-DMT transition using a Dugdale model',
+   J. Colloid Interface Sci. 150 (1992) 243-269. :doi:`10.1016/0021-9797(92)90285-T`
+.. [3] F. M. Borodich, 'The Hertz-type and adhesive contact problems for depth-sensing
+   indentation', Adv. Appl. Mech. 47 (2014) 225-366. :doi:`10.1016/B978-0-12-800130-1.00003-5`
+.. [4] K. Kendall, 'The adhesion and surface energy of elastic solids', J. Phys. D 4
+   (1971) 1186. :doi:`10.1088/0022-3727/4/8/320`
+.. [5] J. N. Israelachvili, Intermolecular and Surface Forces, 3rd ed., Academic Press, 2011.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import InputError
+from .references import cites
+
+__all__ = [
+    "contact_modulus",
+    "work_of_adhesion",
+    "lennard_jones_surface_stress",
+    "maugis_stress",
+    "maugis_range",
+    "bilinear_stress",
+    "bilinear_strain",
+    "no_slip_coefficient",
+    "pull_off_force",
+    "total_adhesion_force",
+    "NanoscaleConstants",
+    "nanoscale_constants",
+]
+
+
+def _array(value, name: str, unit: str, *, positive: bool = True, nonnegative: bool = False) -> np.ndarray:
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be a number [{unit}], got {value!r}.") from None
+    if not np.all(np.isfinite(array)):
+        raise InputError(f"{name} must be finite [{unit}], got {value!r}.")
+    if positive and np.any(array <= 0.0):
+        raise InputError(f"{name} must be > 0 [{unit}], got {value!r}.")
+    if nonnegative and np.any(array < 0.0):
+        raise InputError(f"{name} must be >= 0 [{unit}], got {value!r}.")
+    return array
+
+
+def _poisson(value, name: str = "poisson_ratio") -> np.ndarray:
+    try:
+        nu = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be a number in (-1, 0.5], got {value!r}.") from None
+    if not np.all(np.isfinite(nu)) or np.any(nu <= -1.0) or np.any(nu > 0.5):
+        raise InputError(f"{name} must lie in (-1, 0.5] (isotropic, stable solid), got {value!r}.")
+    return nu
+
+
+def _result(value):
+    return float(value) if np.ndim(value) == 0 else value
+
+
+@cites("thesis", "johnson_1985")
+def contact_modulus(youngs_modulus, poisson_ratio, counter_youngs_modulus=None, counter_poisson_ratio=None):
+    """Contact (reduced) modulus E* of two elastic bodies.
+
+    .. math:: \\frac{1}{E^*} = \\frac{1-\\nu_1^2}{E_1} + \\frac{1-\\nu_2^2}{E_2}
+
+    Thesis 3.5 ([1]_) with identical bodies: E* = E / (2 (1 - nu²)) = 85.0 GPa for silicon.
+
+    Parameters
+    ----------
+    youngs_modulus : float or array_like
+        Young's modulus E1 [Pa], > 0.
+    poisson_ratio : float or array_like
+        Poisson's ratio nu1 [-], in (-1, 0.5].
+    counter_youngs_modulus : float, optional
+        E2 [Pa]; default: the same as E1.
+    counter_poisson_ratio : float, optional
+        nu2 [-]; default: the same as nu1.
+
+    Returns
+    -------
+    float or ndarray
+        E* [Pa].
+
+    Examples
+    --------
+    >>> print(f"{contact_modulus(161e9, 0.23) / 1e9:.1f}")
+    85.0
+    """
+    e1 = _array(youngs_modulus, "youngs_modulus", "Pa")
+    nu1 = _poisson(poisson_ratio)
+    e2 = e1 if counter_youngs_modulus is None else _array(counter_youngs_modulus, "counter_youngs_modulus", "Pa")
+    nu2 = nu1 if counter_poisson_ratio is None else _poisson(counter_poisson_ratio, "counter_poisson_ratio")
+    return _result(1.0 / ((1.0 - nu1**2) / e1 + (1.0 - nu2**2) / e2))
+
+
+@cites("thesis", "israelachvili_2011")
+def work_of_adhesion(hamaker_constant, cutoff_distance):
+    """Work of adhesion of two flat surfaces from the Hamaker constant, Eq. (3-34) in [1]_.
+
+    .. math:: w_{12} = \\frac{A_{12}}{12\\pi D_0^2}
+
+    Parameters
+    ----------
+    hamaker_constant : float or array_like
+        Hamaker constant A12 [J].
+    cutoff_distance : float or array_like
+        Cut-off (contact) separation D0 [m].
+
+    Returns
+    -------
+    float or ndarray
+        w12 [J/m²]: 0.445 J/m² for silicon (A = 1.1e-18 J, D0 = 2.56 Å).
+
+    Notes
+    -----
+    Thesis 3.5 prints 1.31 J/m² for the same inputs; that is A / (4 pi D0²), three times
+    (3-34). docs/model.md §3 decides for the formula; a parameter set may override w12.
+
+    Examples
+    --------
+    >>> print(f"{work_of_adhesion(1.1e-18, 2.56e-10):.3f}")
+    0.445
+    """
+    a12 = _array(hamaker_constant, "hamaker_constant", "J")
+    d0 = _array(cutoff_distance, "cutoff_distance", "m")
+    return _result(a12 / (12.0 * np.pi * d0**2))
+
+
+@cites("maugis_1992")
+def lennard_jones_surface_stress(gap, work_of_adhesion, equilibrium_distance):
+    """Normal stress between two flat half-spaces interacting by a Lennard-Jones law.
+
+    The integrated (9-3) surface law used by Maugis ([2]_) for the Dugdale approximation:
+
+    .. math:: \\sigma(h) = \\frac{8w}{3z_0}\\left[\\left(\\frac{z_0}{h}\\right)^9 - \\left(\\frac{z_0}{h}\\right)^3\\right]
+
+    positive = repulsive; zero at h = z0; its integral from z0 to infinity is -w; its
+    maximum attraction 16 w / (9 sqrt(3) z0) is at h = 3^(1/6) z0.
+
+    Parameters
+    ----------
+    gap : float or array_like
+        Separation h of the surfaces [m], > 0.
+    work_of_adhesion : float
+        w [J/m²].
+    equilibrium_distance : float
+        Equilibrium separation z0 [m] (memstribo takes the cut-off distance D0).
+
+    Returns
+    -------
+    float or ndarray
+        Stress [Pa].
+    """
+    h = _array(gap, "gap", "m")
+    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
+    z0 = _array(equilibrium_distance, "equilibrium_distance", "m")
+    s3 = (z0 / h) ** 3
+    return _result(8.0 * w / (3.0 * z0) * (s3**3 - s3))
+
+
+@cites("thesis", "maugis_1992")
+def maugis_stress(work_of_adhesion, equilibrium_distance):
+    """Dugdale stress sigma0 of the Maugis approximation ([2]_; thesis 3.3.3, [1]_).
+
+    The constant attractive stress equals the maximum attractive stress of the
+    Lennard-Jones surface law (:func:`lennard_jones_surface_stress`) with the same work of
+    adhesion:
+
+    .. math:: \\sigma_0 = \\frac{16\\,w}{9\\sqrt{3}\\,z_0}
+
+    Parameters
+    ----------
+    work_of_adhesion : float or array_like
+        w [J/m²].
+    equilibrium_distance : float or array_like
+        Equilibrium separation z0 [m] (memstribo: the cut-off distance D0 = 2.56 Å).
+
+    Returns
+    -------
+    float or ndarray
+        sigma0 [Pa] (1.78 GPa for silicon with w = 0.445 J/m²).
+    """
+    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
+    z0 = _array(equilibrium_distance, "equilibrium_distance", "m")
+    return _result(16.0 * w / (9.0 * math.sqrt(3.0) * z0))
+
+
+@cites("thesis", "maugis_1992")
+def maugis_range(work_of_adhesion, maugis_stress):
+    """Range h0 of the Dugdale stress, from w = sigma0 h0, Eq. (3-17) in [1]_.
+
+    Parameters
+    ----------
+    work_of_adhesion : float or array_like
+        w [J/m²].
+    maugis_stress : float or array_like
+        sigma0 [Pa].
+
+    Returns
+    -------
+    float or ndarray
+        h0 [m]; with :func:`maugis_stress` it is 9 sqrt(3)/16 z0 = 0.974 z0.
+    """
+    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
+    s0 = _array(maugis_stress, "maugis_stress", "Pa")
+    return _result(w / s0)
+
+
+def _threshold(threshold_strain):
+    eps = _array(threshold_strain, "threshold_strain", "")
+    if np.any(eps > 1.0):
+        raise InputError(f"threshold_strain must lie in (0, 1], got {threshold_strain!r}.")
+    return eps
+
+
+@cites("thesis", "borodich_savencu_2017")
+def bilinear_stress(strain, modulus, threshold_strain):
+    """Compressive stress of a nano-asperity below its rigid threshold (Figure 3-13 in [1]_).
+
+    Elastic-perfectly rigid law: Hooke's law sigma = E e for 0 <= e <= e_th; at
+    e = e_th the asperity turns rigid, so any further load passes to the next scale and
+    larger strains cannot occur. Compression is positive.
+
+    Parameters
+    ----------
+    strain : float or array_like
+        Compressive strain e [-], 0 <= e <= threshold_strain.
+    modulus : float or array_like
+        Modulus E of the asperity [Pa] (the contact modulus for the atomic and adhesive
+        subscales, MODEL §4).
+    threshold_strain : float
+        e_th [-] (0.30 for silicon nano-asperities).
+
+    Returns
+    -------
+    float or ndarray
+        Stress [Pa]; E e_th at the threshold (the least stress of the rigid state).
+
+    Raises
+    ------
+    InputError
+        If a strain is negative (no tension in a unilateral contact) or exceeds the threshold.
+    See Also
+    --------
+    bilinear_strain : the strain of a given stress (defined for every stress >= 0).
+    """
+    e = _array(strain, "strain", "", positive=False, nonnegative=True)
+    modulus = _array(modulus, "modulus", "Pa")
+    eth = _threshold(threshold_strain)
+    if np.any(e > eth * (1.0 + 1e-12)):
+        raise InputError(
+            f"strain exceeds threshold_strain = {float(np.max(eth)):g}: an elastic-perfectly rigid asperity "
+            "cannot strain past its threshold (use bilinear_strain for a given stress)."
+        )
+    return _result(modulus * np.minimum(e, eth))
+
+
+@cites("thesis", "borodich_savencu_2017")
+def bilinear_strain(stress, modulus, threshold_strain):
+    """Compressive strain of a nano-asperity under a stress, elastic-perfectly rigid law.
+
+    e = min(sigma / E, e_th) (Figure 3-13 in [1]_): Hooke's law up to the threshold strain,
+    then rigid. Compression is positive.
+
+    Parameters
+    ----------
+    stress : float or array_like
+        Compressive stress [Pa], >= 0.
+    modulus : float or array_like
+        Modulus E [Pa].
+    threshold_strain : float
+        e_th [-].
+
+    Returns
+    -------
+    float or ndarray
+        Strain [-].
+    """
+    s = _array(stress, "stress", "Pa", positive=False, nonnegative=True)
+    modulus = _array(modulus, "modulus", "Pa")
+    eth = _threshold(threshold_strain)
+    return _result(np.minimum(s / modulus, eth))
+
+
+def _log1p_ratio(x: np.ndarray) -> np.ndarray:
+    """ln(1 + x) / x, exact limit 1 at x = 0 (series for |x| < 1e-3)."""
+    small = np.abs(x) < 1e-3
+    safe = np.where(small, 1.0, x)
+    series = 1.0 - x / 2.0 + x**2 / 3.0 - x**3 / 4.0 + x**4 / 5.0 - x**5 / 6.0
+    return np.where(small, series, np.log1p(safe) / safe)
+
+
+@cites("thesis", "borodich_2014")
+def no_slip_coefficient(poisson_ratio):
+    """No-slip coefficient C_NS of adhesive contact, Eq. (3-33) in [1]_ ([3]_).
+
+    .. math:: C_{NS} = \\frac{(1-\\nu)\\ln(3-4\\nu)}{1-2\\nu}
+
+    With t = 1 - 2 nu this is (1 - nu) 2 ln(1 + 2t) / (2t); the ratio ln(1+x)/x is
+    evaluated by its series for |x| < 1e-3, so C_NS is smooth through nu = 0.5, where it
+    is exactly 1 (the frictionless value).
+
+    Parameters
+    ----------
+    poisson_ratio : float or array_like
+        nu [-], in (-1, 0.5].
+
+    Returns
+    -------
+    float or ndarray
+        C_NS [-] (1.044 for nu = 0.23).
+
+    Examples
+    --------
+    >>> print(f"{no_slip_coefficient(0.23):.3f}", no_slip_coefficient(0.5))
+    1.044 1.0
+    """
+    nu = _poisson(poisson_ratio)
+    x = 2.0 * (1.0 - 2.0 * nu)  # 3 - 4 nu = 1 + x
+    return _result((1.0 - nu) * 2.0 * _log1p_ratio(x))
+
+
+@cites("thesis", "borodich_2014", "kendall_1971")
+def pull_off_force(work_of_adhesion, contact_modulus, no_slip_coefficient, half_width):
+    """Pull-off force of one block (no-slip Boussinesq-Kendall), Eq. (3-32) in [1]_.
+
+    .. math:: F_{adh,1} = \\sqrt{8\\pi w E^* C_{NS} a^3}
+
+    Parameters
+    ----------
+    work_of_adhesion : float or array_like
+        w [J/m²].
+    contact_modulus : float or array_like
+        E* [Pa].
+    no_slip_coefficient : float or array_like
+        C_NS [-] (from :func:`no_slip_coefficient`), > 0.
+    half_width : float or array_like
+        Contact radius a [m]: half the block width (97.5 nm in thesis 3.5).
+
+    Returns
+    -------
+    float or ndarray
+        Pull-off force [N].
+
+    Examples
+    --------
+    >>> print(f"{pull_off_force(0.4452, 85.0e9, 1.0440, 97.5e-9):.3e}")
+    3.034e-05
+    """
+    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
+    e_star = _array(contact_modulus, "contact_modulus", "Pa")
+    c_ns = _array(no_slip_coefficient, "no_slip_coefficient", "")
+    a = _array(half_width, "half_width", "m")
+    return _result(np.sqrt(8.0 * np.pi * w * e_star * c_ns * a**3))
+
+
+@cites("thesis")
+def total_adhesion_force(gap, adhesive_range, pull_off_force, axis=-1):
+    """Total adhesion force of the blocks inside the adhesive layer, Eq. (3-31) in [1]_.
+
+    F_adh = sum of F_adh,1 over the blocks whose gap to the counter surface is at most
+    the adhesive layer thickness (those blocks have "jumped into contact").
+
+    Parameters
+    ----------
+    gap : array_like
+        Gap of each block to the counter surface [m] (<= 0: in contact); blocks along
+        ``axis``, any leading batch dimensions (e.g. sliding steps).
+    adhesive_range : float
+        Thickness of the adhesive layer [m], >= 0 (thesis 3.5: the adhesive-block height;
+        the Maugis range h0 is the physical alternative).
+    pull_off_force : float or array_like
+        Pull-off force of one block [N], >= 0 (broadcast against ``gap``).
+    axis : int
+        Axis of ``gap`` that runs over the blocks.
+
+    Returns
+    -------
+    float or ndarray
+        F_adh [N] with ``axis`` summed out.
+    """
+    gap = np.asarray(gap, dtype=float)
+    if not np.all(np.isfinite(gap)):
+        raise InputError("gap must be finite [m] (NaN or infinite values given).")
+    h = _array(adhesive_range, "adhesive_range", "m", positive=False, nonnegative=True)
+    force = _array(pull_off_force, "pull_off_force", "N", positive=False, nonnegative=True)
+    inside = gap <= h
+    return _result(np.sum(np.where(inside, force, 0.0), axis=axis))
+
+
+@dataclass(frozen=True)
+class NanoscaleConstants:
+    """The nanoscale constants of a parameter set (what ``memstribo constants`` prints).
+
+    Attributes
+    ----------
+    sigma : float
+        LJ zero-potential distance [m] (3-16).
+    epsilon : float
+        LJ well depth [J] (3-19 to 3-23).
+    contact_modulus : float
+        E* [Pa].
+    work_of_adhesion : float
+        w12 [J/m²] ((3-34), or the parameter set's override).
+    work_of_adhesion_source : str
+        "formula (3-34)" or "parameter".
+    no_slip_coefficient : float
+        C_NS [-] (3-33).
+    pull_off_force_block : float
+        F_adh,1 of one block with a = adhesive_width / 2 [N] (3-32).
+    half_width : float
+        The a used [m].
+    maugis_stress : float
+        Dugdale stress sigma0 [Pa].
+    maugis_range : float
+        h0 = w / sigma0 [m] (3-17).
+    bond_energy_chemical : float
+        U_chem [J].
+    bond_energy_vdw : float
+        U_vdW [J].
+    bond_length : float
+        D_chem [m].
+    """
+
+    sigma: float
+    epsilon: float
+    contact_modulus: float
+    work_of_adhesion: float
+    work_of_adhesion_source: str
+    no_slip_coefficient: float
+    pull_off_force_block: float
+    half_width: float
+    maugis_stress: float
+    maugis_range: float
+    bond_energy_chemical: float
+    bond_energy_vdw: float
+    bond_length: float
+
+
+def nanoscale_constants(params: Mapping) -> NanoscaleConstants:
+    """Compute the nanoscale constants from a parameter set.
+
+    Parameters
+    ----------
+    params : Mapping
+        A :class:`memstribo.parameters.Parameters` (or dict) with ``youngs_modulus``,
+        ``poisson_ratio``, ``counter_youngs_modulus``, ``counter_poisson_ratio``,
+        ``bond_length``, ``bond_energy``, ``vdw_bond_energy``, ``hamaker_constant``,
+        ``cutoff_distance``, ``work_of_adhesion`` (None: derive) and ``adhesive_width``.
+
+    Returns
+    -------
+    NanoscaleConstants
+    """
+    from . import potentials
+
+    e_star = contact_modulus(params["youngs_modulus"], params["poisson_ratio"],
+                             params.get("counter_youngs_modulus"), params.get("counter_poisson_ratio"))
+    if params.get("work_of_adhesion") is None:
+        w = work_of_adhesion(params["hamaker_constant"], params["cutoff_distance"])
+        w_source = "formula (3-34): A / (12 pi D0^2)"
+    else:
+        w = float(_array(params["work_of_adhesion"], "work_of_adhesion", "J/m^2"))
+        w_source = "parameter work_of_adhesion"
+    c_ns = no_slip_coefficient(params["poisson_ratio"])
+    a = 0.5 * float(params["adhesive_width"])
+    s0 = maugis_stress(w, params["cutoff_distance"])
+    return NanoscaleConstants(
+        sigma=potentials.lennard_jones_sigma(params["bond_length"]),
+        epsilon=potentials.lennard_jones_epsilon(params["youngs_modulus"], params["bond_length"]),
+        contact_modulus=e_star,
+        work_of_adhesion=w,
+        work_of_adhesion_source=w_source,
+        no_slip_coefficient=c_ns,
+        pull_off_force_block=pull_off_force(w, e_star, c_ns, a),
+        half_width=a,
+        maugis_stress=s0,
+        maugis_range=maugis_range(w, s0),
+        bond_energy_chemical=float(params["bond_energy"]),
+        bond_energy_vdw=float(params["vdw_bond_energy"]),
+        bond_length=float(params["bond_length"]),
+    )
