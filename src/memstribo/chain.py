@@ -1,0 +1,740 @@
+"""The main job (``memstribo run``): the thesis case end to end, stage by stage.
+
+:class:`RunChain` composes the library in the manner of pvlib's ``ModelChain``: each stage
+is a method that calls the topic modules' public functions, stores its result in
+:attr:`RunChain.results` and writes its outputs (NetCDF + CSV datasets, PNG + SVG figures)
+as soon as they exist, so an interrupted run loses nothing already computed. The stages:
+
+1. ``roughness``   the default profile (seeded, labelled synthetic) and any measured file;
+2. ``geometry``    nanoblock geometry, from the parameters and derived from each profile;
+3. ``gear``        involute pair, Hertz contact at the pitch point, tangential force F_t;
+4. ``mesh``        the bare-silicon meshing cycle (:func:`memstribo.mesh.simulate_mesh`);
+5. ``load_sweep``  COF and dissipated energy versus external load (thesis 4.9.3);
+6. ``area_sweep``  COF and energy versus nominal contact area (4.9.4);
+7. ``coated``      the coated pair, fully functionalised (5.4);
+8. ``wear_sweep``  COF and friction versus the worn fraction Omega (5.5.3);
+9. ``damage``      damage per meshing cycle of the coating and its lifetime (5.5).
+
+A stage whose inputs failed is skipped and says why; a stage never pretends. Each stage's
+figure functions (``plot_*``) and :func:`cycle_summary` work on their own too::
+
+    >>> from memstribo.chain import RunChain, RunOptions           # doctest: +SKIP
+    >>> result = RunChain(params, "results", RunOptions(steps=40)).run()
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+import traceback
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .errors import InputError, MemstriboError, did_you_mean
+from .output import dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
+
+__all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain", "STAGES", "cycle_summary",
+           "verdict"]
+
+#: The stages of the main job, in order, with their titles.
+STAGES: dict[str, str] = {
+    "roughness": "Roughness of the tooth surfaces",
+    "geometry": "Nanoblock geometry",
+    "gear": "Gear pair and macroscopic contact",
+    "mesh": "Bare silicon meshing cycle",
+    "load_sweep": "COF and dissipated energy versus external load",
+    "area_sweep": "COF and dissipated energy versus nominal contact area",
+    "coated": "Coated pair (functionalised surfaces)",
+    "wear_sweep": "Wear of the coating: COF versus worn fraction",
+    "damage": "Damage accumulation and lifetime of the coating",
+}
+
+#: What each stage needs.
+DEPENDS: dict[str, tuple[str, ...]] = {
+    "roughness": (), "geometry": ("roughness",), "gear": (), "mesh": ("roughness",),
+    "load_sweep": ("roughness",), "area_sweep": ("roughness",), "coated": ("roughness",),
+    "wear_sweep": ("roughness",), "damage": ("coated", "gear"),
+}
+
+_RUN_KEYS = {
+    "steps": "positions along the path of contact in each meshing simulation (default: the model's)",
+    "loads": "external loads of the load sweep (default 25 to 300 uN in 25 uN steps, thesis 4.9.3)",
+    "areas": "nominal contact areas of the area sweep, in multiples of A_adh = w_adh^2 (default 1, 2, 4, 8, 16)",
+    "wear": "worn fractions Omega of the wear sweep (default 0, 0.2, 0.4, 0.6, 0.8, 1)",
+    "coating": "coating of the coated stages (default 'OTS')",
+    "roughness_files": "measured profiles / AFM files to analyse besides the default synthetic profile",
+    "mesh_roughness": "which profile the meshing stages use: 'synthetic' (default) or the index of roughness_files",
+    "stages": "stages to run (default: all)",
+    "cycles_observed": "observed coating life [meshing cycles] to calibrate c1 (default: none)",
+}
+
+
+@dataclass(frozen=True)
+class RunOptions:
+    """What the main job runs (the ``[run]`` table of a config file).
+
+    Attributes
+    ----------
+    steps : int or None
+        Positions along the path of contact per meshing simulation (None: the model's default).
+    loads : tuple of float
+        External loads of the load sweep [N].
+    areas : tuple of float
+        Nominal contact areas of the area sweep, in multiples of A_adh [-].
+    wear : tuple of float
+        Worn fractions Omega of the wear sweep [-].
+    coating : str
+        Coating of the coated stages.
+    roughness_files : tuple of str
+        Measured profiles or AFM files (absolute paths).
+    mesh_roughness : str or int
+        ``"synthetic"`` or the index in ``roughness_files`` of the profile the meshing stages use.
+    stages : tuple of str
+        Stages to run.
+    cycles_observed : float or None
+        An observed coating life [cycles] to calibrate the damage constant c1.
+    """
+
+    steps: int | None = None
+    loads: tuple[float, ...] = tuple(float(v) for v in np.arange(1, 13) * 25e-6)
+    areas: tuple[float, ...] = (1.0, 2.0, 4.0, 8.0, 16.0)
+    wear: tuple[float, ...] = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)
+    coating: str = "OTS"
+    roughness_files: tuple[str, ...] = ()
+    mesh_roughness: Any = "synthetic"
+    stages: tuple[str, ...] = tuple(STAGES)
+    cycles_observed: float | None = None
+
+    @classmethod
+    def from_table(cls, table: Mapping[str, Any] | None, base_folder: str | Path | None = None) -> "RunOptions":
+        """Validate a ``[run]`` table (values may carry units: ``loads = ["25 uN", "50 uN"]``).
+
+        Relative file names are taken relative to ``base_folder`` (the config file's folder).
+
+        Raises
+        ------
+        InputError
+            Unknown keys, bad values, missing files.
+        """
+        from .units import to_si
+
+        table = dict(table or {})
+        unknown = sorted(set(table) - set(_RUN_KEYS))
+        if unknown:
+            raise InputError(f"[run]: unknown key '{unknown[0]}'; allowed: {', '.join(_RUN_KEYS)}."
+                             f"{did_you_mean(unknown[0], _RUN_KEYS)}")
+        options: dict[str, Any] = {}
+        if "steps" in table:
+            steps = table["steps"]
+            if not isinstance(steps, int) or isinstance(steps, bool) or steps < 2:
+                raise InputError(f"[run] steps = {steps!r}: give an integer >= 2.")
+            options["steps"] = steps
+
+        def number_list(key, unit, minimum, maximum=None):
+            values = table[key]
+            if not isinstance(values, list) or not values:
+                raise InputError(f"[run] {key}: give a non-empty list, e.g. {key} = [...].")
+            out = [to_si(v, unit, key) for v in values]
+            for raw, v in zip(values, out):
+                if not math.isfinite(v) or v < minimum or (maximum is not None and v > maximum):
+                    allowed = f">= {minimum:g}" + (f" and <= {maximum:g}" if maximum is not None else "")
+                    raise InputError(f"[run] {key}: value {raw!r} is outside its range ({allowed}).")
+            return tuple(out)
+
+        if "loads" in table:
+            options["loads"] = number_list("loads", "N", 0.0)
+            if min(options["loads"]) <= 0:
+                raise InputError("[run] loads: every load must be > 0.")
+        if "areas" in table:
+            options["areas"] = number_list("areas", "", 1.0)
+        if "wear" in table:
+            options["wear"] = number_list("wear", "", 0.0, 1.0)
+        if "coating" in table:
+            options["coating"] = str(table["coating"])
+        if "roughness_files" in table:
+            files = table["roughness_files"]
+            if isinstance(files, str):
+                files = [files]
+            resolved = []
+            for name in files:
+                path = Path(str(name)).expanduser()
+                if not path.is_absolute() and base_folder is not None:
+                    path = Path(base_folder) / path
+                if not path.is_file():
+                    raise InputError(f"[run] roughness_files: '{name}' does not exist.")
+                resolved.append(str(path.resolve()))
+            options["roughness_files"] = tuple(resolved)
+        if "mesh_roughness" in table:
+            choice = table["mesh_roughness"]
+            n_files = len(options.get("roughness_files", ()))
+            if choice != "synthetic" and not (isinstance(choice, int) and 0 <= choice < n_files):
+                raise InputError(f"[run] mesh_roughness = {choice!r}: give 'synthetic' or an index 0..{n_files - 1} "
+                                 "of roughness_files.")
+            options["mesh_roughness"] = choice
+        if "stages" in table:
+            stages = table["stages"]
+            if not isinstance(stages, list) or not stages:
+                raise InputError("[run] stages: give a non-empty list of stage names.")
+            for name in stages:
+                if name not in STAGES:
+                    raise InputError(f"[run] stages: unknown stage '{name}'; stages: {', '.join(STAGES)}."
+                                     f"{did_you_mean(str(name), STAGES)}")
+            options["stages"] = tuple(s for s in STAGES if s in stages)
+        if "cycles_observed" in table:
+            cycles = to_si(table["cycles_observed"], "", "cycles_observed")
+            if not cycles > 0:
+                raise InputError(f"[run] cycles_observed = {table['cycles_observed']!r}: give a number of cycles > 0.")
+            options["cycles_observed"] = cycles
+        return cls(**options)
+
+
+@dataclass
+class StageRecord:
+    """How one stage went.
+
+    Attributes
+    ----------
+    name, title : str
+        Stage name (see :data:`STAGES`) and heading.
+    status : str
+        ``"done"``, ``"skipped"`` (not asked for, or an input stage did not finish), ``"unavailable"``
+        (the model module is not part of this installation) or ``"failed"``.
+    seconds : float
+        Wall time [s].
+    files : list of str
+        Files written, relative to the output folder.
+    message : str
+        Why it was skipped or failed; what it assumed.
+    """
+
+    name: str
+    title: str
+    status: str = "pending"
+    seconds: float = 0.0
+    files: list[str] = field(default_factory=list)
+    message: str = ""
+
+
+@dataclass(frozen=True)
+class FigureRecord:
+    """One figure: ``stem`` (files ``stem.png`` and ``stem.svg``), its stage and its caption."""
+
+    stem: str
+    stage: str
+    caption: str
+
+
+@dataclass
+class RunResult:
+    """The main job's outcome (also in ``run.json`` of the output folder).
+
+    Attributes
+    ----------
+    folder : pathlib.Path
+        Output folder.
+    params : memstribo.parameters.Parameters
+        The parameters used (also ``parameters.toml``).
+    options : RunOptions
+        What was run.
+    stages : list of StageRecord
+        Stage by stage.
+    figures : list of FigureRecord
+        Figures written, in order.
+    summaries : dict
+        Per stage, its scalar results (SI).
+    verdict : dict
+        Stiction and coating life (see :func:`verdict`).
+    inputs : list of dict
+        The roughness inputs with provenance (name, source, synthetic).
+    elapsed : float
+        Wall time [s].
+    """
+
+    folder: Path
+    params: Any
+    options: RunOptions
+    stages: list[StageRecord]
+    figures: list[FigureRecord]
+    summaries: dict[str, Any]
+    verdict: dict[str, Any]
+    inputs: list[dict[str, Any]]
+    elapsed: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        """True when every requested stage is done."""
+        return all(s.status == "done" for s in self.stages if s.name in self.options.stages)
+
+
+class _StageUnavailable(Exception):
+    """A model module this stage needs is not installed (yet)."""
+
+
+def _module(name: str):
+    import importlib
+
+    try:
+        return importlib.import_module(f"memstribo.{name}")
+    except ModuleNotFoundError as exc:
+        if exc.name and exc.name.startswith("memstribo"):
+            raise _StageUnavailable(f"module memstribo.{name} is not part of this installation") from None
+        raise
+
+
+# --- summaries and figures usable alone ----------------------------------------------------------------------
+
+def cycle_summary(dataset) -> dict[str, float]:
+    """Scalars of one meshing cycle (the contract variables of :func:`memstribo.mesh.simulate_mesh`).
+
+    Returns
+    -------
+    dict
+        ``cof_mean`` and its split ``cof_chemical_mean``, ``cof_vdw_mean``, ``cof_elastic_mean`` [-]
+        (averages over the steps in contact), ``friction_force_max`` [N], ``friction_force_mean`` [N],
+        ``adhesion_force_max`` [N], ``energy_chemical``, ``energy_vdw``, ``energy_elastic``,
+        ``energy_total`` [J] (sums over the cycle), ``stiction_margin_min`` [N] (F_t - F_f, lowest).
+    """
+    def mean(name):
+        values = np.asarray(dataset[name].values, dtype=float)
+        values = values[np.isfinite(values)]
+        return float(values.mean()) if values.size else float("nan")
+
+    def total(name):
+        return float(np.nansum(np.asarray(dataset[name].values, dtype=float)))
+
+    energies = {f"energy_{k}": total(f"energy_{k}") for k in ("chemical", "vdw", "elastic")}
+    return {
+        "cof_mean": mean("cof"),
+        "cof_chemical_mean": mean("cof_chemical"),
+        "cof_vdw_mean": mean("cof_vdw"),
+        "cof_elastic_mean": mean("cof_elastic"),
+        "friction_force_mean": mean("friction_force"),
+        "friction_force_max": float(np.nanmax(dataset["friction_force"].values)),
+        "adhesion_force_max": float(np.nanmax(dataset["adhesion_force"].values)),
+        **energies,
+        "energy_total": sum(energies.values()),
+        "stiction_margin_min": float(np.nanmin(dataset["stiction_margin"].values)),
+    }
+
+
+CYCLE_UNITS = {"cof_mean": "", "cof_chemical_mean": "", "cof_vdw_mean": "", "cof_elastic_mean": "",
+               "friction_force_mean": "N", "friction_force_max": "N", "adhesion_force_max": "N",
+               "energy_chemical": "J", "energy_vdw": "J", "energy_elastic": "J", "energy_total": "J",
+               "stiction_margin_min": "N"}
+
+
+def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
+    """Stiction of the bare pair, and of the coated pair over its life, from the stage summaries.
+
+    Returns
+    -------
+    dict
+        ``tangential_force`` F_t [N]; ``bare_friction_force_max`` [N]; ``bare_stiction`` (F_f >= F_t
+        somewhere on the path of contact); ``bare_stiction_margin`` = min(F_t - F_f) [N];
+        ``coated_friction_force_max`` [N], ``coated_stiction``, ``coated_stiction_margin`` [N];
+        ``wear_at_stiction`` (the smallest worn fraction of the sweep with F_f >= F_t, or None);
+        ``cycles_to_stiction`` (from the damage stage, or None). Keys whose stage did not run are absent.
+    """
+    out: dict[str, Any] = {}
+    gear = summaries.get("gear")
+    if gear:
+        out["tangential_force"] = gear["tangential_force"]
+    for label, stage in (("bare", "mesh"), ("coated", "coated")):
+        summary = summaries.get(stage)
+        if summary:
+            out[f"{label}_friction_force_max"] = summary["friction_force_max"]
+            out[f"{label}_stiction_margin"] = summary["stiction_margin_min"]
+            out[f"{label}_stiction"] = bool(summary["stiction_margin_min"] <= 0.0)
+            out[f"{label}_cof_mean"] = summary["cof_mean"]
+    sweep = summaries.get("wear_sweep")
+    if sweep:
+        sticking = [w for w, m in zip(sweep["wear"], sweep["stiction_margin_min"]) if m <= 0.0]
+        out["wear_at_stiction"] = min(sticking) if sticking else None
+    damage = summaries.get("damage")
+    if damage:
+        for key in ("cycles_to_stiction", "cycles_to_failure", "damage_per_cycle_over_c1"):
+            if key in damage:
+                out[key] = damage[key]
+    return out
+
+
+def plot_profiles(profiles):
+    """Heights of each roughness profile along the scan (thesis Figures 3-18, 4-21)."""
+    from .output import new_figure
+
+    figure, axes = new_figure(len(profiles), 1, figsize=(7, 2.2 * len(profiles)), squeeze=False)
+    for ax, profile in zip(axes[:, 0], profiles):
+        ax.plot(np.asarray(profile.x) * 1e6, np.asarray(profile.z) * 1e9, lw=0.8)
+        label = "synthetic" if profile.synthetic else "measured"
+        ax.set_title(f"{profile.name} ({label})", fontsize=9)
+        ax.set_ylabel("z [nm]")
+    axes[-1, 0].set_xlabel("x [µm]")
+    figure.tight_layout()
+    return figure
+
+
+def plot_cycle(dataset, tangential_force=None, title=""):
+    """Friction, adhesion and normal force, and the COF split, over the meshing cycle (Figs. 4-41..4-46)."""
+    from .output import new_figure
+
+    figure, (top, bottom) = new_figure(2, 1, figsize=(7, 6), sharex=True)
+    c = np.asarray(dataset["c"].values) * 1e6 if "c" in dataset.coords else np.arange(dataset.sizes["step"])
+    for name, style in (("friction_force", "-"), ("adhesion_force", "--"), ("normal_force", ":")):
+        top.plot(c, np.asarray(dataset[name].values) * 1e6, style, label=name.replace("_", " "))
+    if tangential_force is not None:
+        top.axhline(tangential_force * 1e6, color="k", lw=0.8, label="available tangential force F_t")
+    top.set_ylabel("force [µN]")
+    top.legend(fontsize=8)
+    top.set_title(title, fontsize=10)
+    for name in ("cof", "cof_chemical", "cof_vdw", "cof_elastic"):
+        bottom.plot(c, dataset[name].values, label=name.replace("_", " "))
+    bottom.set_ylabel("COF [-]")
+    bottom.set_xlabel("position on the line of action c [µm]")
+    bottom.legend(fontsize=8)
+    figure.tight_layout()
+    return figure
+
+
+def plot_energy(dataset, title=""):
+    """Energy dissipated per step by mechanism over the meshing cycle (Figure 4-47)."""
+    from .output import new_figure
+
+    figure, ax = new_figure(figsize=(7, 3.5))
+    c = np.asarray(dataset["c"].values) * 1e6 if "c" in dataset.coords else np.arange(dataset.sizes["step"])
+    for name in ("energy_chemical", "energy_vdw", "energy_elastic"):
+        ax.plot(c, dataset[name].values, label=name.replace("_", " "))
+    ax.set_yscale("symlog", linthresh=1e-20)
+    ax.set_xlabel("position on the line of action c [µm]")
+    ax.set_ylabel("energy per step [J]")
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=8)
+    figure.tight_layout()
+    return figure
+
+
+def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""):
+    """COF (split) and dissipated energy of a sweep (Figures 4-48..4-51, 5-22..5-25)."""
+    from .output import new_figure
+
+    figure, (left, right) = new_figure(1, 2, figsize=(10, 3.8))
+    xs = np.asarray(dataset[x].values) * x_scale
+    for name in ("cof_mean", "cof_chemical_mean", "cof_vdw_mean", "cof_elastic_mean"):
+        left.plot(xs, dataset[name].values, "o-", ms=3, label=name.replace("_mean", "").replace("_", " "))
+    left.set_xlabel(x_label)
+    left.set_ylabel("mean COF over the cycle [-]")
+    left.legend(fontsize=8)
+    if tangential_force is None:
+        right.plot(xs, dataset["energy_total"].values, "o-", ms=3)
+        right.set_ylabel("energy dissipated per cycle [J]")
+    else:
+        right.plot(xs, np.asarray(dataset["friction_force_max"].values) * 1e6, "o-", ms=3, label="max friction force")
+        right.axhline(tangential_force * 1e6, color="k", lw=0.8, label="F_t")
+        right.set_ylabel("force [µN]")
+        right.legend(fontsize=8)
+    right.set_xlabel(x_label)
+    figure.suptitle(title, fontsize=10)
+    figure.tight_layout()
+    return figure
+
+
+def _sweep_dataset(dimension, values, unit, long_name, summaries):
+    import xarray as xr
+
+    data = {key: (dimension, np.array([s[key] for s in summaries], dtype=float),
+                  {"units": CYCLE_UNITS[key], "long_name": key.replace("_", " ")}) for key in CYCLE_UNITS}
+    return xr.Dataset(data, coords={dimension: (dimension, np.asarray(values, dtype=float),
+                                                {"units": unit, "long_name": long_name})})
+
+
+# --- the chain --------------------------------------------------------------------------------------------------
+
+class RunChain:
+    """The thesis case end to end; each stage is a method usable on its own.
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters
+        Parameters (with the user's overrides).
+    out : str or pathlib.Path
+        Output folder (created).
+    options : RunOptions, optional
+        What to run (default: everything, thesis settings).
+    progress : bool
+        Progress bar over the stages on stderr.
+    """
+
+    def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False):
+        self.params = params
+        self.folder = ensure_directory(out)
+        self.options = options or RunOptions()
+        self.progress = progress
+        self.results: dict[str, Any] = {}
+        self.summaries: dict[str, Any] = {}
+        self.figures: list[FigureRecord] = []
+        self.inputs: list[dict[str, Any]] = []
+        self.records = {name: StageRecord(name, title) for name, title in STAGES.items()}
+        self._current: StageRecord | None = None
+
+    # writing helpers ---------------------------------------------------------------------------
+    def _files(self, paths):
+        for path in paths:
+            self._current.files.append(str(Path(path).relative_to(self.folder)))
+
+    def _dataset(self, dataset, stem):
+        self._files(write_dataset(dataset, self.folder / "data", stem))
+
+    def _figure(self, figure, stem, caption):
+        self._files(save_figure(figure, self.folder / "figures", stem))
+        self.figures.append(FigureRecord(stem, self._current.name, caption))
+
+    def _json(self, value, stem):
+        path = self.folder / "data" / f"{stem}.json"
+        ensure_directory(path.parent)
+        tmp = path.with_name(path.name + ".tmp")
+        tmp.write_text(dumps_json(value), encoding="utf-8")
+        tmp.replace(path)
+        self._files([path])
+
+    # stages --------------------------------------------------------------------------------------
+    def roughness(self):
+        """Default synthetic profile and measured files: statistics (ISO 4287) and figure."""
+        roughness = _module("roughness")
+        profiles = [roughness.default_profile(self.params)]
+        for path in self.options.roughness_files:
+            readers = _module("readers")
+            surface = readers.read_topography(path)
+            if not isinstance(surface, roughness.Profile):
+                rows = surface.line_scans()
+                profile = rows[len(rows) // 2]
+            else:
+                profile = surface
+            profiles.append(profile)
+        statistics = [roughness.profile_statistics(p) for p in profiles]
+        import xarray as xr
+
+        keys = [k for k, v in statistics[0].to_dict().items() if isinstance(v, (int, float)) and not isinstance(v, bool)]
+        units = {"Ra": "m", "Rq": "m", "Rp": "m", "Rv": "m", "Rz": "m", "lambda_q": "m", "sample_spacing": "m",
+                 "length": "m"}
+        table = xr.Dataset({k: ("profile", np.array([s.to_dict()[k] for s in statistics], dtype=float),
+                                {"units": units.get(k, ""), "long_name": k}) for k in keys},
+                           coords={"profile": ("profile", np.array([p.name for p in profiles], dtype=object))})
+        self._dataset(table, "roughness_statistics")
+        for i, profile in enumerate(profiles):
+            ds = xr.Dataset({"z": ("x", np.asarray(profile.z), {"units": "m", "long_name": "height"})},
+                            coords={"x": ("x", np.asarray(profile.x), {"units": "m", "long_name": "position"})},
+                            attrs={"name": profile.name, "source": profile.source,
+                                   "synthetic": int(bool(profile.synthetic))})
+            self._dataset(ds, f"profile_{i}")
+        self.inputs = [{"name": p.name, "source": p.source, "synthetic": bool(p.synthetic),
+                        "Rq": s.Rq, "Ra": s.Ra, "rms_slope": s.rms_slope, "n_points": s.n_points,
+                        "sample_spacing": s.sample_spacing} for p, s in zip(profiles, statistics)]
+        self._figure(plot_profiles(profiles), "roughness_profiles",
+                     "Roughness profiles after levelling (the default is synthetic, seeded; measured files as named).")
+        self.results["profiles"] = profiles
+        choice = self.options.mesh_roughness
+        self.results["mesh_profile"] = profiles[0] if choice == "synthetic" else profiles[1 + int(choice)]
+        self.summaries["roughness"] = {p.name: s.to_dict() for p, s in zip(profiles, statistics)}
+
+    def geometry(self):
+        """Nanoblock geometry from the parameters, and derived from each profile (with the rules used)."""
+        geometry = _module("nanoblock.geometry")
+        rows = {"parameters": geometry.NanoblockGeometry.from_parameters(self.params)}
+        for profile in self.results["profiles"]:
+            try:
+                rows[f"from profile {profile.name}"] = geometry.nanoblock_geometry_from_profile(profile)
+            except MemstriboError as exc:
+                self._current.message += f"geometry from '{profile.name}' not derived: {exc} "
+        fields = ("atomic_width", "atomic_height", "adhesive_width", "adhesive_height", "atomic_pitch",
+                  "atomic_per_side", "bulk_height")
+        summary = {label: {**{f: getattr(g, f) for f in fields}, "rules": dict(getattr(g, "rules", {}))}
+                   for label, g in rows.items()}
+        self._json(summary, "nanoblock_geometry")
+        self.results["geometry"] = rows["parameters"]
+        self.summaries["geometry"] = summary
+
+    def gear(self):
+        """Gear pair geometry, Hertz contact at the pitch point and F_t (4-27)."""
+        from .cli.gear import gear_summary
+
+        _module("gear")
+        values, units = gear_summary(self.params)
+        self._json({"values": values, "units": units}, "gear")
+        self.summaries["gear"] = values
+
+    def _simulate(self, params, coating=None, wear=1.0):
+        mesh = _module("mesh")
+        coating_object = None
+        if coating is not None:
+            coating_object = _module("coating").get_coating(coating)
+        return mesh.simulate_mesh(params, self.results["mesh_profile"], steps=self.options.steps,
+                                  coating=coating_object, wear=wear)
+
+    def _tangential_force(self):
+        gear = self.summaries.get("gear")
+        return gear["tangential_force"] if gear else None
+
+    def mesh(self):
+        """The bare-silicon meshing cycle (thesis 4.9): forces, COF and its split, energies."""
+        dataset = self._simulate(self.params)
+        self._dataset(dataset, "mesh_bare")
+        self.results["mesh"] = dataset
+        self.summaries["mesh"] = cycle_summary(dataset)
+        self._figure(plot_cycle(dataset, self._tangential_force(), "bare silicon"), "mesh_bare_forces_cof",
+                     "Bare silicon meshing cycle: friction, adhesion and normal force against the available "
+                     "tangential force F_t (top), COF and its chemical / vdW / elastic split (bottom).")
+        self._figure(plot_energy(dataset, "bare silicon"), "mesh_bare_energy",
+                     "Energy dissipated per step by chemical bonds, vdW bonds and elastic interlocking.")
+
+    def load_sweep(self):
+        """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
+        summaries = [cycle_summary(self._simulate(self.params.updated({"normal_load": load}, origin="load sweep")))
+                     for load in self._tick(self.options.loads, "load sweep")]
+        dataset = _sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
+        self._dataset(dataset, "load_sweep")
+        self.summaries["load_sweep"] = {"normal_load": list(self.options.loads),
+                                        **{k: [s[k] for s in summaries] for k in CYCLE_UNITS}}
+        self._figure(plot_sweep(dataset, "normal_load", "external load [µN]", 1e6, title="bare silicon"),
+                     "load_sweep", "Mean COF (split) and energy dissipated per cycle versus external load "
+                     "(thesis 4.9.3, Figures 4-48 and 4-49).")
+
+    def area_sweep(self):
+        """COF and energy versus nominal contact area, in multiples of A_adh = w_adh^2 (4.9.4).
+
+        The nominal area is set through the face width: L = k w_adh^2 / (2 a) would tie it to the
+        Hertz width; memstribo keeps the contact width of the model and scales the face width,
+        L = k w_adh (one row of k nanoblocks across the face).
+        """
+        width = self.params["adhesive_width"]
+        summaries = [cycle_summary(self._simulate(self.params.updated({"face_width": k * width}, origin="area sweep")))
+                     for k in self._tick(self.options.areas, "area sweep")]
+        dataset = _sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
+        dataset["face_width"] = ("area_multiple", np.asarray(self.options.areas) * width,
+                                 {"units": "m", "long_name": "face width"})
+        self._dataset(dataset, "area_sweep")
+        self.summaries["area_sweep"] = {"area_multiple": list(self.options.areas),
+                                        **{k: [s[k] for s in summaries] for k in CYCLE_UNITS}}
+        self._figure(plot_sweep(dataset, "area_multiple", "nominal area [A_adh]", title="bare silicon"),
+                     "area_sweep", "Mean COF and energy dissipated per cycle versus nominal contact area "
+                     "(face width = k w_adh; thesis 4.9.4, Figures 4-49 and 4-50).")
+
+    def coated(self):
+        """The coated pair, fully functionalised (Omega = 0; thesis 5.4)."""
+        dataset = self._simulate(self.params, coating=self.options.coating, wear=0.0)
+        self._dataset(dataset, "mesh_coated")
+        self.results["coated"] = dataset
+        self.summaries["coated"] = cycle_summary(dataset)
+        self._figure(plot_cycle(dataset, self._tangential_force(), f"{self.options.coating}-coated, Omega = 0"),
+                     "mesh_coated_forces_cof", f"Meshing cycle of the {self.options.coating}-coated pair "
+                     "(no chemical bonds): forces against F_t and the COF split.")
+
+    def wear_sweep(self):
+        """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
+        summaries = [cycle_summary(self._simulate(self.params, coating=self.options.coating, wear=w))
+                     for w in self._tick(self.options.wear, "wear sweep")]
+        dataset = _sweep_dataset("wear", self.options.wear, "", "worn fraction Omega of the gear's coating",
+                                 summaries)
+        self._dataset(dataset, "wear_sweep")
+        self.summaries["wear_sweep"] = {"wear": list(self.options.wear),
+                                        **{k: [s[k] for s in summaries] for k in CYCLE_UNITS}}
+        self._figure(plot_sweep(dataset, "wear", "worn fraction Omega [%]", 100.0, self._tangential_force(),
+                                title=self.options.coating), "wear_sweep",
+                     "Mean COF (split) and the largest friction force over the cycle against F_t versus the "
+                     "worn fraction Omega of the gear's coating (thesis 5.5.3).")
+
+    def damage(self):
+        """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
+        damage = _module("damage")
+        run = getattr(damage, "run_damage", None)
+        if run is None:
+            raise _StageUnavailable("memstribo.damage has no run_damage(params, mesh_dataset, ...) yet")
+        outcome = run(self.params, self.results["coated"], wear_sweep=self.summaries.get("wear_sweep"),
+                      cycles_observed=self.options.cycles_observed)
+        self.summaries["damage"] = dict(outcome.summary)
+        for stem, dataset in getattr(outcome, "datasets", {}).items():
+            self._dataset(dataset, stem)
+        for stem, (figure, caption) in getattr(outcome, "figures", {}).items():
+            self._figure(figure, stem, caption)
+
+    # running -------------------------------------------------------------------------------------
+    def _tick(self, values, label):
+        if not self.progress:
+            return values
+        from tqdm import tqdm
+
+        return tqdm(values, desc=f"  {label}", leave=False, file=sys.stderr, unit="pt")
+
+    def run_stage(self, name: str) -> StageRecord:
+        """Run one stage (if its inputs exist) and record how it went."""
+        record = self.records[name]
+        self._current = record
+        if name not in self.options.stages:
+            record.status, record.message = "skipped", "not requested ([run] stages)"
+            return record
+        missing = [d for d in DEPENDS[name] if self.records[d].status != "done"]
+        if missing:
+            record.status = "skipped"
+            record.message = f"needs stage(s) {', '.join(missing)}, which did not finish"
+            return record
+        start = time.perf_counter()
+        try:
+            getattr(self, name)()
+            record.status = "done"
+        except _StageUnavailable as exc:
+            record.status, record.message = "unavailable", str(exc)
+        except MemstriboError as exc:
+            record.status, record.message = "failed", f"{type(exc).__name__}: {exc}"
+        except Exception as exc:  # a bug: keep the other stages, say so loudly
+            record.status = "failed"
+            record.message = f"internal error {type(exc).__name__}: {exc}"
+            (self.folder / f"error_{name}.txt").write_text(traceback.format_exc(), encoding="utf-8")
+        record.seconds = time.perf_counter() - start
+        return record
+
+    def run(self) -> RunResult:
+        """All stages in order; parameters, references, run.json and report.html after each."""
+        from tqdm import tqdm
+
+        from .references import reset_used_references
+
+        start = time.perf_counter()
+        reset_used_references()
+        self._write_text("parameters.toml", self.params.to_toml())
+        bar = tqdm(list(STAGES), desc="memstribo run", unit="stage", file=sys.stderr, disable=not self.progress)
+        for name in bar:
+            bar.set_postfix_str(name)
+            self.run_stage(name)
+            self._finish(time.perf_counter() - start)
+        bar.close()
+        return self._finish(time.perf_counter() - start)
+
+    def _write_text(self, name, text):
+        path = self.folder / name
+        tmp = path.with_name(path.name + ".tmp")
+        tmp.write_text(text, encoding="utf-8")
+        tmp.replace(path)
+
+    def _finish(self, elapsed) -> RunResult:
+        from .references import used_references
+        from .report import write_report
+
+        result = RunResult(self.folder, self.params, self.options, list(self.records.values()), list(self.figures),
+                           dict(self.summaries), verdict(self.summaries), list(self.inputs), elapsed)
+        references = used_references()
+        self._write_text("references.txt", "".join(f"[{key}] {text}\n" for key, text in references))
+        self._write_text("run.json", dumps_json({
+            "elapsed": elapsed, "options": to_jsonable(self.options.__dict__),
+            "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
+            "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
+            "references": [key for key, _ in references]}))
+        write_report(result, self.folder / "report.html")
+        return result
+
+
+def options_for_test(**changes) -> RunOptions:
+    """Small, fast options (few steps and sweep points) exercising every stage."""
+    return replace(RunOptions(steps=8, loads=(25e-6, 150e-6), areas=(1.0, 4.0), wear=(0.0, 1.0)), **changes)

@@ -1,0 +1,88 @@
+"""``memstribo run [CONFIG.toml] [--out DIR]``: the thesis case end to end, with report.html."""
+
+from __future__ import annotations
+
+import sys
+
+from .common import CommandResult
+
+NAME = "run"
+HELP = "the main job: roughness -> nanoblocks -> meshing cycle -> sweeps -> coating -> wear -> damage, with report.html"
+ORDER = 1
+
+DESCRIPTION = """\
+Run the thesis case end to end with the default parameters (or CONFIG.toml): roughness
+(the default synthetic profile and any file the config names) -> nanoblock geometry ->
+gear pair -> bare silicon meshing cycle -> load and area sweeps -> coated pair -> wear
+sweep -> damage and lifetime. Writes datasets (NetCDF + CSV) to DIR/data, figures (PNG +
+SVG) to DIR/figures, parameters.toml, references.txt, run.json and DIR/report.html; each
+stage's files as soon as it finishes.
+
+CONFIG.toml may hold parameter overrides ([parameters]) and a [run] table, e.g.
+  [run]
+  roughness_files = ["data/afm/si_profile_linescan.txt"]
+  steps = 60
+  loads = ["25 uN", "100 uN", "300 uN"]
+  wear = [0.0, 0.5, 1.0]
+  coating = "OTS"
+  stages = ["roughness", "geometry", "gear", "mesh"]
+See examples/run_thesis_case.toml.
+"""
+
+
+def register(subparsers, parents):
+    import argparse
+
+    parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=DESCRIPTION,
+                                   formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("config_file", nargs="?", metavar="CONFIG.toml",
+                        help="parameter overrides and a [run] table (optional)")
+    parser.add_argument("--out", default="memstribo-results", metavar="DIR",
+                        help="output folder (default: memstribo-results)")
+    parser.add_argument("--steps", type=int, default=None, metavar="N",
+                        help="positions along the path of contact per meshing simulation (overrides [run] steps)")
+    parser.add_argument("--roughness", action="append", default=[], metavar="FILE",
+                        help="a measured profile or AFM file to analyse as well (repeatable)")
+    parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
+                        help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    parser.set_defaults(handler=run)
+
+
+def run(args, params):
+    from dataclasses import replace
+    from pathlib import Path
+
+    from ..chain import RunChain, RunOptions
+    from ..errors import InputError
+    from ..parameters import read_config
+
+    table = dict(getattr(args, "config_tables", {}).get("run", {}))
+    base = Path(args.config).parent if args.config else None
+    if args.config_file:
+        config = read_config(args.config_file)
+        params = params.updated(config.pop("parameters"), origin=f"config file {args.config_file}")
+        table.update(config.get("run", {}))
+        base = Path(args.config_file).parent
+        if args.overrides:  # --set wins over the config file
+            from ..parameters import parse_assignment
+
+            params = params.updated(dict(parse_assignment(t) for t in args.overrides), origin="--set")
+    options = RunOptions.from_table(table, base)
+    if args.steps is not None:
+        if args.steps < 2:
+            raise InputError(f"--steps {args.steps}: give an integer >= 2.")
+        options = replace(options, steps=args.steps)
+    if args.roughness:
+        extra = RunOptions.from_table({"roughness_files": args.roughness}, Path.cwd()).roughness_files
+        options = replace(options, roughness_files=options.roughness_files + extra)
+    progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
+    result = RunChain(params, args.out, options, progress=progress).run()
+    values = {"folder": str(result.folder), "report": str(result.folder / "report.html"),
+              "elapsed": result.elapsed, "complete": result.ok,
+              "stages": {s.name: s.status for s in result.stages}, **result.verdict}
+    units = {"elapsed": "s", "tangential_force": "N", "bare_friction_force_max": "N", "bare_stiction_margin": "N",
+             "coated_friction_force_max": "N", "coated_stiction_margin": "N"}
+    notes = [f"  {s.name}: {s.status}{' - ' + s.message if s.message else ''}" for s in result.stages
+             if s.status != "done" or s.message]
+    notes.append(f"  open {result.folder / 'report.html'} in a browser")
+    return CommandResult(values=values, units=units, title="memstribo run: the thesis case end to end", notes=notes)

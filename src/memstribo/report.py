@@ -1,0 +1,244 @@
+"""report.html: one self-contained page of a ``memstribo run`` that a tribologist can read.
+
+The page holds the question, the inputs with their provenance, the verdict (stiction of the
+bare and of the coated pair, margin, coating life), every figure (embedded as base64 PNG,
+with its caption), the stages with their status, the validation table (thesis against
+memstribo, with tolerances and reasons) and the references used. Nothing is loaded from
+outside the file. Every text that comes from input files or the user (file names,
+metadata, parameter sources) is escaped with :func:`html.escape`.
+
+A small inline script sets ``data-figures`` on ``<body>`` to ``"ok N"`` once all N images
+have loaded with a non-zero natural width (or ``"broken K of N"``); the browser test reads it.
+"""
+
+from __future__ import annotations
+
+import base64
+import datetime as _dt
+import functools
+import html
+import math
+import os
+from pathlib import Path
+from typing import Any
+
+__all__ = ["render_report", "write_report", "QUESTION"]
+
+QUESTION = (
+    "Two silicon MEMS gear teeth mesh in vacuum. From the nanoscale roughness of their surfaces: what friction "
+    "force and coefficient of friction act over the meshing cycle, how much of it comes from chemical bonds, "
+    "van der Waals bonds and elastic interlocking, will the teeth stick (friction force above the available "
+    "tangential force F_t), and, with a self-assembled monolayer coating, how fast does the coating wear and "
+    "after how many meshing cycles does stiction return?"
+)
+
+_CSS = """
+body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;max-width:62rem;margin:2rem auto;padding:0 1rem;
+color:#1b1b1b;line-height:1.45}
+h1{font-size:1.6rem}h2{font-size:1.25rem;border-bottom:1px solid #ccc;padding-bottom:.2rem;margin-top:2rem}
+table{border-collapse:collapse;font-size:.85rem;margin:.5rem 0}th,td{border:1px solid #ccc;padding:.2rem .45rem;
+vertical-align:top}th{background:#f2f2f2;text-align:left}td.num{text-align:right;font-variant-numeric:tabular-nums}
+.verdict{border:2px solid #555;border-radius:6px;padding:.6rem 1rem;background:#fafafa}
+.bad{color:#a00;font-weight:bold}.good{color:#060;font-weight:bold}.note{color:#555;font-size:.85rem}
+figure{margin:1.2rem 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.9rem;color:#333}
+code{background:#f4f4f4;padding:0 .2rem}details{margin:.5rem 0}
+"""
+
+_SCRIPT = """
+<script>
+(function () {
+  function check() {
+    var imgs = Array.prototype.slice.call(document.images);
+    var pending = imgs.filter(function (i) { return !i.complete; });
+    if (pending.length) { setTimeout(check, 50); return; }
+    var broken = imgs.filter(function (i) { return !(i.naturalWidth > 0); });
+    document.body.setAttribute('data-figures',
+      broken.length ? 'broken ' + broken.length + ' of ' + imgs.length : 'ok ' + imgs.length);
+  }
+  if (document.readyState === 'complete') { check(); } else { window.addEventListener('load', check); }
+})();
+</script>
+"""
+
+
+def _e(text: Any) -> str:
+    return html.escape(str(text), quote=True)
+
+
+def _quantity(value: Any, unit: str = "") -> str:
+    from .cli.common import format_value
+
+    if value is None:
+        return "-"
+    if isinstance(value, float) and not math.isfinite(value):
+        return "-"
+    return _e(format_value(value, unit))
+
+
+@functools.lru_cache(maxsize=1)
+def _validation_rows():
+    """All validation rows (computed once per process), or the error that stopped them."""
+    from .validation import all_rows
+
+    try:
+        return tuple(all_rows()), None
+    except Exception as exc:  # a topic's rows broke: say so in the page, keep the rest of the report
+        return (), f"{type(exc).__name__}: {exc}"
+
+
+def _verdict_html(result) -> str:
+    v = result.verdict
+    items = []
+    if "bare_stiction" in v:
+        word = "STICTION" if v["bare_stiction"] else "no stiction"
+        cls = "bad" if v["bare_stiction"] else "good"
+        items.append(f"<li>Bare silicon: <span class='{cls}'>{word}</span>: the largest friction force over the "
+                     f"meshing cycle is {_quantity(v['bare_friction_force_max'], 'N')} against an available tangential "
+                     f"force F<sub>t</sub> = {_quantity(v.get('tangential_force'), 'N')}; smallest margin "
+                     f"F<sub>t</sub> &minus; F<sub>f</sub> = {_quantity(v['bare_stiction_margin'], 'N')}; mean COF "
+                     f"{_quantity(v['bare_cof_mean'])}.</li>")
+    if "coated_stiction" in v:
+        word = "STICTION" if v["coated_stiction"] else "no stiction"
+        cls = "bad" if v["coated_stiction"] else "good"
+        coating = _e(result.options.coating)
+        items.append(f"<li>{coating}-coated pair, intact coating: <span class='{cls}'>{word}</span>: largest friction "
+                     f"force {_quantity(v['coated_friction_force_max'], 'N')}, smallest margin "
+                     f"{_quantity(v['coated_stiction_margin'], 'N')}; mean COF {_quantity(v['coated_cof_mean'])}.</li>")
+    if "wear_at_stiction" in v:
+        wear = v["wear_at_stiction"]
+        text = ("no worn fraction of the sweep reaches stiction" if wear is None else
+                f"stiction returns once a fraction &Omega; = {wear * 100:.0f} % of the gear's coating is worn "
+                "(smallest such value of the sweep)")
+        items.append(f"<li>Coating wear: {text}.</li>")
+    if v.get("cycles_to_stiction") is not None:
+        items.append(f"<li>Coating life: stiction returns after about {_quantity(v['cycles_to_stiction'])} meshing "
+                     "cycles.</li>")
+    elif "damage_per_cycle_over_c1" in v:
+        items.append("<li>Coating life: the damage constant c<sub>1</sub> is not known from first principles; the "
+                     "damage per cycle divided by c<sub>1</sub> is "
+                     f"{_quantity(v['damage_per_cycle_over_c1'])} (give an observed life to calibrate it).</li>")
+    if not items:
+        items.append("<li>No verdict: the meshing stages did not run (see the stages below).</li>")
+    return "<div class='verdict'><ul>" + "".join(items) + "</ul></div>"
+
+
+def _inputs_html(result) -> str:
+    rows = []
+    for item in result.inputs:
+        label = "synthetic (generated, seeded)" if item.get("synthetic") else "measured"
+        rows.append(f"<tr><td>{_e(item.get('name', ''))}</td><td>{_e(label)}</td><td>{_e(item.get('source', ''))}</td>"
+                    f"<td class='num'>{_quantity(item.get('Rq'), 'm')}</td>"
+                    f"<td class='num'>{_quantity(item.get('rms_slope'))}</td>"
+                    f"<td class='num'>{_quantity(item.get('n_points'))}</td></tr>")
+    roughness = ("<table><tr><th>profile</th><th>kind</th><th>provenance</th><th>Rq</th><th>rms slope</th>"
+                 "<th>points</th></tr>" + "".join(rows) + "</table>") if rows else "<p>No roughness input was read.</p>"
+    from .parameters import SPECS
+
+    params = result.params
+    param_rows = []
+    for name in params:
+        spec = SPECS.get(name)
+        unit = spec.unit if spec else ""
+        value = params[name]
+        shown = "unset (derived)" if value is None else _quantity(value, unit)
+        param_rows.append(f"<tr><td><code>{_e(name)}</code></td><td class='num'>{shown}</td>"
+                          f"<td>{_e(spec.description if spec else '')}</td><td>{_e(params.source(name))}</td></tr>")
+    changed = [name for name in params if not str(params.source(name)).startswith("thesis")
+               and "MODEL" not in str(params.source(name))]
+    changed_text = (", ".join(f"<code>{_e(n)}</code>" for n in changed) if changed else "none")
+    options = result.options
+    return (
+        "<h3>Roughness</h3>" + roughness +
+        f"<h3>Parameters</h3><p>Parameter set <code>{_e(params.name)}</code>; every value with its unit and source "
+        f"is in <code>parameters.toml</code>. Values not from the thesis or docs/model.md: {changed_text}.</p>"
+        "<details><summary>All parameters with sources</summary><table><tr><th>name</th><th>value</th>"
+        "<th>meaning</th><th>source</th></tr>" + "".join(param_rows) + "</table></details>"
+        f"<p class='note'>Run options: steps per cycle {_e(options.steps or 'model default')}, coating "
+        f"{_e(options.coating)}, {len(options.loads)} loads, {len(options.areas)} areas, {len(options.wear)} worn "
+        "fractions.</p>"
+    )
+
+
+def _stages_html(result) -> str:
+    rows = "".join(
+        f"<tr><td>{_e(s.title)}</td><td>{_e(s.status)}</td><td class='num'>{s.seconds:.1f} s</td>"
+        f"<td>{_e(s.message)}</td></tr>" for s in result.stages)
+    return "<table><tr><th>stage</th><th>status</th><th>time</th><th>note</th></tr>" + rows + "</table>"
+
+
+def _figures_html(result) -> str:
+    parts = []
+    for number, figure in enumerate(result.figures, start=1):
+        path = Path(result.folder) / "figures" / f"{figure.stem}.png"
+        try:
+            data = base64.b64encode(path.read_bytes()).decode("ascii")
+        except OSError:
+            parts.append(f"<p class='bad'>Figure {number} ({_e(figure.stem)}) is missing.</p>")
+            continue
+        parts.append(f"<figure id='fig-{_e(figure.stem)}'><img alt='{_e(figure.caption)}' "
+                     f"src='data:image/png;base64,{data}'><figcaption><b>Figure {number}.</b> {_e(figure.caption)} "
+                     f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
+    return "".join(parts) or "<p>No figures: the stages that draw them did not run.</p>"
+
+
+def _validation_html() -> str:
+    rows, error = _validation_rows()
+    parts = ["<p>Each memstribo value comes from the command named (the same library call); the table is also "
+             "<code>docs/validation.md</code>, generated by <code>python -m memstribo.validation</code>.</p>"]
+    if error:
+        parts.append(f"<p class='bad'>The validation rows could not all be computed: {_e(error)}</p>")
+    if rows:
+        from .validation.__main__ import format_number
+
+        body = "".join(
+            f"<tr><td>{_e(r.topic)}</td><td>{_e(r.quantity)}</td><td>{_e(r.reference)}</td>"
+            f"<td class='num'>{_e(format_number(r.reference_value))}</td><td class='num'>{_e(format_number(r.value))}</td>"
+            f"<td>{_e(r.unit)}</td><td>{_e(r.tolerance)}</td>"
+            f"<td class='{'good' if r.agrees else 'bad'}'>{'yes' if r.agrees else 'no'}</td>"
+            f"<td><code>{_e(r.command)}</code></td><td>{_e(r.note)}</td></tr>" for r in rows)
+        parts.append("<table><tr><th>topic</th><th>quantity</th><th>reference</th><th>reference value</th>"
+                     "<th>memstribo</th><th>unit</th><th>tolerance</th><th>agrees</th><th>command</th><th>note</th></tr>"
+                     + body + "</table>")
+    return "".join(parts)
+
+
+def _references_html() -> str:
+    from .references import used_references
+
+    items = "".join(f"<li id='ref-{_e(k)}'><b>[{_e(k)}]</b> {_e(text)}</li>" for k, text in used_references())
+    return f"<ol>{items}</ol>" if items else "<p>No model function recorded a reference.</p>"
+
+
+def render_report(result) -> str:
+    """The whole page as text (see the module docstring)."""
+    from . import __version__
+
+    stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    done = sum(1 for s in result.stages if s.status == "done")
+    return "".join([
+        "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>",
+        "<meta name='viewport' content='width=device-width, initial-scale=1'>",
+        "<title>memstribo run: friction, stiction and coating wear of silicon microgear teeth</title>",
+        f"<style>{_CSS}</style></head><body data-figures='pending'>",
+        "<h1>memstribo: friction, stiction and coating wear of silicon MEMS microgear teeth</h1>",
+        f"<p class='note'>memstribo {_e(__version__)}, {stamp}, {result.elapsed:.0f} s; {done} of "
+        f"{len(result.stages)} stages done; output folder <code>{_e(os.path.basename(str(result.folder)) or result.folder)}"
+        "</code>.</p>",
+        f"<h2>The question</h2><p>{_e(QUESTION)}</p>",
+        "<h2>Verdict</h2>", _verdict_html(result),
+        "<h2>Inputs and their provenance</h2>", _inputs_html(result),
+        "<h2>Figures</h2>", _figures_html(result),
+        "<h2>Stages</h2>", _stages_html(result),
+        "<h2>Validation: thesis against memstribo</h2>", _validation_html(),
+        "<h2>References used by this run</h2>", _references_html(),
+        _SCRIPT, "</body></html>\n",
+    ])
+
+
+def write_report(result, path: str | Path) -> Path:
+    """Write :func:`render_report` to ``path`` atomically; return the path."""
+    path = Path(path)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(render_report(result), encoding="utf-8")
+    tmp.replace(path)
+    return path

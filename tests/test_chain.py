@@ -1,0 +1,187 @@
+"""The main job: every stage end to end on small settings, outputs on disk, CLI, bad input."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from memstribo.chain import STAGES, RunChain, RunOptions, cycle_summary, options_for_test, verdict
+from memstribo.errors import InputError
+
+REPO = Path(__file__).resolve().parent.parent
+
+#: the model module each stage needs (a stage may report 'unavailable' only while it is missing)
+NEEDS = {"roughness": "memstribo.roughness", "geometry": "memstribo.nanoblock.geometry", "gear": "memstribo.gear",
+         "mesh": "memstribo.mesh", "load_sweep": "memstribo.mesh", "area_sweep": "memstribo.mesh",
+         "coated": "memstribo.coating", "wear_sweep": "memstribo.coating", "damage": "memstribo.damage"}
+
+
+def installed(module: str) -> bool:
+    try:
+        return importlib.util.find_spec(module) is not None
+    except ModuleNotFoundError:
+        return False
+
+
+@pytest.fixture(scope="module")
+def small_run(tmp_path_factory):
+    """One small run of every stage (few steps, two points per sweep), shared by the tests below."""
+    from memstribo.parameters import get_parameter_values
+
+    out = tmp_path_factory.mktemp("run")
+    options = options_for_test(roughness_files=(str(REPO / "data" / "afm" / "si_profile_linescan.txt"),))
+    return RunChain(get_parameter_values(), out, options).run()
+
+
+def test_every_stage_runs_or_says_honestly_that_its_module_is_missing(small_run):
+    for record in small_run.stages:
+        if record.status == "unavailable":
+            assert not installed(NEEDS[record.name]) or record.name == "damage", record
+        elif record.status == "skipped":
+            assert record.message.startswith("needs stage"), record
+            assert any(small_run.stages[list(STAGES).index(d)].status != "done"
+                       for d in ("roughness", "coated", "gear")), record
+        else:
+            assert record.status == "done", f"{record.name}: {record.message}"
+    assert [r.name for r in small_run.stages] == list(STAGES)
+
+
+def test_outputs_are_on_disk_with_units(small_run):
+    import xarray as xr
+
+    folder = small_run.folder
+    for name in ("parameters.toml", "references.txt", "run.json", "report.html"):
+        assert (folder / name).is_file(), name
+    manifest = json.loads((folder / "run.json").read_text())
+    assert [s["name"] for s in manifest["stages"]] == list(STAGES)
+    for record in small_run.stages:
+        for file in record.files:
+            assert (folder / file).is_file(), file
+    for figure in small_run.figures:
+        assert (folder / "figures" / f"{figure.stem}.png").stat().st_size > 1000
+        assert (folder / "figures" / f"{figure.stem}.svg").is_file()
+    stats = xr.open_dataset(folder / "data" / "roughness_statistics.nc")
+    assert stats["Rq"].attrs["units"] == "m"
+    # the default profile is labelled synthetic, the file is named with its provenance
+    assert small_run.inputs[0]["synthetic"] is True and "synthetic" in small_run.inputs[0]["source"]
+    if len(small_run.inputs) > 1:
+        assert small_run.inputs[1]["synthetic"] is False
+        assert "si_profile_linescan" in small_run.inputs[1]["source"]
+    # the parameters file is a valid config that reproduces the parameters
+    from memstribo.parameters import get_parameter_values, read_config
+
+    again = get_parameter_values().updated(read_config(folder / "parameters.toml")["parameters"])
+    assert again.to_dict() == small_run.params.to_dict()
+    assert "[thesis]" in (folder / "references.txt").read_text()
+
+
+def test_gear_stage_matches_the_thesis_tangential_force(small_run):
+    # thesis 4.7 (4-27): F_t = 2.82e-3 N, printed to 3 digits
+    assert small_run.verdict["tangential_force"] == pytest.approx(2.82e-3, rel=5e-3)
+
+
+def test_mesh_stages_when_the_mesh_model_is_installed(small_run):
+    if not installed("memstribo.mesh"):
+        pytest.skip("memstribo.mesh not installed yet")
+    summaries = small_run.summaries
+    bare = summaries["mesh"]
+    assert bare["energy_total"] >= 0 and bare["friction_force_max"] > 0
+    assert bare["cof_mean"] == pytest.approx(bare["cof_chemical_mean"] + bare["cof_vdw_mean"]
+                                             + bare["cof_elastic_mean"], rel=1e-6)
+    if "coated" in summaries:
+        # a coating forms no chemical bonds: less friction than bare silicon
+        assert summaries["coated"]["cof_chemical_mean"] == 0.0
+        assert summaries["coated"]["cof_mean"] < bare["cof_mean"]
+    if "wear_sweep" in summaries:
+        cof = summaries["wear_sweep"]["cof_mean"]
+        assert cof[-1] == pytest.approx(bare["cof_mean"], rel=1e-9)  # wear = 1 is bare silicon (contract)
+    assert small_run.verdict["bare_stiction"] == (bare["stiction_margin_min"] <= 0)
+
+
+def test_cycle_summary_and_verdict_on_a_hand_made_cycle():
+    import xarray as xr
+
+    n = 4
+    force = np.array([1.0, 3.0, 2.0, 0.5]) * 1e-3
+    data = {name: ("step", np.full(n, 0.1)) for name in ("cof_chemical", "cof_vdw", "cof_elastic")}
+    data.update(cof=("step", np.full(n, 0.3)), friction_force=("step", force),
+                adhesion_force=("step", np.full(n, 1e-4)), energy_chemical=("step", np.full(n, 1e-15)),
+                energy_vdw=("step", np.full(n, 2e-15)), energy_elastic=("step", np.zeros(n)),
+                stiction_margin=("step", 2.82e-3 - force))
+    summary = cycle_summary(xr.Dataset(data, coords={"c": ("step", np.linspace(-1e-6, 1e-6, n))}))
+    assert summary["friction_force_max"] == 3e-3
+    assert summary["energy_total"] == pytest.approx(1.2e-14)
+    assert summary["stiction_margin_min"] == pytest.approx(-0.18e-3)
+    v = verdict({"gear": {"tangential_force": 2.82e-3}, "mesh": summary,
+                 "wear_sweep": {"wear": [0.0, 0.5, 1.0], "stiction_margin_min": [1e-3, -1e-5, -1e-3]}})
+    assert v["bare_stiction"] is True and v["wear_at_stiction"] == 0.5
+
+
+def test_run_options_from_a_config_table(tmp_path):
+    (tmp_path / "scan.txt").write_text("0 0\n")
+    options = RunOptions.from_table({"steps": 10, "loads": ["25 uN", "0.1 mN"], "wear": [0, 0.5],
+                                     "roughness_files": ["scan.txt"], "stages": ["mesh", "roughness"]}, tmp_path)
+    assert options.steps == 10 and options.loads == pytest.approx((25e-6, 1e-4))
+    assert options.roughness_files == (str((tmp_path / "scan.txt").resolve()),)
+    assert options.stages == ("roughness", "mesh")  # always in chain order
+    assert RunOptions().loads == pytest.approx(tuple(np.arange(25, 301, 25) * 1e-6))  # thesis 4.9.3
+
+
+@pytest.mark.parametrize("table, match", [
+    ({"step": 3}, "unknown key 'step'.*steps"),
+    ({"steps": 1}, "integer >= 2"),
+    ({"loads": []}, "non-empty list"),
+    ({"loads": ["-1 uN"]}, "outside its range"),
+    ({"loads": ["25 m"]}, "25 m"),
+    ({"wear": [1.2]}, "outside its range"),
+    ({"roughness_files": ["nope.txt"]}, "does not exist"),
+    ({"stages": ["mseh"]}, "unknown stage 'mseh'.*mesh"),
+    ({"mesh_roughness": 3}, "mesh_roughness"),
+    ({"cycles_observed": -5}, "cycles > 0"),
+])
+def test_bad_run_tables_raise_input_error(table, match, tmp_path):
+    with pytest.raises(InputError, match=match):
+        RunOptions.from_table(table, tmp_path)
+
+
+def test_cli_run_json_with_config_file(cli, tmp_path):
+    config = tmp_path / "case.toml"
+    config.write_text('[parameters]\nnormal_load = "50 uN"\n[run]\nstages = ["roughness", "geometry", "gear"]\n')
+    values = cli.json("run", config, "--out", tmp_path / "out", "--steps", "5")
+    assert values["stages"]["gear"] == "done" and values["stages"]["mesh"] == "skipped"
+    assert values["complete"] is True
+    assert Path(values["report"]).is_file()
+    assert "normal_load" in (tmp_path / "out" / "parameters.toml").read_text()
+    text = (tmp_path / "out" / "parameters.toml").read_text()
+    assert re.search(r"\[parameters.normal_load\]\nvalue = 5e-05", text)
+
+
+@pytest.mark.parametrize("argv, message", [
+    (("run", "missing.toml"), "does not exist"),
+    (("run", "--steps", "1"), "--steps 1"),
+    (("run", "--roughness", "no_such_scan.txt"), "does not exist"),
+])
+def test_cli_run_bad_input_exits_2(cli, tmp_path, argv, message):
+    code, out, err = cli(*argv, "--out", tmp_path / "out")
+    assert code == 2 and message in err and "Traceback" not in err
+
+
+def test_cli_run_bad_run_table_exits_2(cli, tmp_path):
+    config = tmp_path / "bad.toml"
+    config.write_text("[run]\nwear = [2]\n")
+    code, out, err = cli("run", config, "--out", tmp_path / "out")
+    assert code == 2 and "outside its range" in err and "Traceback" not in err
+
+
+@pytest.mark.browser
+def test_report_of_a_real_run_renders_every_figure(small_run, tmp_path):
+    from test_report import browser_dom
+
+    dom = browser_dom(small_run.folder / "report.html", tmp_path / "profile")
+    assert f'data-figures="ok {len(small_run.figures)}"' in dom
+    assert len(small_run.figures) >= 1

@@ -1,0 +1,113 @@
+"""report.html: self-contained, escaped, and every figure renders in a real (headless) browser."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from memstribo.chain import FigureRecord, RunOptions, RunResult, StageRecord
+from memstribo.report import render_report, write_report
+
+EVIL = "<script>alert('x')</script>&\"scan\".txt"
+
+
+def make_result(folder: Path, params, n_figures=2, verdict=None) -> RunResult:
+    from memstribo.output import new_figure, save_figure
+
+    figures = []
+    for i in range(n_figures):
+        figure, ax = new_figure(figsize=(3, 2))
+        ax.plot([0, 1], [0, i])
+        save_figure(figure, folder / "figures", f"fig{i}")
+        figures.append(FigureRecord(f"fig{i}", "mesh", f"caption {i} with <b>markup</b>"))
+    stages = [StageRecord("roughness", "Roughness", "done", 0.1), StageRecord("mesh", "Mesh", "failed", 0.2, [],
+                                                                             f"bad file {EVIL}")]
+    inputs = [{"name": EVIL, "source": f"file {EVIL}", "synthetic": False, "Rq": 1.6e-9, "rms_slope": 0.024,
+               "n_points": 100},
+              {"name": "synthetic profile", "source": "synthetic: seed 1", "synthetic": True, "Rq": 1.6e-9,
+               "rms_slope": 0.024, "n_points": 100}]
+    verdict = verdict if verdict is not None else {
+        "tangential_force": 2.82e-3, "bare_friction_force_max": 4e-3, "bare_stiction_margin": -1.18e-3,
+        "bare_stiction": True, "bare_cof_mean": 0.8, "coated_friction_force_max": 1e-3,
+        "coated_stiction_margin": 1.82e-3, "coated_stiction": False, "coated_cof_mean": 0.19,
+        "wear_at_stiction": 0.8}
+    return RunResult(folder, params.updated({"normal_load": "50 uN"}, origin=f"--set {EVIL}"), RunOptions(),
+                     stages, figures, {}, verdict, inputs, 12.0)
+
+
+def test_report_is_self_contained_and_escapes_input_text(tmp_path, params):
+    text = render_report(make_result(tmp_path, params))
+    assert "<script>alert" not in text
+    assert "&lt;script&gt;alert(&#x27;x&#x27;)&lt;/script&gt;&amp;&quot;scan&quot;.txt" in text
+    assert "caption 0 with &lt;b&gt;markup&lt;/b&gt;" in text
+    # nothing loaded from outside the file
+    assert not re.search(r"""(src|href)\s*=\s*['"](https?:|//|file:)""", text)
+    assert "<link" not in text
+    assert text.count("src='data:image/png;base64,") == 2
+    # the verdict, the question, provenance and the validation table are there
+    assert "STICTION" in text and "no stiction" in text and "&Omega; = 80 %" in text
+    assert "The question" in text and "synthetic (generated, seeded)" in text and "measured" in text
+    assert "Validation: thesis against memstribo" in text and "<th>tolerance</th>" in text
+    assert "normal_load" in text and "--set" in text
+
+
+def test_report_without_meshing_says_there_is_no_verdict(tmp_path, params):
+    text = render_report(make_result(tmp_path, params, n_figures=0, verdict={}))
+    assert "No verdict: the meshing stages did not run" in text
+    assert "No figures" in text
+
+
+def test_missing_figure_file_is_reported_not_hidden(tmp_path, params):
+    result = make_result(tmp_path, params)
+    (tmp_path / "figures" / "fig1.png").unlink()
+    text = render_report(result)
+    assert "Figure 2 (fig1) is missing" in text
+
+
+def chromium() -> str | None:
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def browser_dom(path: Path, profile: Path) -> str:
+    """The DOM of ``path`` after load, as headless Chromium sees it."""
+    browser = chromium()
+    if browser is None:
+        if os.environ.get("CI", "").lower() == "true":
+            pytest.fail("chromium is not installed, and CI=true: the browser test must run in CI")
+        pytest.skip("chromium is not installed (apt-get install chromium)")
+    run = subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                          "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-extensions",
+                          f"--user-data-dir={profile}", "--virtual-time-budget=10000", "--dump-dom",
+                          path.resolve().as_uri()], capture_output=True, text=True, timeout=90)
+    assert run.returncode == 0, run.stderr[-2000:]
+    return run.stdout
+
+
+@pytest.mark.browser
+def test_every_figure_renders_in_headless_chromium(tmp_path, params):
+    result = make_result(tmp_path, params, n_figures=3)
+    page = write_report(result, tmp_path / "report.html")
+    dom = browser_dom(page, tmp_path / "chromium-profile")
+    marker = re.search(r"<body[^>]*data-figures=\"([^\"]*)\"", dom)
+    assert marker, dom[:500]
+    assert marker.group(1) == "ok 3"
+    assert "<script>alert" not in dom
+
+
+@pytest.mark.browser
+def test_browser_check_detects_a_broken_figure(tmp_path, params):
+    """The marker is not a formality: a corrupt image is reported as broken."""
+    result = make_result(tmp_path, params, n_figures=2)
+    (tmp_path / "figures" / "fig1.png").write_bytes(b"not a png")
+    page = write_report(result, tmp_path / "report.html")
+    dom = browser_dom(page, tmp_path / "chromium-profile")
+    assert 'data-figures="broken 1 of 2"' in dom
