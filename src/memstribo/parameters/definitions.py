@@ -123,6 +123,14 @@ _SPECS = [
     _positive("drive_torque", "N*m", "Torque on the pinion; F_t = T / r_pitch,pinion (4-27)"),
     _positive("pinion_speed", "rad/s", "Angular speed omega1 of the pinion (sets the time axis only)"),
     # --- meshing simulation ---------------------------------------------------------------------
+    ParameterSpec("mesh_steps", "", "Steps (positions c) of the meshing simulation from c_f to c_l", kind="int",
+                  minimum=3),
+    _positive("mesh_grid_spacing", "m", "Element width of the rough line-contact solve at each step"),
+    _positive("mesh_window", "m", "Length of the contact window solved at each step, centred on the contact point"),
+    _positive("mesh_contact_tolerance", "", "Tolerance of the rough line-contact solver (dimensionless residual)"),
+    ParameterSpec("load_sharing", "", "Load-sharing function over the mesh (Figure 4-11): dry or lubricated",
+                  kind="str", choices=("dry", "lubricated")),
+    _positive("elastic_limit_pressure", "Pa", "Hertz peak pressure beyond which the elastic model of silicon no longer holds"),
     # --- coatings and wear ----------------------------------------------------------------------
     ParameterSpec("coating_wear", "", "Worn fraction Omega of the gear tooth's coating (0 coated, 1 bare; 5.5.3)",
                   minimum=0.0, maximum=1.0),
