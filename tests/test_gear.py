@@ -5,10 +5,10 @@ import math
 import numpy as np
 import pytest
 
+from memstribo.adhesion import contact_modulus
 from memstribo.errors import InputError
 from memstribo.gear import (
     GearPair,
-    contact_modulus,
     first_contact_point,
     hertz_line_contact,
     load_share_dry,

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .adhesion import contact_modulus  # noqa: F401  (4-25); re-exported for the gear's users
 from .errors import InputError
 from .references import cites
 
@@ -57,34 +58,6 @@ __all__ = [
 # --------------------------------------------------------------------------------------------
 # published relations, one function each
 # --------------------------------------------------------------------------------------------
-@cites("thesis", "johnson_1985")
-def contact_modulus(youngs_modulus, poisson_ratio, counter_youngs_modulus=None, counter_poisson_ratio=None):
-    """Plane-strain contact modulus E* of two elastic bodies.
-
-    Parameters
-    ----------
-    youngs_modulus, counter_youngs_modulus : float
-        Young's moduli E1, E2 [Pa]; the counter body defaults to the first.
-    poisson_ratio, counter_poisson_ratio : float
-        Poisson's ratios nu1, nu2 [-]; the counter body defaults to the first.
-
-    Returns
-    -------
-    float
-        E* [Pa] with 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, Eq. (4-25) in [1]
-        (85.0 GPa for Si/Si).
-
-    References
-    ----------
-    .. [1] Thesis, Eq. (4-25); K. L. Johnson, Contact Mechanics, 1985, Eq. (4.22).
-    """
-    e2 = youngs_modulus if counter_youngs_modulus is None else counter_youngs_modulus
-    nu2 = poisson_ratio if counter_poisson_ratio is None else counter_poisson_ratio
-    if youngs_modulus <= 0 or e2 <= 0:
-        raise InputError(f"Young's moduli must be positive, got {youngs_modulus:g} Pa and {e2:g} Pa.")
-    return 1.0 / ((1.0 - poisson_ratio**2) / youngs_modulus + (1.0 - nu2**2) / e2)
-
-
 def module_from_outer_diameters(outer_diameter_pinion, outer_diameter_gear, teeth_pinion, teeth_gear,
                                 addendum_coefficient=1.0):
     """Module of a standard pair from its outer (tip) diameters.
