@@ -146,6 +146,13 @@ _SPECS = [
     _positive("damage_exponent", "", "Exponent m of the damage law omega = sum c1 (dtau1)^m (5-10)"),
     _positive("damage_coefficient", "",
               "c1 of the damage law (5-10), SI number in Pa^-m; unset: unknown (relative lives only)", optional=True),
+    # --- sliding (flat-friction models, thesis 2.6.2, 3.4) ------------------------------------
+    ParameterSpec("sliding_gap", "m", "Fixed-gap model: height of the undeformed atomic tips above the counter "
+                  "profile's mean line (negative: interference); unset: the profile's Rq", optional=True),
+    _positive("sliding_step", "m", "Sliding distance per step of the flat-friction models; unset: bond_length",
+              optional=True),
+    _positive("adhesive_layer_thickness", "m", "Thickness of the adhesive layer inside which an adhesive block "
+              "forms vdW bonds and adheres; unset: adhesive_height (thesis 3.5)", optional=True),
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}
