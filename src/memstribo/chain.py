@@ -58,7 +58,7 @@ STAGES: dict[str, str] = {
 DEPENDS: dict[str, tuple[str, ...]] = {
     "roughness": (), "geometry": ("roughness",), "gear": (), "mesh": ("roughness",),
     "load_sweep": ("roughness",), "area_sweep": ("roughness",), "coated": ("roughness",),
-    "wear_sweep": ("roughness",), "damage": ("coated", "gear"),
+    "wear_sweep": ("roughness",), "damage": ("coated",),
 }
 
 _RUN_KEYS = {
@@ -152,6 +152,8 @@ class RunOptions:
                 raise InputError("[run] loads: every load must be > 0.")
         if "areas" in table:
             options["areas"] = number_list("areas", "", 1.0)
+            if not all(float(a).is_integer() for a in options["areas"]):
+                raise InputError("[run] areas: give whole multiples of A_adh (1, 2, 4, ...).")
         if "wear" in table:
             options["wear"] = number_list("wear", "", 0.0, 1.0)
         if "coating" in table:
@@ -286,46 +288,33 @@ def _module(name: str):
         raise
 
 
+def _missing_module(exc: ImportError) -> str | None:
+    """The memstribo module whose absence caused ``exc``, or None if ``exc`` is something else."""
+    import importlib.util
+    import re
+
+    candidates = [exc.name or ""]
+    match = re.search(r"cannot import name '(\w+)' from '([\w.]+)'", str(exc))
+    if match:
+        candidates.insert(0, f"{match.group(2)}.{match.group(1)}")
+    for name in candidates:
+        if name.startswith("memstribo.") or name == "memstribo":
+            try:
+                if importlib.util.find_spec(name) is None:
+                    return name
+            except ModuleNotFoundError:
+                return name
+    return None
+
+
 # --- summaries and figures usable alone ----------------------------------------------------------------------
 
-def cycle_summary(dataset) -> dict[str, float]:
-    """Scalars of one meshing cycle (the contract variables of :func:`memstribo.mesh.simulate_mesh`).
+def cycle_summary(dataset) -> dict[str, Any]:
+    """Scalars of one meshing cycle: :func:`memstribo.mesh.summarize` (the keys of ``memstribo mesh --json``).
 
-    Returns
-    -------
-    dict
-        ``cof_mean`` and its split ``cof_chemical_mean``, ``cof_vdw_mean``, ``cof_elastic_mean`` [-]
-        (averages over the steps in contact), ``friction_force_max`` [N], ``friction_force_mean`` [N],
-        ``adhesion_force_max`` [N], ``energy_chemical``, ``energy_vdw``, ``energy_elastic``,
-        ``energy_total`` [J] (sums over the cycle), ``stiction_margin_min`` [N] (F_t - F_f, lowest).
+    Units of the keys are in :data:`memstribo.mesh.SUMMARY_UNITS`.
     """
-    def mean(name):
-        values = np.asarray(dataset[name].values, dtype=float)
-        values = values[np.isfinite(values)]
-        return float(values.mean()) if values.size else float("nan")
-
-    def total(name):
-        return float(np.nansum(np.asarray(dataset[name].values, dtype=float)))
-
-    energies = {f"energy_{k}": total(f"energy_{k}") for k in ("chemical", "vdw", "elastic")}
-    return {
-        "cof_mean": mean("cof"),
-        "cof_chemical_mean": mean("cof_chemical"),
-        "cof_vdw_mean": mean("cof_vdw"),
-        "cof_elastic_mean": mean("cof_elastic"),
-        "friction_force_mean": mean("friction_force"),
-        "friction_force_max": float(np.nanmax(dataset["friction_force"].values)),
-        "adhesion_force_max": float(np.nanmax(dataset["adhesion_force"].values)),
-        **energies,
-        "energy_total": sum(energies.values()),
-        "stiction_margin_min": float(np.nanmin(dataset["stiction_margin"].values)),
-    }
-
-
-CYCLE_UNITS = {"cof_mean": "", "cof_chemical_mean": "", "cof_vdw_mean": "", "cof_elastic_mean": "",
-               "friction_force_mean": "N", "friction_force_max": "N", "adhesion_force_max": "N",
-               "energy_chemical": "J", "energy_vdw": "J", "energy_elastic": "J", "energy_total": "J",
-               "stiction_margin_min": "N"}
+    return _module("mesh").summarize(dataset)
 
 
 def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
@@ -335,10 +324,11 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
     -------
     dict
         ``tangential_force`` F_t [N]; ``bare_friction_force_max`` [N]; ``bare_stiction`` (F_f >= F_t
-        somewhere on the path of contact); ``bare_stiction_margin`` = min(F_t - F_f) [N];
-        ``coated_friction_force_max`` [N], ``coated_stiction``, ``coated_stiction_margin`` [N];
-        ``wear_at_stiction`` (the smallest worn fraction of the sweep with F_f >= F_t, or None);
-        ``cycles_to_stiction`` (from the damage stage, or None). Keys whose stage did not run are absent.
+        somewhere on the path of contact); ``bare_stiction_margin`` = min(F_t - F_f) [N]; ``bare_cof_mean``;
+        the same with ``coated_`` for the intact coating; ``wear_at_stiction`` (the worn fraction Omega at
+        which F_f reaches F_t, interpolated in the wear sweep, or None); ``cycles_to_stiction``,
+        ``cycles_to_failure`` [meshing cycles] (None while the damage constant c1 is unknown) and
+        ``damage_per_cycle_over_c1`` [Pa^m] from the damage stage. Keys whose stage did not run are absent.
     """
     out: dict[str, Any] = {}
     gear = summaries.get("gear")
@@ -348,16 +338,16 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
         summary = summaries.get(stage)
         if summary:
             out[f"{label}_friction_force_max"] = summary["friction_force_max"]
-            out[f"{label}_stiction_margin"] = summary["stiction_margin_min"]
-            out[f"{label}_stiction"] = bool(summary["stiction_margin_min"] <= 0.0)
+            out[f"{label}_stiction_margin"] = summary["stiction_margin"]
+            out[f"{label}_stiction"] = bool(summary["stiction_margin"] <= 0.0)
             out[f"{label}_cof_mean"] = summary["cof_mean"]
     sweep = summaries.get("wear_sweep")
     if sweep:
-        sticking = [w for w, m in zip(sweep["wear"], sweep["stiction_margin_min"]) if m <= 0.0]
-        out["wear_at_stiction"] = min(sticking) if sticking else None
+        out["wear_at_stiction"] = sweep.get("critical_wear")
     damage = summaries.get("damage")
     if damage:
-        for key in ("cycles_to_stiction", "cycles_to_failure", "damage_per_cycle_over_c1"):
+        for key in ("cycles_to_stiction", "cycles_to_failure", "damage_per_cycle_over_c1",
+                    "life_ratio_corner_to_central"):
             if key in damage:
                 out[key] = damage[key]
     return out
@@ -423,13 +413,13 @@ def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""
 
     figure, (left, right) = new_figure(1, 2, figsize=(10, 3.8))
     xs = np.asarray(dataset[x].values) * x_scale
-    for name in ("cof_mean", "cof_chemical_mean", "cof_vdw_mean", "cof_elastic_mean"):
-        left.plot(xs, dataset[name].values, "o-", ms=3, label=name.replace("_mean", "").replace("_", " "))
+    for name in ("cof_mean", "cof_chemical", "cof_vdw", "cof_elastic"):
+        left.plot(xs, dataset[name].values, "o-", ms=3, label=name.replace("_mean", " (time mean)").replace("_", " "))
     left.set_xlabel(x_label)
     left.set_ylabel("mean COF over the cycle [-]")
     left.legend(fontsize=8)
     if tangential_force is None:
-        right.plot(xs, dataset["energy_total"].values, "o-", ms=3)
+        right.plot(xs, dataset["energy_dissipated"].values, "o-", ms=3)
         right.set_ylabel("energy dissipated per cycle [J]")
     else:
         right.plot(xs, np.asarray(dataset["friction_force_max"].values) * 1e6, "o-", ms=3, label="max friction force")
@@ -443,12 +433,20 @@ def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""
 
 
 def _sweep_dataset(dimension, values, unit, long_name, summaries):
+    """Summaries (:func:`memstribo.mesh.summarize`) of a sweep as a Dataset over ``dimension``."""
     import xarray as xr
 
-    data = {key: (dimension, np.array([s[key] for s in summaries], dtype=float),
-                  {"units": CYCLE_UNITS[key], "long_name": key.replace("_", " ")}) for key in CYCLE_UNITS}
+    units = _module("mesh").SUMMARY_UNITS
+    data = {key: (dimension, np.array([float(s[key]) for s in summaries], dtype=float),
+                  {"units": units.get(key, ""), "long_name": key.replace("_", " ")}) for key in units
+            if all(key in s for s in summaries)}
     return xr.Dataset(data, coords={dimension: (dimension, np.asarray(values, dtype=float),
                                                 {"units": unit, "long_name": long_name})})
+
+
+def _columns(dataset) -> dict[str, list]:
+    return {name: [float(v) for v in dataset[name].values] for name in list(dataset.coords) + list(dataset.data_vars)
+            if dataset[name].dtype.kind in "fiub"}
 
 
 # --- the chain --------------------------------------------------------------------------------------------------
@@ -592,35 +590,31 @@ class RunChain:
 
     def load_sweep(self):
         """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
-        summaries = [cycle_summary(self._simulate(self.params.updated({"normal_load": load}, origin="load sweep")))
+        mesh = _module("mesh")
+        summaries = [mesh.sweep(self.params, "load", [load], self.results["mesh_profile"], steps=self.options.steps)[0]
                      for load in self._tick(self.options.loads, "load sweep")]
         dataset = _sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
         self._dataset(dataset, "load_sweep")
-        self.summaries["load_sweep"] = {"normal_load": list(self.options.loads),
-                                        **{k: [s[k] for s in summaries] for k in CYCLE_UNITS}}
+        self.summaries["load_sweep"] = _columns(dataset)
         self._figure(plot_sweep(dataset, "normal_load", "external load [µN]", 1e6, title="bare silicon"),
-                     "load_sweep", "Mean COF (split) and energy dissipated per cycle versus external load "
-                     "(thesis 4.9.3, Figures 4-48 and 4-49).")
+                     "load_sweep", "Time-mean COF, its energy split, and energy dissipated per meshing cycle versus "
+                     "external load (thesis 4.9.3, Figures 4-48 and 4-49).")
 
     def area_sweep(self):
         """COF and energy versus nominal contact area, in multiples of A_adh = w_adh^2 (4.9.4).
 
-        The nominal area is set through the face width: L = k w_adh^2 / (2 a) would tie it to the
-        Hertz width; memstribo keeps the contact width of the model and scales the face width,
-        L = k w_adh (one row of k nanoblocks across the face).
+        As :func:`memstribo.mesh.sweep` (``"area"``): the face width is set to k w_adh, so that k rows of
+        nanoblocks share the load.
         """
-        width = self.params["adhesive_width"]
-        summaries = [cycle_summary(self._simulate(self.params.updated({"face_width": k * width}, origin="area sweep")))
+        mesh = _module("mesh")
+        summaries = [mesh.sweep(self.params, "area", [k], self.results["mesh_profile"], steps=self.options.steps)[0]
                      for k in self._tick(self.options.areas, "area sweep")]
         dataset = _sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
-        dataset["face_width"] = ("area_multiple", np.asarray(self.options.areas) * width,
-                                 {"units": "m", "long_name": "face width"})
         self._dataset(dataset, "area_sweep")
-        self.summaries["area_sweep"] = {"area_multiple": list(self.options.areas),
-                                        **{k: [s[k] for s in summaries] for k in CYCLE_UNITS}}
+        self.summaries["area_sweep"] = _columns(dataset)
         self._figure(plot_sweep(dataset, "area_multiple", "nominal area [A_adh]", title="bare silicon"),
-                     "area_sweep", "Mean COF and energy dissipated per cycle versus nominal contact area "
-                     "(face width = k w_adh; thesis 4.9.4, Figures 4-49 and 4-50).")
+                     "area_sweep", "Time-mean COF, its energy split, and energy dissipated per meshing cycle versus "
+                     "nominal contact area (face width = k w_adh; thesis 4.9.4, Figures 4-49 and 4-50).")
 
     def coated(self):
         """The coated pair, fully functionalised (Omega = 0; thesis 5.4)."""
@@ -634,17 +628,19 @@ class RunChain:
 
     def wear_sweep(self):
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
-        summaries = [cycle_summary(self._simulate(self.params, coating=self.options.coating, wear=w))
-                     for w in self._tick(self.options.wear, "wear sweep")]
-        dataset = _sweep_dataset("wear", self.options.wear, "", "worn fraction Omega of the gear's coating",
-                                 summaries)
+        coating = _module("coating")
+        dataset = coating.wear_sweep(self.params, self.options.coating, list(self.options.wear),
+                                     roughness=self.results["mesh_profile"], steps=self.options.steps)
         self._dataset(dataset, "wear_sweep")
-        self.summaries["wear_sweep"] = {"wear": list(self.options.wear),
-                                        **{k: [s[k] for s in summaries] for k in CYCLE_UNITS}}
-        self._figure(plot_sweep(dataset, "wear", "worn fraction Omega [%]", 100.0, self._tangential_force(),
+        self.results["wear_sweep"] = dataset
+        self.summaries["wear_sweep"] = {**_columns(dataset), "critical_wear": coating.critical_wear(dataset)}
+        sweep = dataset.rename({"cof": "cof_mean"}) if "cof" in dataset and "cof_mean" not in dataset else dataset
+        if "friction_force_max" not in sweep and "friction_force" in sweep:
+            sweep = sweep.rename({"friction_force": "friction_force_max"})
+        self._figure(plot_sweep(sweep, "wear", "worn fraction Omega [%]", 100.0, self._tangential_force(),
                                 title=self.options.coating), "wear_sweep",
-                     "Mean COF (split) and the largest friction force over the cycle against F_t versus the "
-                     "worn fraction Omega of the gear's coating (thesis 5.5.3).")
+                     "COF and its split (left), and the largest friction force over the cycle against F_t (right) "
+                     "versus the worn fraction Omega of the gear's coating (thesis 5.5.3, Figure 5-28).")
 
     def damage(self):
         """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
@@ -652,7 +648,7 @@ class RunChain:
         run = getattr(damage, "run_damage", None)
         if run is None:
             raise _StageUnavailable("memstribo.damage has no run_damage(params, mesh_dataset, ...) yet")
-        outcome = run(self.params, self.results["coated"], wear_sweep=self.summaries.get("wear_sweep"),
+        outcome = run(self.params, self.results["coated"], wear_sweep=self.results.get("wear_sweep"),
                       cycles_observed=self.options.cycles_observed)
         self.summaries["damage"] = dict(outcome.summary)
         for stem, dataset in getattr(outcome, "datasets", {}).items():
@@ -688,7 +684,13 @@ class RunChain:
             record.status, record.message = "unavailable", str(exc)
         except MemstriboError as exc:
             record.status, record.message = "failed", f"{type(exc).__name__}: {exc}"
-        except Exception as exc:  # a bug: keep the other stages, say so loudly
+        except Exception as exc:  # a missing module, or a bug: keep the other stages, say so loudly
+            missing = _missing_module(exc) if isinstance(exc, ImportError) else None
+            if missing is not None:
+                record.status = "unavailable"
+                record.message = f"module {missing} is not part of this installation"
+                record.seconds = time.perf_counter() - start
+                return record
             record.status = "failed"
             record.message = f"internal error {type(exc).__name__}: {exc}"
             (self.folder / f"error_{name}.txt").write_text(traceback.format_exc(), encoding="utf-8")
