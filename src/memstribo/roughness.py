@@ -792,7 +792,7 @@ def synthetic_profile(length, sample_spacing, rq, rms_slope_value, rng=None, nam
     lo, hi = math.log(1e-3 * dx), math.log(0.25 * n * dx)
     f_lo, f_hi = mismatch(lo), mismatch(hi)
     if f_lo < 0:
-        limit = target * math.exp(-f_lo)
+        limit = target * math.exp(f_lo)
         raise InputError(f"synthetic profile: rms slope {rms_slope_value:.4g} is too steep for Rq {rq:.4g} m at a "
                          f"step of {dx:.4g} m (this noise allows rms_slope / Rq up to about {limit:.4g} 1/m): "
                          "use a finer sample_spacing or a smaller rms slope.")
