@@ -1,0 +1,118 @@
+"""``memstribo sweep load|area``: COF and dissipated energy versus load or nominal area (thesis 4.9.3, 4.9.4)."""
+
+from __future__ import annotations
+
+from .common import CommandResult
+
+NAME = "sweep"
+HELP = "meshing cycles over loads (sweep load) or nominal contact areas (sweep area), thesis 4.9.3-4.9.4"
+ORDER = 55
+
+_DEFAULTS = {"load": "25uN:300uN:25uN", "area": "1:10:1"}
+
+
+def register(subparsers, parents):
+    from .mesh import add_common_arguments
+
+    parser = subparsers.add_parser(
+        NAME, parents=parents, help=HELP,
+        description=HELP + ". VALUES is START:STOP:STEP (STOP included) or a comma list; loads carry units "
+        "('25uN:300uN:25uN'), areas are whole multiples of A_adh = w_adh^2 (the face width is set to that many "
+        "nanoblock rows).")
+    parser.add_argument("parameter", choices=("load", "area"), help="what to sweep")
+    parser.add_argument("--values", metavar="VALUES", help="default: load 25uN:300uN:25uN, area 1:10:1")
+    add_common_arguments(parser)
+    parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and its figures (PNG + SVG)")
+    parser.set_defaults(handler=run)
+
+
+def parse_values(text: str, unit: str, name: str = "--values") -> list[float]:
+    """``"25uN:300uN:25uN"`` -> [2.5e-05, 5e-05, ...]; ``"1,2,4"`` -> [1.0, 2.0, 4.0] (SI)."""
+    import numpy as np
+
+    from ..errors import InputError
+    from ..units import to_si
+
+    text = text.strip()
+    if ":" in text:
+        parts = text.split(":")
+        if len(parts) != 3:
+            raise InputError(f"{name} {text!r}: a range is START:STOP:STEP (e.g. 25uN:300uN:25uN).")
+        start, stop, step = (to_si(p, unit, name) for p in parts)
+        if step <= 0 or stop < start:
+            raise InputError(f"{name} {text!r}: STEP must be positive and STOP not below START.")
+        count = int(np.floor((stop - start) / step * (1 + 1e-9))) + 1
+        if count > 1000:
+            raise InputError(f"{name} {text!r} gives {count} points; at most 1000 are allowed.")
+        return [start + i * step for i in range(count)]
+    values = [to_si(p, unit, name) for p in text.split(",") if p.strip()]
+    if not values:
+        raise InputError(f"{name} is empty.")
+    return values
+
+
+def run(args, params):
+    from ..mesh import sweep
+    from .mesh import MESH_KEYS, simulation_options
+
+    unit = "N" if args.parameter == "load" else ""
+    values = parse_values(args.values or _DEFAULTS[args.parameter], unit)
+    options = simulation_options(args)
+    progress = options.pop("progress")
+    roughness = args.roughness
+    if roughness == "thesis":
+        roughness = None
+    points = sweep(params, args.parameter, values, roughness, progress=progress, **options)
+    head = ["normal_load"] if args.parameter == "load" else ["area_multiple", "area"]
+    points = [{key: point[key] for key in head + list(MESH_KEYS) + ["energy_dissipated", "energy_chemical",
+                                                                     "energy_vdw", "energy_elastic",
+                                                                     "unconverged_steps"]}
+              for point in points]
+    notes = []
+    if args.out:
+        notes.extend(_write(args.parameter, points, args.out))
+    if args.json:
+        return CommandResult(values={"parameter": args.parameter, "points": points})
+    lines = [f"  {head[0]:>13} {'cof_mean':>9} {'chemical':>9} {'vdW':>9} {'elastic':>9} {'F_f mean':>10} "
+             f"{'F_adh mean':>11} {'energy':>10}"]
+    for p in points:
+        swept = f"{p['normal_load'] * 1e6:.4g} uN" if args.parameter == "load" else f"{p['area_multiple']} A_adh"
+        lines.append(f"  {swept:>13} {p['cof_mean']:9.4g} {p['cof_chemical']:9.4g} {p['cof_vdw']:9.4g} "
+                     f"{p['cof_elastic']:9.2g} {p['friction_force_mean'] * 1e6:7.4g} uN "
+                     f"{p['adhesion_force_mean'] * 1e6:8.4g} uN {p['energy_dissipated'] * 1e12:7.4g} pJ")
+    return CommandResult(values={}, title=f"sweep over {args.parameter} (thesis 4.9.{3 if args.parameter == 'load' else 4})",
+                         notes=lines + notes)
+
+
+def _write(parameter, points, folder) -> list[str]:
+    import numpy as np
+    import xarray as xr
+
+    from ..mesh import SUMMARY_UNITS
+    from ..output import new_figure, save_figure, write_dataset
+
+    dim = "normal_load" if parameter == "load" else "area_multiple"
+    coordinate = np.array([p[dim] for p in points], dtype=float)
+    keys = [k for k in points[0] if k not in ("normal_load", "area_multiple", "area", "stiction")]
+    data = {k: (dim, np.array([p[k] for p in points], dtype=float), {"units": SUMMARY_UNITS.get(k, ""),
+                                                                       "long_name": k.replace("_", " ")})
+            for k in keys}
+    dataset = xr.Dataset(data, coords={dim: (dim, coordinate, {"units": "N" if parameter == "load" else "",
+                                                              "long_name": dim.replace("_", " ")})})
+    written = write_dataset(dataset, folder, f"sweep_{parameter}")
+    x = coordinate * (1e6 if parameter == "load" else 1.0)
+    xlabel = "external load [uN]" if parameter == "load" else "nominal contact area [A_adh]"
+    figure, ax = new_figure(figsize=(5.6, 3.6))
+    ax.plot(x, dataset["cof_mean"], "o-", label="COF (cycle mean)")
+    ax.plot(x, dataset["cof_chemical"], ".--", label="chemical")
+    ax.plot(x, dataset["cof_vdw"], ".--", label="vdW")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("COF [-]")
+    ax.legend(fontsize=8)
+    written += save_figure(figure, folder, f"sweep_{parameter}_cof")
+    figure, ax = new_figure(figsize=(5.6, 3.6))
+    ax.plot(x, dataset["energy_dissipated"] * 1e12, "o-")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("energy dissipated per cycle [pJ]")
+    written += save_figure(figure, folder, f"sweep_{parameter}_energy")
+    return ["  wrote " + ", ".join(str(p) for p in written)]
