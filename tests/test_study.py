@@ -209,3 +209,21 @@ def test_cli_study_json_and_bad_input_exit_2(cli, tmp_path):
         code, out, err = cli(*argv)
         assert code == 2, err
         assert message in err and "Traceback" not in err
+
+
+def test_default_point_function_is_the_mesh_summary(params, tmp_path):
+    """The built-in 'mesh' point: a coated point at wear = 1 equals bare silicon, and equals a direct call."""
+    pytest.importorskip("memstribo.mesh")
+    from memstribo import mesh
+
+    spec = study_spec({"name": "mesh check", "fixed": {"steps": 6},
+                       "points": [{"coating": "OTS", "wear": 1.0}, {"coating": "none"}]})
+    assert spec.function == "mesh"
+    result = run_study(spec, tmp_path / "out", params, workers=1)
+    assert result.n_failed == 0, result.errors
+    direct = mesh.summarize(mesh.simulate_mesh(params, steps=6))
+    for key in ("stiction_margin", "friction_force_max", "energy_dissipated"):
+        values = result.dataset[key].values
+        assert values[0] == pytest.approx(values[1], rel=1e-9)
+        assert values[1] == direct[key]  # bit for bit: same inputs, no global state
+    assert result.dataset["friction_force_max"].attrs["units"] == "N"

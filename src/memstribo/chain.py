@@ -361,7 +361,7 @@ def plot_profiles(profiles):
     for ax, profile in zip(axes[:, 0], profiles):
         ax.plot(np.asarray(profile.x) * 1e6, np.asarray(profile.z) * 1e9, lw=0.8)
         label = "synthetic" if profile.synthetic else "measured"
-        ax.set_title(f"{profile.name} ({label})", fontsize=9)
+        ax.set_title(profile.name if label in profile.name else f"{profile.name} ({label})", fontsize=9)
         ax.set_ylabel("z [nm]")
     axes[-1, 0].set_xlabel("x [µm]")
     figure.tight_layout()

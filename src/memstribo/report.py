@@ -143,20 +143,32 @@ def _inputs_html(result) -> str:
         shown = "unset (derived)" if value is None else _quantity(value, unit)
         param_rows.append(f"<tr><td><code>{_e(name)}</code></td><td class='num'>{shown}</td>"
                           f"<td>{_e(spec.description if spec else '')}</td><td>{_e(params.source(name))}</td></tr>")
-    changed = [name for name in params if not str(params.source(name)).startswith("thesis")
-               and "MODEL" not in str(params.source(name))]
-    changed_text = (", ".join(f"<code>{_e(n)}</code>" for n in changed) if changed else "none")
+    changed = _changed_parameters(params)
+    changed_text = (", ".join(f"<code>{_e(n)}</code> ({_e(params.source(n))})" for n in changed)
+                    if changed else "none")
     options = result.options
     return (
         "<h3>Roughness</h3>" + roughness +
         f"<h3>Parameters</h3><p>Parameter set <code>{_e(params.name)}</code>; every value with its unit and source "
-        f"is in <code>parameters.toml</code>. Values not from the thesis or docs/model.md: {changed_text}.</p>"
+        f"is in <code>parameters.toml</code>. Changed from that set: {changed_text}.</p>"
         "<details><summary>All parameters with sources</summary><table><tr><th>name</th><th>value</th>"
         "<th>meaning</th><th>source</th></tr>" + "".join(param_rows) + "</table></details>"
         f"<p class='note'>Run options: steps per cycle {_e(options.steps or 'model default')}, coating "
         f"{_e(options.coating)}, {len(options.loads)} loads, {len(options.areas)} areas, {len(options.wear)} worn "
         "fractions.</p>"
     )
+
+
+def _changed_parameters(params) -> list[str]:
+    """Names whose value differs from the named parameter set (the user's overrides)."""
+    from .errors import MemstriboError
+    from .parameters import get_parameter_values
+
+    try:
+        base = get_parameter_values(params.name)
+    except MemstriboError:
+        return list(params)
+    return [name for name in params if name not in base or base[name] != params[name]]
 
 
 def _stages_html(result) -> str:
