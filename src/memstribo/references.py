@@ -72,6 +72,21 @@ REFERENCES: dict[str, str] = {
         "monolayer films for stiction reduction in silicon micromachines', J. Microelectromech. Syst. 7 (1998) "
         "252-260. doi:10.1109/84.679393"
     ),
+    "vollebregt_2014": (
+        "E. A. H. Vollebregt, 'A new solver for the elastic normal contact problem using conjugate gradients, "
+        "deflation, and an FFT-based preconditioner', J. Comput. Phys. 257 (2014) 333-351. "
+        "doi:10.1016/j.jcp.2013.10.005"
+    ),
+    "ashurst_2001": (
+        "W. R. Ashurst, C. Yau, C. Carraro, R. Maboudian, M. T. Dugger, 'Dichlorodimethylsilane as an anti-stiction "
+        "monolayer for MEMS: a comparison to the octadecyltrichlorosilane self-assembled monolayer', "
+        "J. Microelectromech. Syst. 10 (2001) 41-49. doi:10.1109/84.911090"
+    ),
+    "maboudian_howe_1997": (
+        "R. Maboudian, R. T. Howe, 'Critical review: adhesion in surface micromechanical structures', "
+        "J. Vac. Sci. Technol. B 15 (1997) 1-20. doi:10.1116/1.589247"
+    ),
+    "krajcinovic_1996": "D. Krajcinovic, Damage Mechanics, North-Holland (Elsevier), 1996.",
 }
 
 _used: dict[str, None] = {}

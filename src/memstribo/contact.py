@@ -1,0 +1,452 @@
+"""Rough line contact: plane-strain half-plane boundary elements, FFT, constrained conjugate gradient.
+
+The normal contact of two elastic bodies with a rough gap is solved on the half-plane
+(docs/model.md, section 7): the combined undeformed gap ``separation`` h(x) [m] is given on a
+uniform grid of ``n`` piecewise-constant pressure elements of width ``dx`` [m]; the unknown is
+the pressure p >= 0 [Pa] with the gap
+
+    g(x) = h(x) + u(x) - approach >= 0,     p g = 0,     dx * sum(p) = load,
+
+where u is the combined elastic surface displacement (positive: the surfaces move apart) and
+``approach`` [m] the rigid-body approach. Two half-planes are offered:
+
+``periodic=False`` (free boundary, the right model for a gear tooth)
+    Influence coefficients of uniformly loaded strips (Johnson 1985, Eq. 2.25a), evaluated by
+    a linear (zero-padded, non-periodic) FFT convolution. In plane strain the displacement
+    under a finite load grows like ``log(distance)``, so it needs a datum: the displacement of
+    a point load is taken as zero at ``reference_distance`` (default: the domain length
+    n*dx), i.e. the kernel is ``(2/(pi E*)) ln(L/|x|)``; :func:`memstribo.reference.hertz_line_approach`
+    is exact for this datum.
+``periodic=True`` (for comparison with periodic solvers)
+    The spectral Green's function u_k = 2 p_k / (E* |q_k|) at the grid wavenumbers, with a
+    zero mean displacement (the convention of ContactMechanics and Tamaas, so the same
+    problem is solved).
+
+The solver is Polonsky & Keer's (1999) constrained conjugate gradient with load control,
+preconditioned with the inverse of the half-plane operator in Fourier space (E*|q|/2),
+restricted to the current contact set, in the manner of Vollebregt (2014). The operator is
+diagonal in Fourier space with a symbol |q|^-1, so without preconditioning the condition
+number grows like n and the iteration count like sqrt(n); with it the count hardly grows with
+n (docs/contact.md gives measured counts).
+
+References
+----------
+.. [1] I. A. Polonsky, L. M. Keer, Wear 231 (1999) 206-219. :doi:`10.1016/S0043-1648(99)00113-1`
+.. [2] E. A. H. Vollebregt, 'A new solver for the elastic normal contact problem using conjugate
+   gradients, deflation, and an FFT-based preconditioner', J. Comput. Phys. 257 (2014) 333-351.
+   :doi:`10.1016/j.jcp.2013.10.005`
+.. [3] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985.
+"""
+
+from __future__ import annotations
+
+import functools
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.fft
+
+from memstribo.errors import InputError
+from memstribo.references import cites
+
+__all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "HalfPlane"]
+
+#: Grids with fewer elements are solved directly (the coarsest level of the nested grids).
+_COARSEST = 256
+#: Tolerance of the coarse levels of the nested grids (only their contact set matters).
+_COARSE_TOLERANCE = 1e-4
+
+#: Threads scipy.fft may use in the solver (1 = serial; the benchmark compares on one core).
+FFT_WORKERS = 1
+
+
+@dataclass(frozen=True)
+class ContactSolution:
+    """Solution of a line contact.
+
+    Attributes
+    ----------
+    pressure : numpy.ndarray
+        Contact pressure of each element [Pa], >= 0.
+    gap : numpy.ndarray
+        Deformed gap of each element [m], >= 0 (zero on the contact set up to the tolerance).
+    contact : numpy.ndarray
+        Boolean mask of the elements in contact (pressure > 0).
+    approach : float
+        Rigid-body approach of the two bodies [m] (for ``periodic=False`` relative to the
+        far-field datum ``reference_distance``; for ``periodic=True`` relative to a zero mean
+        elastic displacement).
+    load : float
+        Load per unit face width carried, dx * sum(pressure) [N/m].
+    iterations : int
+        Conjugate-gradient iterations used.
+    residual : float
+        Complementarity residual at the end, dimensionless: the largest gap error on the
+        contact set or penetration outside it, divided by the peak-to-valley of the separation.
+    converged : bool
+        Whether ``residual <= tolerance`` was reached within ``max_iterations``.
+    solve_time : float
+        Wall-clock time of the solve alone [s].
+    message : str
+        What happened, in words (why it did not converge, warnings on resolution).
+    dx : float
+        Element width [m].
+    periodic : bool
+        Whether the periodic half-plane was used.
+    """
+
+    pressure: np.ndarray
+    gap: np.ndarray
+    contact: np.ndarray
+    approach: float
+    load: float
+    iterations: int
+    residual: float
+    converged: bool
+    solve_time: float
+    message: str
+    dx: float
+    periodic: bool
+
+    @property
+    def contact_length(self) -> float:
+        """Measure of the contact set, dx times the number of elements in contact [m]."""
+        return float(np.count_nonzero(self.contact) * self.dx)
+
+    @property
+    def max_pressure(self) -> float:
+        """Largest element pressure [Pa]."""
+        return float(self.pressure.max())
+
+    @property
+    def mean_pressure(self) -> float:
+        """Mean pressure over the contact set, load / contact_length [Pa]."""
+        length = self.contact_length
+        return self.load / length if length > 0 else 0.0
+
+
+class HalfPlane:
+    """The discrete half-plane operator u = A p and its Fourier-space preconditioner.
+
+    Built once per (n, dx, contact_modulus, periodic, reference_distance) and cached, so
+    repeated solves on the same grid (a meshing cycle) pay no set-up cost.
+
+    Parameters
+    ----------
+    n : int
+        Number of elements.
+    dx : float
+        Element width [m].
+    contact_modulus : float
+        Contact modulus E* [Pa].
+    periodic : bool
+        Periodic half-plane (spectral Green's function) or free boundary (zero-padded
+        convolution of the strip influence coefficients).
+    reference_distance : float
+        Datum distance L of the free-boundary displacement [m] (ignored when periodic).
+    """
+
+    def __init__(self, n, dx, contact_modulus, periodic, reference_distance):
+        self.n, self.dx, self.periodic = n, dx, periodic
+        self.modulus = contact_modulus
+        if periodic:
+            self.size = n
+            q = 2.0 * np.pi * np.abs(scipy.fft.rfftfreq(n, d=dx))
+            green = np.zeros_like(q)
+            green[1:] = 2.0 / (contact_modulus * q[1:])
+            self.green = green
+            stiffness = 0.5 * contact_modulus * q
+        else:
+            self.size = scipy.fft.next_fast_len(2 * n, real=True)
+            offsets = np.arange(self.size, dtype=float)
+            offsets[self.size - n + 1:] -= self.size  # wrap: negative offsets at the end
+            offsets[n:self.size - n + 1] = np.nan    # never reaches a collocation point
+            kernel = strip_influence(offsets * dx, dx, contact_modulus, reference_distance)
+            kernel[np.isnan(kernel)] = 0.0
+            self.green = scipy.fft.rfft(kernel, workers=FFT_WORKERS)
+            q = 2.0 * np.pi * np.abs(scipy.fft.rfftfreq(self.size, d=dx))
+            stiffness = 0.5 * contact_modulus * q
+        # diagonal of the preconditioner (stiffness of one element) [Pa/m]
+        self.diagonal = float(np.mean(stiffness))
+        self.stiffness = stiffness
+
+    def _apply(self, values, symbol):
+        if self.periodic:
+            return scipy.fft.irfft(scipy.fft.rfft(values, workers=FFT_WORKERS) * symbol, n=self.n,
+                                   workers=FFT_WORKERS)
+        spectrum = scipy.fft.rfft(values, n=self.size, workers=FFT_WORKERS)
+        return scipy.fft.irfft(spectrum * symbol, n=self.size, workers=FFT_WORKERS)[: self.n]
+
+    def displacement(self, pressure):
+        """Combined elastic surface displacement [m] of an element pressure [Pa]."""
+        return self._apply(pressure, self.green)
+
+    def precondition(self, gap_residual):
+        """Approximate inverse: a pressure [Pa] that would produce ``gap_residual`` [m]."""
+        return self._apply(gap_residual, self.stiffness)
+
+
+@functools.lru_cache(maxsize=16)
+def _half_plane(n, dx, contact_modulus, periodic, reference_distance):
+    return HalfPlane(n, dx, contact_modulus, periodic, reference_distance)
+
+
+@cites("johnson_1985")
+def strip_influence(x, width, contact_modulus, reference_distance):
+    r"""Surface displacement of a half-plane under a uniformly loaded strip of unit pressure.
+
+    Parameters
+    ----------
+    x : numeric
+        Distance of the field point from the strip centre [m].
+    width : float
+        Strip width dx [m].
+    contact_modulus : float
+        Contact modulus E* [Pa] (combined for the two bodies).
+    reference_distance : float
+        Datum distance L [m]: a point load's displacement vanishes at distance L.
+
+    Returns
+    -------
+    numeric
+        Displacement per unit pressure [m/Pa].
+
+    Notes
+    -----
+    Integral of the point-load displacement :math:`\frac{2}{\pi E^*}\ln\frac{L}{|x-s|}` over
+    the strip :math:`|s| \le b = dx/2` (plane strain; Eq. (2.25a) in [3]_ up to the datum):
+
+    .. math:: K(x) = \frac{2}{\pi E^*}\left[2 b \ln L - F(x+b) + F(x-b)\right],
+              \quad F(t) = t\ln|t| - t
+    """
+    b = 0.5 * width
+    x = np.asanyarray(x, dtype=float)
+
+    def antiderivative(t):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(t == 0.0, 0.0, t * np.log(np.abs(t))) - t
+
+    return 2.0 / (np.pi * contact_modulus) * (
+        2.0 * b * np.log(reference_distance) - antiderivative(x + b) + antiderivative(x - b))
+
+
+def elastic_displacement(pressure, dx, contact_modulus, *, periodic=False, reference_distance=None):
+    """Combined elastic surface displacement of a line-contact pressure.
+
+    Parameters
+    ----------
+    pressure : array_like
+        Element pressures [Pa] on a uniform grid.
+    dx : float
+        Element width [m].
+    contact_modulus : float
+        Contact modulus E* [Pa].
+    periodic : bool, optional
+        Periodic half-plane (zero mean displacement) or free boundary.
+    reference_distance : float, optional
+        Datum distance [m] of the free boundary (default n*dx).
+
+    Returns
+    -------
+    numpy.ndarray
+        Displacement u [m] (positive: the surfaces move apart).
+    """
+    pressure = np.asarray(pressure, dtype=float)
+    n = pressure.size
+    dx, modulus = float(dx), float(contact_modulus)
+    reference = float(reference_distance) if reference_distance is not None else n * dx
+    return _half_plane(n, dx, modulus, bool(periodic), reference).displacement(pressure)
+
+
+def _check_inputs(separation, dx, contact_modulus, load, mean_pressure, tolerance, max_iterations,
+                  reference_distance, initial_pressure):
+    h = np.asarray(separation, dtype=float)
+    if h.ndim != 1 or h.size < 2:
+        raise InputError(f"separation must be a 1-D array of at least 2 gap values [m], got shape {h.shape}")
+    if not np.all(np.isfinite(h)):
+        raise InputError("separation contains NaN or infinite values; fill or remove missing data first")
+    for name, value in (("dx", dx), ("contact_modulus", contact_modulus)):
+        if not np.isscalar(value) or not np.isfinite(value) or value <= 0:
+            raise InputError(f"{name} must be a positive finite number, got {value!r}")
+    if (load is None) == (mean_pressure is None):
+        raise InputError("give exactly one of load [N/m] and mean_pressure [Pa]")
+    name, value = ("load", load) if load is not None else ("mean_pressure", mean_pressure)
+    if not np.isscalar(value) or not np.isfinite(value) or value <= 0:
+        raise InputError(f"{name} must be a positive finite number (a compressive load), got {value!r}")
+    if not (0.0 < tolerance < 1.0):
+        raise InputError(f"tolerance must lie in (0, 1), got {tolerance!r}")
+    if max_iterations is not None and (int(max_iterations) != max_iterations or max_iterations < 1):
+        raise InputError(f"max_iterations must be a positive integer, got {max_iterations!r}")
+    if reference_distance is not None and (not np.isfinite(reference_distance) or reference_distance <= 0):
+        raise InputError(f"reference_distance must be a positive length [m], got {reference_distance!r}")
+    if initial_pressure is not None:
+        p0 = np.asarray(initial_pressure, dtype=float)
+        if p0.shape != h.shape or not np.all(np.isfinite(p0)) or np.any(p0 < 0):
+            raise InputError("initial_pressure must be finite, >= 0 and of the same shape as separation")
+    return h
+
+
+@cites("polonsky_keer_1999", "vollebregt_2014", "johnson_1985", "model")
+def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_pressure=None, periodic=False,
+                       tolerance=1e-8, max_iterations=None, reference_distance=None, initial_pressure=None,
+                       precondition=True, continuation=True):
+    r"""Solve the non-adhesive normal contact of a rough line contact under a given load.
+
+    Parameters
+    ----------
+    separation : array_like
+        Undeformed gap h(x) [m] at the element centres of a uniform grid (any offset: only
+        differences matter).
+    dx : float
+        Element width [m].
+    contact_modulus : float
+        Contact modulus E* [Pa], 1/E* = (1-nu1²)/E1 + (1-nu2²)/E2.
+    load : float, optional
+        Load per unit face width w [N/m]. Give this or ``mean_pressure``.
+    mean_pressure : float, optional
+        Nominal pressure w / (n dx) [Pa].
+    periodic : bool, optional
+        Periodic half-plane instead of the free boundary (module docstring).
+    tolerance : float, optional
+        Convergence tolerance on the dimensionless complementarity residual (see
+        :class:`ContactSolution`).
+    max_iterations : int, optional
+        Iteration cap (default: max(1000, n // 4)).
+    reference_distance : float, optional
+        Free-boundary displacement datum [m] (default: the domain length n dx).
+    initial_pressure : array_like, optional
+        Warm start [Pa], e.g. the previous step's pressure of a meshing cycle; rescaled to
+        the load.
+    precondition : bool, optional
+        Use the Fourier preconditioner (default). ``False`` gives the plain Polonsky-Keer
+        iteration (for comparison).
+
+    Returns
+    -------
+    ContactSolution
+        Pressure, gap, contact set, approach, iterations, residual, converged flag, timing.
+        Non-convergence is reported by ``converged=False`` and ``message``, never hidden.
+
+    Notes
+    -----
+    Minimises the complementary energy :math:`\frac12 p^T A p + p^T h` subject to
+    :math:`p \ge 0` and :math:`dx\sum p = w` by the constrained conjugate gradient of [1]_,
+    preconditioned as in [2]_ with :math:`P_C\,\mathcal F^{-1}\frac{E^*|q|}{2}\mathcal F\,P_C`
+    (P_C: restriction to the contact set, with the mean removed so the load is kept).
+
+    Examples
+    --------
+    >>> x = (np.arange(1024) - 512) * 1e-9
+    >>> sol = solve_line_contact(x**2 / (2 * 20e-6), 1e-9, 100e9, load=1.0)
+    >>> sol.converged, round(sol.contact_length * 1e9)
+    (True, 32)
+    """
+    start = time.perf_counter()
+    h = _check_inputs(separation, dx, contact_modulus, load, mean_pressure, tolerance, max_iterations,
+                      reference_distance, initial_pressure)
+    n = h.size
+    dx = float(dx)
+    modulus = float(contact_modulus)
+    target = float(mean_pressure) if mean_pressure is not None else float(load) / (n * dx)
+    reference = float(reference_distance) if reference_distance is not None else n * dx
+    cap = int(max_iterations) if max_iterations is not None else max(1000, n // 4)
+    operator = _half_plane(n, dx, modulus, bool(periodic), reference)
+
+    offset = float(h.min())
+    h = h - offset
+    scale = float(h.max()) if h.max() > 0 else 1.0  # residual scale [m]
+    if (initial_pressure is None and continuation and precondition and n % 2 == 0
+            and n >= 2 * _COARSEST):
+        # nested grids: the coarse solution (every other point) is the initial guess here
+        coarse = solve_line_contact(h[::2], 2.0 * dx, modulus, mean_pressure=target, periodic=periodic,
+                                    tolerance=max(tolerance, _COARSE_TOLERANCE), max_iterations=cap,
+                                    reference_distance=reference, precondition=True, continuation=True)
+        coarse_p = coarse.pressure
+        initial_pressure = np.empty(n)
+        initial_pressure[0::2] = coarse_p
+        following = np.roll(coarse_p, -1) if periodic else np.append(coarse_p[1:], 0.0)
+        initial_pressure[1::2] = 0.5 * (coarse_p + following)
+    if initial_pressure is not None and np.sum(initial_pressure) > 0:
+        p = np.asarray(initial_pressure, dtype=float) * (target / np.mean(initial_pressure))
+    else:
+        p = np.full(n, target)
+
+    t = np.zeros(n)
+    G_old = 1.0
+    conjugate = False
+    residual = np.inf
+    iteration = 0
+    while True:
+        u = operator.displacement(p)
+        g = h + u
+        contact = p > 0.0
+        n_contact = np.count_nonzero(contact)
+        g_mean = g[contact].sum() / n_contact
+        r = np.where(contact, g - g_mean, 0.0)
+        # complementarity residual: gap error on the contact set, penetration outside it
+        penetration = np.where(contact, 0.0, np.maximum(g_mean - g, 0.0))
+        residual = max(np.abs(r).max(), penetration.max()) / scale
+        if residual <= tolerance or iteration >= cap:
+            break
+        iteration += 1
+        # working set: the contact set plus the points that penetrate (Polonsky-Keer's I_ol)
+        overlap = (~contact) & (g < g_mean)
+        reactivate = bool(overlap.any())
+        if reactivate and precondition:
+            work = contact | overlap
+            r = np.where(work, g - g_mean, 0.0)
+            n_work = np.count_nonzero(work)
+        else:
+            work, n_work = contact, n_contact
+        if precondition:
+            z = operator.precondition(r)
+            z = np.where(work, z, 0.0)
+            z[work] -= z[work].sum() / n_work
+        else:
+            z = r
+        G = float(np.dot(r, z))
+        if conjugate:
+            t = z + (G / G_old) * t
+            t[~work] = 0.0
+        else:
+            t = z
+        G_old = G
+        q = operator.displacement(t)
+        q_mean = q[work].sum() / n_work
+        q = np.where(work, q - q_mean, 0.0)
+        denominator = float(np.dot(q, t))
+        if denominator <= 0.0:  # no descent left: restart along the (preconditioned) gradient
+            t[:] = 0.0
+            conjugate = False
+            continue
+        tau = float(np.dot(r, t)) / denominator
+        p = p - tau * t
+        p[p < 0.0] = 0.0
+        if reactivate and not precondition:
+            p[overlap] = (g_mean - g[overlap]) * tau
+        conjugate = not reactivate
+        total = p.mean()
+        if total <= 0.0:
+            p = np.full(n, target)
+            conjugate = False
+        else:
+            p *= target / total
+
+    gap = np.where(contact, 0.0, g - g_mean)
+    converged = residual <= tolerance
+    n_contact = int(np.count_nonzero(contact))
+    if converged:
+        message = f"converged in {iteration} iterations (residual {residual:.2e} <= tolerance {tolerance:.1e})"
+    else:
+        message = (f"NOT converged: residual {residual:.2e} > tolerance {tolerance:.1e} after {iteration} "
+                   f"iterations (max_iterations={cap})")
+    if n_contact < 3:
+        message += f"; the contact is resolved by only {n_contact} element(s): refine the grid"
+    if not periodic and (contact[0] or contact[-1]):
+        message += "; the contact reaches the edge of the domain: enlarge it"
+    return ContactSolution(pressure=p, gap=np.maximum(gap, 0.0) if converged else gap, contact=contact,
+                           approach=float(g_mean) + offset, load=float(p.sum() * dx), iterations=iteration,
+                           residual=float(residual), converged=bool(converged),
+                           solve_time=time.perf_counter() - start, message=message, dx=dx,
+                           periodic=bool(periodic))
