@@ -153,9 +153,16 @@ def check_wear(wear) -> np.ndarray:
     return array
 
 
+#: Which key of ``mesh.summarize`` gives each sweep quantity (the cycle's mean COF and its
+#: energy split, the largest friction force, the total F_t, the lowest stiction margin).
+_SUMMARY_KEYS = {"cof": "cof_mean", "friction_force": "friction_force_max"}
+
+
 def _summary_value(summary: dict, dataset, key: str) -> float:
     """A sweep quantity from the mesh summary, or from the dataset where the summary lacks it."""
-    if key in summary and summary[key] is not None:
+    key_in_summary = _SUMMARY_KEYS.get(key, key)
+    if key_in_summary in summary and summary[key_in_summary] is not None:
+        key = key_in_summary
         value = summary[key]
         return float(value) if not isinstance(value, (bool, np.bool_)) else float(bool(value))
     if key == "stiction" and "stiction_margin" in summary:
@@ -285,7 +292,7 @@ def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float 
     if not (0 < target_cof < 10):
         raise InputError(f"target_cof must be a COF between 0 and 10, got {target_cof!r}.")
     before = mesh.summarize(mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=0.0))
-    cof, cof_vdw, cof_elastic = (float(before[k]) for k in ("cof", "cof_vdw", "cof_elastic"))
+    cof, cof_vdw, cof_elastic = (float(before[k]) for k in ("cof_mean", "cof_vdw", "cof_elastic"))
     if cof_elastic >= target_cof or cof_vdw <= 0:
         raise InputError(f"cannot calibrate U_vdW: the elastic COF {cof_elastic:.3g} alone (vdW part {cof_vdw:.3g}) "
                          f"does not leave room for the target {target_cof:g}.")
@@ -294,4 +301,4 @@ def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float 
     after = mesh.summarize(mesh.simulate_mesh(params, roughness, steps=steps, coating=calibrated, wear=0.0))
     return calibrated, {"vdw_bond_energy_before": coating.vdw_bond_energy,
                         "vdw_bond_energy_after": calibrated.vdw_bond_energy,
-                        "cof_before": cof, "cof_after": float(after["cof"]), "cof_elastic": cof_elastic}
+                        "cof_before": cof, "cof_after": float(after["cof_mean"]), "cof_elastic": cof_elastic}

@@ -1,0 +1,153 @@
+"""``memstribo damage``: damage of the SAM coating per meshing cycle, lives, cycles to stiction (thesis 5.5)."""
+
+from __future__ import annotations
+
+from .common import CommandResult
+
+NAME = "damage"
+HELP = "damage accumulation in the coating (5-10): omega/c1 per cycle, relative lives, cycles to stiction"
+ORDER = 72
+
+#: Thesis Table 5-1: loads of one nanoblock (adhesive asperity) [N].
+TABLE_5_1_LOADS = (0.8166e-6, 0.99e-6, 1.7944e-6, 3.4279e-6, 4.4055e-6, 7.0165e-6)
+
+
+def register(subparsers, parents):
+    parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=HELP + (
+        ". The load peaks come from the coated pair's meshing cycle (per-nanoblock loads) or from --loads. "
+        "Set the damage law with --set damage_exponent=M and --set damage_coefficient=C1 (c1 in Pa^-m); "
+        "without c1 only omega/c1 and relative lives are known."))
+    parser.add_argument("--loads", metavar="LIST",
+                        help="nanoblock peak loads instead of the meshing cycle: comma-separated, with a unit on "
+                             "each or none (SI), e.g. '0.8166 uN,7.0165 uN'; 'table5-1' for the thesis's six loads. "
+                             "They are repeated in turn to the peaks_per_cycle peaks of a cycle")
+    parser.add_argument("--coating", default="OTS", help="coating whose wear decides stiction: OTS (default) or FDTS")
+    parser.add_argument("--observed-life", metavar="N", type=float,
+                        help="calibrate c1 from an observed coating life of N meshing cycles")
+    parser.add_argument("--wear-points", type=int, default=6,
+                        help="wear states Omega in the COF sweep that decides stiction (default 6: 0, 0.2, ... 1)")
+    parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
+    parser.add_argument("--out", metavar="DIR", help="write datasets (NetCDF + CSV) and figures to DIR")
+    parser.set_defaults(handler=run)
+
+
+def parse_loads(text) -> list[float]:
+    """'0.8166 uN, 0.99 uN' or 'table5-1' -> loads [N], each > 0."""
+    from ..errors import InputError
+    from ..units import to_si
+
+    if str(text).strip().lower().replace(" ", "") in ("table5-1", "thesis"):
+        return list(TABLE_5_1_LOADS)
+    items = [item.strip() for item in str(text).split(",")]
+    if any(item == "" for item in items):
+        raise InputError(f"--loads must be a comma-separated list of loads > 0 N, got {text!r}.")
+    loads = [to_si(item, "N", "--loads") for item in items]
+    if any(load <= 0 for load in loads):
+        raise InputError(f"--loads must all be > 0 N, got {text!r}.")
+    return loads
+
+
+def run(args, params):
+    import numpy as np
+
+    from ..coating import get_coating, wear_sweep
+    from ..damage import run_damage
+    from ..errors import InputError
+
+    loads = parse_loads(args.loads) if args.loads is not None else None
+    if args.observed_life is not None and not (np.isfinite(args.observed_life) and args.observed_life > 0):
+        raise InputError(f"--observed-life must be a number of cycles > 0, got {args.observed_life!r}.")
+    if args.wear_points < 2:
+        raise InputError(f"--wear-points must be >= 2, got {args.wear_points}.")
+    if args.steps is not None and args.steps < 2:
+        raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
+    coating = get_coating(args.coating)
+    c1_known = params["damage_coefficient"] is not None or args.observed_life is not None
+    mesh_dataset = None
+    notes = []
+    if loads is None:
+        from ..mesh import simulate_mesh
+
+        mesh_dataset = simulate_mesh(params, steps=args.steps, coating=coating, wear=0.0)
+        notes.append(f"  load peaks: nanoblock loads of the {coating.name}-coated meshing cycle "
+                     f"({mesh_dataset.sizes['step']} steps)")
+    else:
+        notes.append(f"  load peaks: {len(loads)} nanoblock loads repeated to k = {params['peaks_per_cycle']} peaks "
+                     "per cycle, full unloading between peaks")
+    sweep = None
+    if c1_known:
+        sweep = wear_sweep(params, coating, np.linspace(0.0, 1.0, args.wear_points), steps=args.steps)
+    outcome = run_damage(params, mesh_dataset, loads=loads, wear_sweep=sweep, cycles_observed=args.observed_life,
+                         figures=bool(args.out))
+    s = outcome.summary
+    m = s["damage_exponent"]
+    values = {
+        "omega_over_c1_max": s["omega_over_c1_max"],
+        "location": s["location"],
+        "life_ratio_corner_to_central": s["life_ratio_corner_to_central"],
+        "damage_exponent": m,
+        "peaks_per_cycle": s["peaks_per_cycle"],
+    }
+    units = {"omega_over_c1_max": f"Pa^{m:g}", "location": "m", "damage_coefficient": f"Pa^-{m:g}"}
+    if c1_known:
+        values.update({
+            "damage_coefficient": s["damage_coefficient"],
+            "cycles_to_failure": s["cycles_to_failure"],
+            "cycles_to_failure_by_position": s["cycles_to_failure_by_position"],
+            "critical_wear": s.get("critical_wear"),
+            "cycles_to_stiction": s["cycles_to_stiction"],
+        })
+        if s["cycles_to_stiction"] is None:
+            notes.append("  cycles_to_stiction: none - the friction force stays below the tangential force "
+                         "at every wear state of the sweep, even bare")
+    else:
+        notes.append("  c1 unknown: give --set damage_coefficient=C1 [Pa^-m] or --observed-life N for cycles to "
+                     "failure and to stiction")
+    notes.append(f"  corner life / central life = {s['life_ratio_corner_to_central']:.4g} "
+                 f"(the corner's coating wears through {100 * (1 - s['life_ratio_corner_to_central']):.3g} % sooner)")
+    if args.out:
+        from ..output import save_figure, write_dataset
+
+        written = []
+        for stem, dataset in outcome.datasets.items():
+            written += write_dataset(dataset, args.out, stem)
+        if sweep is not None:
+            written += write_dataset(sweep, args.out, "coating_wear")
+        for stem, (figure, _caption) in outcome.figures.items():
+            written += save_figure(figure, args.out, stem)
+        written += _stress_figures(params, outcome, args.out)
+        notes.append("  wrote " + ", ".join(str(p) for p in written))
+    return CommandResult(values=values, units=units, title="damage accumulation in the coating (5-10)", notes=notes)
+
+
+def _stress_figures(params, outcome, folder):
+    """Pressure and tau_1 along x through the corner/side/central asperities at the largest peak."""
+    import numpy as np
+
+    from ..asperity import _contact_modulus_from, power_law_pressure
+    from ..damage import POSITIONS, principal_shear_profile
+    from ..output import new_figure, save_figure
+
+    result = outcome.result
+    loads = result.asperity_peak_loads
+    top = int(np.argmax(loads.sum(axis=1)))
+    modulus = _contact_modulus_from(params)
+    d, b = params["asperity_degree"], params["asperity_shape_coefficient"]
+    x = result.x
+    fig, (ax1, ax2) = new_figure(2, 1, figsize=(5, 6), sharex=True)
+    for position, style in zip(POSITIONS, ("r-", "g-", "b-")):
+        mask = result.classes == position
+        if not mask.any():
+            continue
+        load = float(loads[top][mask].max())
+        ax1.plot(x * 1e9, power_law_pressure(np.abs(x), load, d, b, modulus) / 1e9, style,
+                 label=f"{position} ({load * 1e6:.3g} uN)")
+        tau = principal_shear_profile(x, load, d, b, modulus, params["asperity_friction_coefficient"],
+                                      params["poisson_ratio"])
+        ax2.plot(x * 1e9, tau / 1e9, style, label=position)
+    ax1.set_ylabel("contact pressure p [GPa]")
+    ax1.legend()
+    ax2.set_ylabel("principal shear stress tau_1 [GPa]")
+    ax2.set_xlabel("x along sliding through the asperity centre [nm]")
+    ax1.set_title("largest load peak (thesis Figures 5-17, 5-20)")
+    return save_figure(fig, folder, "pressure_and_tau1")

@@ -1,0 +1,245 @@
+"""Damage accumulation in the coating (thesis 5.5, (5-10), Tables 5-3 and 5-4) and lifetimes."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from memstribo.damage import (
+    calibrate_damage_coefficient,
+    cyclic_peak_loads,
+    cycles_to_failure,
+    cycles_to_stiction,
+    damage_after,
+    damage_sum,
+    load_peaks,
+    nanoblock_damage,
+    principal_shear_profile,
+    surface_stresses,
+    worn_fraction,
+)
+from memstribo.errors import InputError
+
+TABLE_5_1_LOADS = np.array([0.8166, 0.99, 1.7944, 3.4279, 4.4055, 7.0165]) * 1e-6
+# Thesis Table 5-3 (m = 1, Pa) and Table 5-4 (m = 2, Pa^2): max omega/c1 and its location x [m]
+TABLE_5_3 = {"corner": (0.248e11, -0.823e-8), "side": (0.243e11, -0.801e-8), "central": (0.226e11, -0.7791e-8)}
+TABLE_5_4 = {"corner": (0.1706082e20, -0.81801e-8), "side": (0.1607712e20, -0.79900e-8),
+             "central": (0.1387791e20, -0.77999e-8)}
+
+
+# --- surface stresses ---------------------------------------------------------------------------------------
+
+
+def _hertz_surface(xi, nu):
+    """Hertz's surface stresses / p0 along a diameter (Johnson 1985, (3.45))."""
+    r = np.abs(xi)
+    s = np.sqrt(np.clip(1 - r ** 2, 0, None))
+    inner = np.where(r < 1, 1 - s ** 3, 1.0)
+    radial = (1 - 2 * nu) / 3 / r ** 2 * inner - s
+    hoop = -(1 - 2 * nu) / 3 / r ** 2 * inner - 2 * nu * s
+    return radial, hoop
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.23, 0.3])
+def test_surface_stresses_reproduce_hertz(nu):
+    xi = np.array([-1.4, -1.2, -0.8, -0.5, -0.2, 0.3, 0.7, 0.9, 1.3])
+    s = surface_stresses(xi, 2.0, 0.0, nu)
+    radial, hoop = _hertz_surface(xi, nu)
+    # discretisation: 200 cells over the diameter; the edge kink (|xi| = 1) is excluded
+    np.testing.assert_allclose(s["sigma_xx"], radial, atol=2e-3)
+    np.testing.assert_allclose(s["sigma_yy"], hoop, atol=2e-3)
+    centre = surface_stresses(0.0, 2.0, 0.0, nu)
+    assert float(centre["sigma_xx"]) == pytest.approx(-(1 + 2 * nu) / 2, abs=2e-3)
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3])
+def test_surface_stress_of_hertz_traction(nu):
+    """Sliding sphere, traction mu p0 sqrt(1 - r^2/a^2): sigma_x = -pi (4 + nu)/8 mu p0 x/a (Johnson 1985, 7.2)."""
+    xi = np.array([-0.8, -0.5, -0.2, 0.2, 0.5, 0.8])
+    with_traction = surface_stresses(xi, 2.0, 1.0, nu)["sigma_xx"]
+    without = surface_stresses(xi, 2.0, 0.0, nu)["sigma_xx"]
+    np.testing.assert_allclose((with_traction - without) / xi, -math.pi * (4 + nu) / 8, rtol=2e-3)
+
+
+def test_principal_shear_scales_with_load():
+    """For a power-law punch tau_1 scales as P^((d-1)/(d+1)) at fixed x/a."""
+    x = np.linspace(-10e-9, 10e-9, 41)
+    e_star, b = 84.996e9, 4e22
+    t1 = principal_shear_profile(x, 1e-7, 4, b, e_star, 0.1, 0.23)
+    t2 = principal_shear_profile(x * 2 ** 0.2, 2e-7, 4, b, e_star, 0.1, 0.23)  # a ~ P^(1/5)
+    np.testing.assert_allclose(t2, t1 * 2 ** 0.6, rtol=1e-9)
+    assert np.all(principal_shear_profile(x, 0.0, 4, b, e_star, 0.1, 0.23) == 0)
+
+
+# --- the damage law -----------------------------------------------------------------------------------------
+
+
+def test_damage_sum_is_5_10():
+    amplitudes = np.array([1e9, 2e9, 3e9])
+    assert damage_sum(amplitudes, 1) == pytest.approx(6e9)
+    assert damage_sum(amplitudes, 2, 1e-20) == pytest.approx(1e-20 * 14e18)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(damage_exponent=0), "damage_exponent"),
+    (dict(damage_exponent=-1), "damage_exponent"),
+    (dict(damage_coefficient=-1e-20), "damage_coefficient"),
+    (dict(damage_coefficient=0.0), "damage_coefficient"),
+])
+def test_damage_sum_bad_input(kwargs, match):
+    arguments = dict(stress_amplitude=[1e9], damage_exponent=1.0, damage_coefficient=1.0) | kwargs
+    with pytest.raises(InputError, match=match):
+        damage_sum(**arguments)
+
+
+def test_cyclic_peak_loads():
+    np.testing.assert_array_equal(cyclic_peak_loads([1.0, 2.0, 3.0], 7), [1, 2, 3, 1, 2, 3, 1])
+    with pytest.raises(InputError, match="loads"):
+        cyclic_peak_loads([1.0, -2.0], 4)
+    with pytest.raises(InputError, match="peaks_per_cycle"):
+        cyclic_peak_loads([1.0], 0)
+
+
+def test_load_peaks_and_valleys():
+    history = np.array([[0, 1], [2, 3], [1, 1], [3, 2], [0, 0]], dtype=float)
+    peak, valley, block = load_peaks(history)
+    np.testing.assert_array_equal(block, [0, 0, 1, 1])
+    np.testing.assert_array_equal(peak, [2, 3, 3, 2])
+    np.testing.assert_array_equal(valley, [0, 1, 0, 1])
+
+
+# --- thesis Tables 5-3 and 5-4 ------------------------------------------------------------------------------
+
+
+@pytest.fixture
+def table_params(params):
+    return params  # asperity_friction_coefficient = 0.1, d = 4, B_4 = 4e22, 3 x 3 asperities at 58.4 nm
+
+
+def test_table_5_3_m1(table_params):
+    result = nanoblock_damage(TABLE_5_1_LOADS, table_params.updated({"damage_exponent": 1}))
+    for position, (value, location) in TABLE_5_3.items():
+        # mu = 0.1 (inferred, docs/damage.md): within 2 % of the printed values, location within 0.15 nm
+        assert result.maximum[position] == pytest.approx(value, rel=0.02)
+        assert result.location[position] == pytest.approx(location, abs=0.15e-9)
+    # life of the corner asperity 9 % shorter than the central one (thesis); ours 9.5 %
+    assert 1 - result.life_ratio_corner_to_central == pytest.approx(0.09, abs=0.01)
+
+
+def test_table_5_4_m2(table_params):
+    result = nanoblock_damage(TABLE_5_1_LOADS, table_params.updated({"damage_exponent": 2}))
+    for position, (value, location) in TABLE_5_4.items():
+        # within 10 %; the maximum sits 0.9 nm further out than the thesis prints (docs/damage.md)
+        assert result.maximum[position] == pytest.approx(value, rel=0.10)
+        assert result.location[position] == pytest.approx(location, abs=1.0e-9)
+    # corner life 18.65 % shorter (thesis); ours 19.7 %
+    assert 1 - result.life_ratio_corner_to_central == pytest.approx(0.1865, abs=0.015)
+
+
+def test_corner_damages_most(table_params):
+    result = nanoblock_damage(TABLE_5_1_LOADS, table_params)
+    assert result.maximum["corner"] > result.maximum["side"] > result.maximum["central"] > 0
+
+
+@pytest.mark.parametrize("m", [1.0, 2.0])
+def test_damage_scales_with_load_as_the_stress_solution(params, m):
+    """One asperity (no load sharing): omega/c1 ~ P^(m (d-1)/(d+1)) exactly (d = 4: P^(0.6 m))."""
+    single = params.updated({"atomic_per_side": 1, "damage_exponent": m})
+    base = nanoblock_damage([1e-7], single, peaks_per_cycle=1).maximum["central"]
+    doubled = nanoblock_damage([2e-7], single, peaks_per_cycle=1).maximum["central"]
+    assert doubled / base == pytest.approx(2 ** (0.6 * m), rel=2e-3)  # rel: the x grid's resolution
+    # and linearly with the number of peaks (linear summation)
+    assert nanoblock_damage([1e-7], single, peaks_per_cycle=10).maximum["central"] == pytest.approx(10 * base)
+
+
+# --- lifetime -----------------------------------------------------------------------------------------------
+
+
+def test_damage_never_decreases():
+    cycles = np.linspace(0, 1e6, 101)
+    omega = damage_after(cycles, [2.5e10, 2.3e10], 1e-16)
+    assert np.all(np.diff(omega, axis=0) >= 0)
+    assert np.all((omega >= 0) & (omega <= 1))
+
+
+def test_cycles_to_failure_and_calibration():
+    assert cycles_to_failure(2.5e10, 4e-16) == pytest.approx(1e5)
+    c1 = calibrate_damage_coefficient(2.5e10, 1e5)
+    assert cycles_to_failure(2.5e10, c1) == pytest.approx(1e5)
+    assert math.isinf(cycles_to_failure(0.0, 1e-16))
+    with pytest.raises(InputError, match="damage_coefficient"):
+        cycles_to_failure(2.5e10, -1.0)
+    with pytest.raises(InputError, match="observed"):
+        calibrate_damage_coefficient(2.5e10, 0)
+
+
+def test_worn_fraction_and_stiction():
+    lives = np.array([100.0, 100.0, 200.0, 300.0])
+    np.testing.assert_allclose(worn_fraction([0, 99, 100, 250, 300], lives), [0, 0, 0.5, 0.75, 1.0])
+    assert np.all(np.diff(worn_fraction(np.linspace(0, 400, 50), lives)) >= 0)
+    assert cycles_to_stiction(lives, 0.6) == 200.0
+    assert cycles_to_stiction(lives, 0.5) == 100.0
+    assert cycles_to_stiction(lives, None) is None  # F_f < F_t even bare: never
+    assert cycles_to_stiction(np.array([100.0, np.inf]), 0.9) is None
+
+
+def test_stiction_only_when_friction_reaches_tangential_force(params):
+    """cycles_to_stiction is the first N at which Omega(N) reaches the wear where F_f >= F_t."""
+    import xarray as xr
+
+    from memstribo.damage import run_damage
+
+    p = params.updated({"damage_coefficient": 1e-16})
+    sweep = xr.Dataset({"cof": ("wear", [0.2, 0.5, 0.8]), "stiction_margin": ("wear", [1e-3, 5e-4, -5e-4])},
+                       coords={"wear": [0.0, 0.5, 1.0]})
+    outcome = run_damage(p, loads=TABLE_5_1_LOADS, wear_sweep=sweep, figures=False)
+    s = outcome.summary
+    assert s["critical_wear"] == pytest.approx(0.75)
+    lives = s["cycles_to_failure_by_position"]
+    # corners (4/9) then sides (8/9 >= 0.75): stiction when the side asperities' coating fails
+    assert s["cycles_to_stiction"] == pytest.approx(lives["side"])
+    assert s["cycles_to_failure"] == pytest.approx(lives["corner"])
+    history = outcome.datasets["damage_history"]
+    margin = history["stiction_margin"].values
+    cycles = history["cycles"].values
+    assert np.all(margin[cycles < s["cycles_to_stiction"]] > 0)
+    assert np.all(np.diff(history["worn_fraction"].values) >= 0)
+    no_stiction = sweep.assign(stiction_margin=("wear", [1e-3, 5e-4, 1e-4]))
+    assert run_damage(p, loads=TABLE_5_1_LOADS, wear_sweep=no_stiction, figures=False).summary[
+        "cycles_to_stiction"] is None
+
+
+# --- CLI ----------------------------------------------------------------------------------------------------
+
+
+def test_cli_damage_table_loads(cli):
+    out = cli.json("damage", "--loads", "table5-1")
+    assert set(out["omega_over_c1_max"]) == {"corner", "side", "central"}
+    assert out["omega_over_c1_max"]["corner"] == pytest.approx(0.248e11, rel=0.02)
+    assert out["life_ratio_corner_to_central"] == pytest.approx(0.91, abs=0.01)
+    assert "cycles_to_failure" not in out
+    m2 = cli.json("damage", "--loads", "table5-1", "--set", "damage_exponent=2")
+    assert m2["omega_over_c1_max"]["corner"] == pytest.approx(0.1706e20, rel=0.1)
+
+
+def test_cli_damage_units_in_loads(cli):
+    a = cli.json("damage", "--loads", "0.8166 uN,7.0165 uN")
+    b = cli.json("damage", "--loads", "8.166e-7,7.0165e-6")
+    assert a == b
+
+
+@pytest.mark.parametrize("argv, match", [
+    (["--loads", "1 uN,-2 uN"], "loads"),
+    (["--loads", "1 m"], "loads"),
+    (["--loads", "table5-1", "--set", "damage_coefficient=-1"], "damage_coefficient"),
+    (["--loads", "table5-1", "--set", "damage_exponent=0"], "damage_exponent"),
+    (["--loads", "table5-1", "--set", "asperity_degree=0"], "asperity_degree"),
+    (["--loads", "table5-1", "--observed-life", "-5"], "observed-life"),
+    (["--loads", "table5-1", "--coating", "wax"], "unknown coating"),
+])
+def test_cli_damage_bad_input(cli, argv, match):
+    code, out, err = cli("damage", *argv)
+    assert code == 2
+    assert match in err and "Traceback" not in err
