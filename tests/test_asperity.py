@@ -166,3 +166,20 @@ def test_cli_asperity_bad_input(cli, argv):
     code, out, err = cli("asperity", *argv)
     assert code == 2
     assert "Traceback" not in err and "error" in err
+
+
+def test_degree_two_matches_reference_hertz_sphere():
+    """Against memstribo.reference's Hertz sphere (an independent implementation)."""
+    from memstribo import reference
+
+    radius, modulus = 131.3e-9, E_STAR
+    loads = np.array([1e-8, 1e-7, 8.275e-7])
+    c = power_law_contact(loads, 2, 1 / (2 * radius), modulus)
+    np.testing.assert_allclose(c.contact_radius, reference.hertz_sphere_radius(loads, radius, modulus), rtol=1e-12)
+    np.testing.assert_allclose(c.approach, reference.hertz_sphere_approach(loads, radius, modulus), rtol=1e-12)
+    np.testing.assert_allclose(c.max_pressure, reference.hertz_sphere_peak_pressure(loads, radius, modulus),
+                               rtol=1e-12)
+    r = np.linspace(0, 12e-9, 7)
+    np.testing.assert_allclose(power_law_pressure(r, loads[-1], 2, 1 / (2 * radius), modulus),
+                               reference.hertz_sphere_pressure(r, loads[-1], radius, modulus), rtol=1e-12,
+                               atol=1e-3)
