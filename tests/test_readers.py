@@ -219,6 +219,13 @@ def test_csv_with_comments_and_unit(tmp_path):
     assert profile.z.max() == pytest.approx(3e-9, rel=1e-9)
 
 
+def test_csv_with_column_names(tmp_path):
+    path = tmp_path / "named.csv"
+    path.write_text("x_m,z_m\n" + "\n".join(f"{i * 1e-8},{np.sin(i) * 1e-9}" for i in range(20)))
+    profile = read_topography(path)
+    assert profile.n_points == 20 and profile.z[1] == pytest.approx(np.sin(1) * 1e-9)
+
+
 def test_npy_profile(tmp_path):
     x = np.arange(100) * 1e-8
     z = 1e-9 * np.cos(x / 3e-8)

@@ -235,10 +235,14 @@ def _read_text(data: bytes, path, name, unit, declared_unit=None):
         if "image width" in text[:2000].lower():
             return _read_header_export(text, path, name, unit)
     unit = _check_unit_option(declared_unit, unit, path) if declared_unit else (unit or "m")
+    cleaned = text.replace(",", " ").replace(";", " ")
+    if first and not re.match(r"\s*[-+.\d]", first):
+        # one line of column names ("x,z") before the data: treat it as a comment
+        cleaned = cleaned.replace(first.replace(",", " ").replace(";", " "), "#", 1)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error")
-            table = np.loadtxt(io.StringIO(text.replace(",", " ").replace(";", " ")), comments="#", ndmin=2)
+            table = np.loadtxt(io.StringIO(cleaned), comments="#", ndmin=2)
     except (ValueError, UserWarning) as exc:
         raise DataFileError(f"{path}: not a readable x-z text profile ({exc}). Expected two columns (x, height) "
                             "separated by spaces, tabs or commas, '#' comment lines allowed.") from None
