@@ -267,13 +267,15 @@ def _prepare(params, roughness, steps) -> MeshSetup:
                 raise InputError(f"roughness '{name}' is {span * 1e6:.4g} um long, but the flank travel over the path of "
                                  f"contact plus the contact window needs {needed * 1e6:.4g} um on each flank; give a "
                                  f"longer scan (memstribo does not wrap a profile around).")
+        # the scan's middle sits at the middle of the flank travel (independent of the window)
         zp = rough.level_profile(p_scan)
-        pinion.append((zp.x - zp.x[0] + lo1, zp.z))
+        mid_p = 0.5 * (zp.x[0] + zp.x[-1])
+        pinion.append((zp.x - mid_p + 0.5 * (lo1 + hi1), zp.z))
         if g_scan is not None:
             zg = rough.level_profile(g_scan)
-            gear.append((zg.x - zg.x[0] + lo2, zg.z))
-        else:  # the same scan read from its far end: an independent stretch for a long scan
-            gear.append((zp.x[-1] - zp.x[::-1] + lo2, zp.z[::-1]))
+            gear.append((zg.x - 0.5 * (zg.x[0] + zg.x[-1]) + 0.5 * (lo2 + hi2), zg.z))
+        else:  # the same scan read backwards: for a long scan, an independent stretch meets the pinion's
+            gear.append((mid_p - zp.x[::-1] + 0.5 * (lo2 + hi2), zp.z[::-1]))
     return MeshSetup(pair, positions, step_time, load, rows, rows * w_adh, grid, pinion, gear, name, synthetic,
                      source)
 
