@@ -183,3 +183,22 @@ def test_report_of_a_real_run_renders_every_figure(small_run, tmp_path):
     dom = browser_dom(small_run.folder / "report.html", tmp_path / "profile")
     assert f'data-figures="ok {len(small_run.figures)}"' in dom
     assert len(small_run.figures) >= 1
+
+
+def test_example_run_config_is_valid():
+    from memstribo.parameters import read_config
+
+    path = REPO / "examples" / "run_thesis_case.toml"
+    options = RunOptions.from_table(read_config(path)["run"], path.parent)
+    assert len(options.roughness_files) == 2 and all(Path(f).is_file() for f in options.roughness_files)
+    assert options.coating == "OTS" and options.wear[0] == 0.0 and options.wear[-1] == 1.0
+
+
+def test_python_api_example_on_a_real_profile(capsys):
+    import runpy
+
+    namespace = runpy.run_path(str(REPO / "examples" / "api_afm_profile.py"))
+    results = namespace["main"]()
+    out = capsys.readouterr().out
+    assert "opdx-3.opdx" in out and "Rq = 2.826 nm" in out  # data/afm/README.md: Rq 2.826 nm
+    assert results["coated"]["friction_force_max"] < results["bare"]["friction_force_max"]

@@ -227,3 +227,11 @@ def test_default_point_function_is_the_mesh_summary(params, tmp_path):
         assert values[0] == pytest.approx(values[1], rel=1e-9)
         assert values[1] == direct[key]  # bit for bit: same inputs, no global state
     assert result.dataset["friction_force_max"].attrs["units"] == "N"
+
+
+@pytest.mark.parametrize("name, n_points", [("study_load_wear.toml", 30), ("study_design_points.toml", 4)])
+def test_example_study_specs_are_valid(params, name, n_points):
+    spec = load_study_spec(TESTS.parent / "examples" / name)
+    points = prepare_points(spec, params)
+    assert len(points) == n_points
+    assert spec.function == "mesh"
