@@ -94,12 +94,16 @@ def test_zero_distance_dissipates_nothing(params_m, model):
 
 @pytest.mark.parametrize("model", ["fixed-load", "fixed-gap"])
 def test_step_independence(params_m, model):
-    """Once the step resolves the bond length, halving it changes the means by < 1e-3 (relative)."""
+    """Once the step resolves the bond length, halving it changes the means by < 0.5 % (relative).
+
+    The forces are exact at every step; what moves is the sampling of the bonded fractions of
+    the faces (17 points per atomic face, 33 per adhesive face, on a grid aligned with the steps).
+    """
     d = params_m["bond_length"]
     coarse = sliding.summarize(sliding.slide(model, params_m, distance=1e-6, step=d))
     fine = sliding.summarize(sliding.slide(model, params_m, distance=1e-6, step=d / 2))
     for key in ("cof", "cof_chemical", "cof_vdw", "energy_chemical", "energy_vdw", "normal_force"):
-        assert getattr(fine, key) == pytest.approx(getattr(coarse, key), rel=1e-3), key
+        assert getattr(fine, key) == pytest.approx(getattr(coarse, key), rel=5e-3), key
     assert fine.energy_elastic == pytest.approx(coarse.energy_elastic, rel=0.03)
 
 

@@ -37,6 +37,7 @@ Geometry of the structure models (memstribo's reading of Figures 3-16 to 3-19, 3
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import asdict, dataclass
 from types import SimpleNamespace
@@ -355,9 +356,6 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
     centres = structure_footprints(geometry, blocks)  # (n, m)
     table = _RangeMax(z)
     layer = params["adhesive_layer_thickness"] or geometry.adhesive_height
-    dx_profile = float(np.median(np.diff(x)))
-    k_at = int(np.clip(2 * math.ceil(w_at / dx_profile) + 1, 9, 65))
-    k_adh = int(np.clip(2 * math.ceil(w_adh / dx_profile) + 1, 17, 129))
     stiffness = mechanics.BlockStiffness.from_geometry(geometry, params["youngs_modulus"],
                                                        constants.contact_modulus, params["threshold_strain"])
     if mode == "fixed-gap":
@@ -370,7 +368,24 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
         load = _check_positive("load", params["normal_load"] if load is None else load, "N")
         tips = float(z.max())  # reference: tips level with the highest point of the profile
 
+    # The m rows of atomic blocks across the sliding direction see the same line profile: solve
+    # for one block per column with m times the stiffness (exact), then spread the result.
+    columns = dataclasses.replace(stiffness, atomic=m * stiffness.atomic, atomic_area=m * stiffness.atomic_area)
+    # The profile on a uniform grid aligned with the steps and fine enough for the footprints
+    # (<= w_at / 16): the bond fractions are then gathers, not interpolations.
     n_steps = positions.size
+    slide_step = float(positions[1] - positions[0]) if n_steps > 1 else float(step)
+    refine = max(1, math.ceil(slide_step / (w_at / 16) - 1e-9))
+    h = slide_step / refine
+    n_grid = (n_steps - 1) * refine + int(math.ceil(length / h)) + 2
+    grid = np.interp(np.minimum(x[0] + h * np.arange(n_grid), x[-1]), x, z)
+
+    def offsets(left_edge, width, samples):
+        centres_ = left_edge[..., None] + (np.arange(samples) + 0.5) / samples * width
+        return np.rint(centres_ / h).astype(np.intp)
+
+    at_offsets = offsets(centres - w_at / 2, w_at, int(np.clip(round(w_at / h), 5, 17)))  # (n, m, k)
+    adh_offsets = offsets(np.arange(blocks) * w_adh, w_adh, int(np.clip(round(w_adh / h), 9, 33)))  # (n, k)
     out = {key: [] for key in ("bonds_chem", "bonds_vdw", "adhesion", "block_adhesion", "normal", "approach",
                                "residual", "block_force", "adh_c", "bulk_c", "shrink", "at_c", "at_f", "rigid",
                                "contacts")}
@@ -385,22 +400,24 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
         pos = positions[start:start + _CHUNK] + x[0]
         left = pos[:, None, None] + centres[None] - w_at / 2  # (N, n, m)
         peak = _footprint_max(x, z, table, left, left + w_at)
-        overlap = np.repeat((peak - tips)[:, :, None, :], m, axis=2).reshape(pos.size, blocks, m * m)
         if mode == "fixed-gap":
-            state = mechanics.structure_fixed_gap(overlap, stiffness)
+            state = mechanics.structure_fixed_gap(peak - tips, columns)
         else:
-            state = mechanics.structure_fixed_load(overlap, stiffness, load)
+            state = mechanics.structure_fixed_load(peak - tips, columns, load)
+        spread = lambda a: np.repeat(a[:, :, None, :], m, axis=2).reshape(a.shape[:2] + (m * m,))  # noqa: E731
+        base = (np.arange(start, start + pos.size) * refine)[:, None, None]
         # chemical bonds: the part of each touching atomic face within one bond length of the profile
-        chem_fraction = _fraction_within(x, z, left, w_at, peak - d_chem, k_at)  # (N, n, m)
+        samples = grid[np.minimum(base[..., None] + at_offsets, n_grid - 1)]  # (N, n, m, k)
+        chem_fraction = (samples >= (peak - d_chem)[..., None]).mean(axis=-1)
         touching = state.atomic_force > 0
-        chem = (np.repeat(chem_fraction[:, :, None, :], m, axis=2).reshape(touching.shape) * touching)
+        chem = chem_fraction * touching
         # vdW bonds: the part of each adhesive face inside the adhesive layer
         u = state.adhesive_compression + state.bulk_compression
         face = tips - state.approach[:, None] + u + geometry.atomic_height  # (N, n)
-        block_left = pos[:, None] + np.arange(blocks)[None, :] * w_adh
-        vdw_fraction = _fraction_within(x, z, block_left, w_adh, face - layer, k_adh)
+        samples = grid[np.minimum(base + adh_offsets, n_grid - 1)]  # (N, n, k)
+        vdw_fraction = (samples >= (face - layer)[..., None]).mean(axis=-1)
         block_adhesion = constants.pull_off_force_block * vdw_fraction**1.5  # (3-32) with a = L_vdW / 2
-        out["bonds_chem"].append(chem.sum(axis=(-2, -1)) * full_chem)
+        out["bonds_chem"].append(m * chem.sum(axis=(-2, -1)) * full_chem)
         out["bonds_vdw"].append(vdw_fraction.sum(axis=-1) * full_vdw)
         out["block_adhesion"].append(block_adhesion)
         out["adhesion"].append(friction.adhesion_force(block_adhesion))
@@ -411,10 +428,10 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
         out["adh_c"].append(state.adhesive_compression)
         out["bulk_c"].append(state.bulk_compression)
         out["shrink"].append(state.shrink)
-        out["at_c"].append(state.atomic_compression)
-        out["at_f"].append(state.atomic_force)
-        out["rigid"].append(state.rigid)
-        out["contacts"].append(touching.sum(axis=(-2, -1)))
+        out["at_c"].append(spread(state.atomic_compression))
+        out["at_f"].append(spread(state.atomic_force / m))
+        out["rigid"].append(spread(state.rigid))
+        out["contacts"].append(m * touching.sum(axis=(-2, -1)))
     r = {key: np.concatenate(values, axis=0) for key, values in out.items()}
     if mode == "fixed-gap" and not np.any(r["contacts"]):
         raise InputError(f"gap {tips:.4g} m: no atomic block touches the counter profile anywhere on the slide "
