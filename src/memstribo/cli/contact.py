@@ -1,0 +1,155 @@
+"""``memstribo contact``: rough (or smooth) line contact of a cylinder on a profile, by the BEM solver."""
+
+from __future__ import annotations
+
+from .common import CommandResult
+
+NAME = "contact"
+HELP = "line contact of a cylinder on a measured or flat profile: contact length, pressures, approach"
+ORDER = 45
+
+#: Fewest elements across the Hertz width 2a that still resolve the contact (1 % on a and p0 needs ~20).
+MIN_ELEMENTS_ACROSS = 10
+
+
+def register(subparsers, parents):
+    parser = subparsers.add_parser(
+        NAME, parents=parents, help=HELP,
+        description=HELP + ". Plane strain, per unit face width; the gap is x^2/(2R) minus the profile heights "
+        "(the profile's mean line through the cylinder's apex at the profile centre). Defaults: --radius is the "
+        "gear pair's effective radius at the pitch point, --modulus the contact modulus of the parameter set, "
+        "--load normal_load / face_width.")
+    source = parser.add_mutually_exclusive_group(required=True)
+    source.add_argument("--profile", metavar="PATH", help="profile file (any format readers.read_topography reads)")
+    source.add_argument("--flat", action="store_true", help="smooth flat counter surface (Hertz check)")
+    parser.add_argument("--channel", help="channel of a multi-channel file")
+    parser.add_argument("--row", type=int, default=0, help="line scan (row) of a 2D map to use (default 0)")
+    parser.add_argument("--length", help="domain length with --flat, e.g. '400 nm' (default: 8 Hertz half-widths)")
+    parser.add_argument("--points", type=int, default=2048, help="number of elements with --flat (default 2048)")
+    parser.add_argument("--radius", help="effective radius R, e.g. '20 um' (default: gear pair at the pitch point)")
+    parser.add_argument("--load", help="load per unit face width w, e.g. '12.5 N/m' (default: normal_load/face_width)")
+    parser.add_argument("--modulus", help="contact modulus E*, e.g. '85 GPa' (default: from the parameter set)")
+    parser.add_argument("--periodic", action="store_true",
+                        help="periodic half-plane (the gap repeats with the domain length) instead of a free boundary")
+    parser.add_argument("--tolerance", type=float, default=1e-8, help="solver tolerance (default 1e-8)")
+    parser.add_argument("--max-iterations", type=int, default=None, help="iteration cap of the solver")
+    parser.add_argument("--allow-unconverged", action="store_true",
+                        help="print an unconverged result (flagged converged=false) instead of exiting with status 2")
+    parser.set_defaults(handler=run)
+
+
+def _defaults(params):
+    from ..adhesion import contact_modulus
+    from ..gear import GearPair
+
+    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
+                              params["counter_poisson_ratio"])
+    pair = GearPair.from_parameters(params)
+    return float(modulus), float(pair.effective_radius(0.0)), params["normal_load"] / params["face_width"]
+
+
+def _positive(text, unit, name):
+    from ..errors import InputError
+    from ..units import to_si
+
+    value = to_si(text, unit, name)
+    if value <= 0:
+        raise InputError(f"{name} must be positive, got {text!r}")
+    return value
+
+
+def contact_problem(args, params):
+    """The separation [m], element width [m], modulus [Pa], radius [m], load [N/m] and a description."""
+    import numpy as np
+
+    from ..errors import InputError
+    from ..reference import hertz_line_half_width
+
+    need_defaults = args.modulus is None or args.radius is None or args.load is None
+    modulus, radius, load = _defaults(params) if need_defaults else (None, None, None)
+    modulus = _positive(args.modulus, "Pa", "--modulus") if args.modulus is not None else modulus
+    radius = _positive(args.radius, "m", "--radius") if args.radius is not None else radius
+    load = _positive(args.load, "N/m", "--load") if args.load is not None else load
+    half_width = float(hertz_line_half_width(load, radius, modulus))
+
+    if args.flat:
+        if args.points < 2:
+            raise InputError(f"--points must be at least 2, got {args.points}")
+        length = _positive(args.length, "m", "--length") if args.length is not None else 8.0 * half_width
+        n = args.points
+        dx = length / n
+        heights = np.zeros(n)
+        label = f"smooth cylinder on a flat, {n} elements over {length * 1e9:.4g} nm"
+    else:
+        from ..readers import read_topography
+
+        data = read_topography(args.profile, channel=args.channel)
+        if hasattr(data, "line_scans"):
+            scans = data.line_scans()
+            if not 0 <= args.row < len(scans):
+                raise InputError(f"--row {args.row} is outside the map's rows 0..{len(scans) - 1}")
+            data = scans[args.row]
+        if not data.is_uniform:
+            raise InputError(f"profile '{data.name}' is not uniformly sampled; the contact solver needs a uniform "
+                             "grid: resample it first (memstribo roughness --resample STEP)")
+        heights = np.asarray(data.z, dtype=float)
+        n = heights.size
+        dx = float(data.x[-1] - data.x[0]) / (n - 1)
+        length = n * dx
+        heights = heights - heights.mean()
+        label = f"cylinder on profile '{data.name}' ({data.source}), {n} elements of {dx * 1e9:.4g} nm"
+
+    elements = 2.0 * half_width / dx
+    if elements < MIN_ELEMENTS_ACROSS:
+        raise InputError(
+            f"the grid is too coarse for this contact: the element width {dx * 1e9:.4g} nm gives only "
+            f"{elements:.3g} elements across the Hertz width 2a = {2 * half_width * 1e9:.4g} nm (R = "
+            f"{radius * 1e6:.4g} um, w = {load:.4g} N/m, E* = {modulus / 1e9:.4g} GPa); at least "
+            f"{MIN_ELEMENTS_ACROSS} are needed: use a finer profile or more --points")
+    if length < 4.0 * half_width:
+        raise InputError(f"the domain ({length * 1e9:.4g} nm) is shorter than twice the Hertz width 2a = "
+                         f"{2 * half_width * 1e9:.4g} nm: use a longer profile or --length, or a smaller load")
+    x = (np.arange(n) - 0.5 * (n - 1)) * dx
+    separation = x**2 / (2.0 * radius) - heights
+    return separation, dx, modulus, radius, load, label
+
+
+def run(args, params):
+    from ..contact import solve_line_contact
+    from ..errors import ConvergenceError, InputError
+    from ..reference import hertz_line_half_width, hertz_line_peak_pressure
+
+    separation, dx, modulus, radius, load, label = contact_problem(args, params)
+    solution = solve_line_contact(separation, dx, modulus, load=load, periodic=args.periodic,
+                                  tolerance=args.tolerance, max_iterations=args.max_iterations)
+    if not solution.converged and not args.allow_unconverged:
+        raise ConvergenceError(f"the contact solver did not converge: {solution.message}. Raise --max-iterations, "
+                               "loosen --tolerance, or use --allow-unconverged to print the result anyway")
+    if not args.periodic and (solution.contact[0] or solution.contact[-1]):
+        raise InputError("the contact reaches the end of the domain: the free-boundary result would be wrong; "
+                         "use a longer profile (or --length) or a smaller load")
+    values = {
+        "contact_length": solution.contact_length,
+        "max_pressure": solution.max_pressure,
+        "mean_pressure": solution.mean_pressure,
+        "load": solution.load,
+        "approach": solution.approach,
+        "converged": solution.converged,
+        "iterations": solution.iterations,
+        "residual": solution.residual,
+        "solve_time": solution.solve_time,
+    }
+    units = {"contact_length": "m", "max_pressure": "Pa", "mean_pressure": "Pa", "load": "N/m", "approach": "m",
+             "converged": "", "iterations": "", "residual": "", "solve_time": "s"}
+    a = float(hertz_line_half_width(load, radius, modulus))
+    p0 = float(hertz_line_peak_pressure(load, radius, modulus))
+    notes = [
+        f"  {label}; {'periodic' if args.periodic else 'free-boundary'} half-plane, E* = {modulus / 1e9:.4g} GPa, "
+        f"R = {radius * 1e6:.4g} um.",
+        f"  smooth Hertz reference: contact length 2a = {2 * a * 1e9:.4g} nm, peak pressure p0 = {p0 / 1e9:.4g} GPa.",
+        f"  approach relative to the far-field datum at the domain length {separation.size * dx * 1e9:.4g} nm "
+        "(docs/contact.md)." if not args.periodic else "  approach relative to a zero mean elastic displacement.",
+        f"  solver: {solution.message}.",
+    ]
+    return CommandResult(values=values, units=units, title="line contact (plane strain, per unit face width)",
+                         notes=notes)
