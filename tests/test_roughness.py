@@ -229,6 +229,8 @@ def test_synthetic_profile_bad_input():
         r.synthetic_profile(1e-6, 78e-9, 1e-9, 0.02, rng=1)
     with pytest.raises(InputError, match="rq must be a positive"):
         r.synthetic_profile(10e-6, 78e-9, -1e-9, 0.02, rng=1)
+    with pytest.raises(InputError, match="rng must be a numpy Generator"):
+        r.synthetic_profile(10e-6, 78e-9, 1e-9, 0.02, rng=1.5)
 
 
 def test_default_profile(params):
@@ -282,6 +284,12 @@ def test_statistics_bad_input():
         r.profile_statistics(np.arange(5.0))
     with pytest.raises(InputError, match="x .m. or sample_spacing"):
         r.rms_slope(np.arange(5.0))
+    with pytest.raises(InputError, match="strictly increasing"):
+        r.rms_slope(np.arange(3.0), x=[0.0, 1.0, 1.0])
+    with pytest.raises(InputError, match="strictly increasing"):
+        r.level_profile(np.arange(3.0), x=[0.0, 0.0, 0.0])
+    with pytest.raises(InputError, match="sample_spacing must be a positive"):
+        r.rms_slope(np.arange(3.0), sample_spacing=0.0)
     with pytest.raises(InputError, match="NaN or infinite"):
         r.rms_height([1.0, np.nan])
     with pytest.raises(InputError, match="flat profile"):
@@ -317,6 +325,12 @@ def test_cli_thesis_and_resample(cli):
     assert out["Rq"] == pytest.approx(1.6235e-9, rel=1e-9) and out["rms_slope"] == pytest.approx(0.0241, rel=1e-9)
     code, text, _ = cli("roughness", "thesis")
     assert code == 0 and "SYNTHETIC" in text and " nm" in text
+
+
+def test_cli_map_resample(cli):
+    out = cli.json("roughness", AFM / "IgorIBWReader_P0089OP0027.ibw", "--resample", "3.90625 nm")
+    assert out["sample_spacing"] == pytest.approx(3.90625e-9) and out["n_points"] == 511
+    assert out["Sq"] == pytest.approx(8.094e-9, abs=0.5e-12)  # areal values are of the map as measured
 
 
 def test_cli_text_output_has_units(cli):

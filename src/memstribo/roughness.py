@@ -159,11 +159,15 @@ def _as_xz(profile_or_z, x=None, sample_spacing=None):
     z = np.asarray(profile_or_z, dtype=float)
     if z.ndim != 1:
         raise InputError(f"heights must be a 1-D array (got shape {z.shape}).")
+    if sample_spacing is not None and not (np.isfinite(sample_spacing) and sample_spacing > 0):
+        raise InputError(f"sample_spacing must be a positive length in m (got {sample_spacing!r}).")
     if x is None:
         x = np.arange(z.size) * (1.0 if sample_spacing is None else float(sample_spacing))
     x = np.asarray(x, dtype=float)
     if x.shape != z.shape:
         raise InputError(f"x and z must have the same shape (got {x.shape} and {z.shape}).")
+    if not np.all(np.isfinite(x)) or np.any(np.diff(x) <= 0):
+        raise InputError("x must be finite and strictly increasing.")
     return x, z, None
 
 
@@ -775,6 +779,10 @@ def synthetic_profile(length, sample_spacing, rq, rms_slope_value, rng=None, nam
     if n < 16:
         raise InputError(f"synthetic profile: length / sample_spacing = {length / sample_spacing:.3g}; "
                          "at least 16 points are needed.")
+    if not (rng is None or isinstance(rng, np.random.Generator)
+            or (isinstance(rng, (int, np.integer)) and not isinstance(rng, bool) and rng >= 0)):
+        raise InputError(f"synthetic profile: rng must be a numpy Generator, a non-negative integer seed or None "
+                         f"(got {rng!r}).")
     generator = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
     dx = float(sample_spacing)
     noise_spectrum = np.fft.rfft(generator.standard_normal(n))
