@@ -83,3 +83,17 @@ def test_bad_input():
         friction.thesis_estimate(0, 4e-15, 3.73e-15, 3.386e-4, 25e-6, D)
     with pytest.raises(InputError, match="load must be positive"):
         friction.thesis_estimate(9, 4e-15, 3.73e-15, 3.386e-4, -25e-6, D)
+
+
+def test_validation_rows():
+    """The rows of docs/validation.md: each one states its tolerance and whether it holds."""
+    from memstribo.validation.friction import rows
+
+    table = rows()
+    assert len(table) >= 8
+    for row in table:
+        assert row.command.startswith("memstribo slide")
+        if row.tolerance.startswith("differs"):
+            assert not row.agrees and row.note  # differences on purpose are explained
+        else:
+            assert row.agrees, row.quantity

@@ -138,13 +138,6 @@ def _footprint_max(x, z, table, left, right):
     return np.maximum(ends, table.query(i0, i1))
 
 
-def _fraction_within(x, z, left, width, level, samples):
-    """Fraction of [left, left + width] where the profile is at or above ``level`` (sampled)."""
-    t = (np.arange(samples) + 0.5) / samples
-    heights = np.interp(left[..., None] + t * width, x, z)
-    return (heights >= level[..., None]).mean(axis=-1)
-
-
 def structure_footprints(geometry, blocks):
     """Offsets of the atomic-block centres from the structure's trailing edge [m], shape (blocks, m).
 
