@@ -1,0 +1,123 @@
+"""Benchmark of the meshing-cycle simulation: wall/CPU time, peak memory, time per step.
+
+Run: ``python bench/bench_mesh.py [--steps 121 241 481 961] [--grid 4 2 1] [--repeat 2] [--profile] [--json]``.
+
+1. The default cycle (the thesis case: 481 steps, 2 nm grid, 1.2 um window, synthetic roughness)
+   with the time of each stage (roughness set-up, contact solves, nanoblocks/bonds) and the peak
+   traced memory (``tracemalloc``: numpy's allocations included).
+2. How time and memory grow with the number of steps (default grid) and with the grid
+   resolution (elements per step; default steps).
+3. ``--profile``: the 15 most expensive functions of the default cycle (cProfile).
+
+One core: numpy/scipy are limited to one thread (``OMP_NUM_THREADS=1`` and friends are set
+before they are imported; scipy.fft runs with one worker in the contact solver). Imports are
+excluded from the timings (a warm-up run comes first). On a shared machine the CPU time is the
+fairer number.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")
+
+import argparse  # noqa: E402
+import json  # noqa: E402
+import time  # noqa: E402
+import tracemalloc  # noqa: E402
+
+
+def _run(params, steps, repeat):
+    from memstribo.mesh import simulate_mesh
+
+    best = best_cpu = float("inf")
+    peak = 0
+    for _ in range(repeat):
+        tracemalloc.start()
+        start, start_cpu = time.perf_counter(), time.process_time()
+        dataset = simulate_mesh(params, steps=steps)
+        wall, cpu = time.perf_counter() - start, time.process_time() - start_cpu
+        peak = max(peak, tracemalloc.get_traced_memory()[1])
+        tracemalloc.stop()
+        best, best_cpu = min(best, wall), min(best_cpu, cpu)
+    return dataset, {"steps": steps, "seconds": best, "cpu_seconds": best_cpu, "ms_per_step": 1e3 * best / steps,
+                     "peak_memory_mb": peak / 2**20,
+                     "mean_iterations": float(dataset.contact_iterations.mean())}
+
+
+def _stages(params):
+    """Time of the stages of one default cycle: set-up, contact solves, nanoblocks and bonds."""
+    import cProfile
+    import pstats
+
+    from memstribo.mesh import simulate_mesh
+
+    profiler = cProfile.Profile()
+    profiler.enable()
+    simulate_mesh(params)
+    profiler.disable()
+    stats = pstats.Stats(profiler)
+    table = {f"{func[0].split('/')[-1]}:{func[2]}": value[3] for func, value in stats.stats.items()}
+    total = table.get("mesh.py:simulate_mesh", float("nan"))
+    setup = table.get("mesh.py:_prepare", float("nan"))
+    contact = table.get("mesh.py:_solve_contacts", float("nan"))
+    return stats, {"total": total, "setup_roughness": setup, "contact_solves": contact,
+                   "nanoblocks_bonds_output": total - setup - contact}
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--steps", type=int, nargs="+", default=[121, 241, 481, 961])
+    parser.add_argument("--grid", type=float, nargs="+", default=[4.0, 2.0, 1.0], help="grid spacings [nm]")
+    parser.add_argument("--repeat", type=int, default=2)
+    parser.add_argument("--profile", action="store_true", help="print the 15 most expensive functions")
+    parser.add_argument("--json", action="store_true")
+    args = parser.parse_args(argv)
+
+    import numpy as np
+    import scipy
+
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    _run(params, 21, 1)  # warm-up: imports, FFT plans, caches
+    results = {"numpy": np.__version__, "scipy": scipy.__version__, "fft": "scipy.fft (pocketfft), 1 worker",
+               "threads": os.environ.get("OMP_NUM_THREADS")}
+    _, default = _run(params, params["mesh_steps"], args.repeat)
+    results["default_cycle"] = default
+    stats, stages = _stages(params)
+    results["stages_seconds"] = stages
+    results["vs_steps"] = [_run(params, n, args.repeat)[1] for n in args.steps]
+    results["vs_grid"] = []
+    for nm in args.grid:
+        point = _run(params.updated({"mesh_grid_spacing": nm * 1e-9}), params["mesh_steps"], args.repeat)[1]
+        point["grid_spacing_nm"] = nm
+        point["elements_per_step"] = int(round(params["mesh_window"] / (nm * 1e-9)))
+        results["vs_grid"].append(point)
+    if args.json:
+        print(json.dumps(results, indent=2))
+        return 0
+    d = default
+    print(f"default cycle ({d['steps']} steps, {params['mesh_grid_spacing'] * 1e9:g} nm grid, "
+          f"{params['mesh_window'] * 1e6:g} um window): {d['seconds']:.2f} s wall, {d['cpu_seconds']:.2f} s CPU, "
+          f"{d['ms_per_step']:.2f} ms/step, peak memory {d['peak_memory_mb']:.1f} MB, "
+          f"{d['mean_iterations']:.1f} CG iterations per solve (mean)")
+    print("stages [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in stages.items()) + " (under cProfile)")
+    print(f"{'steps':>6} {'wall s':>8} {'CPU s':>8} {'ms/step':>8} {'peak MB':>8}")
+    for r in results["vs_steps"]:
+        print(f"{r['steps']:>6} {r['seconds']:8.2f} {r['cpu_seconds']:8.2f} {r['ms_per_step']:8.2f} "
+              f"{r['peak_memory_mb']:8.1f}")
+    print(f"{'grid nm':>7} {'elements':>8} {'wall s':>8} {'CPU s':>8} {'ms/step':>8} {'peak MB':>8} {'CG it':>6}")
+    for r in results["vs_grid"]:
+        print(f"{r['grid_spacing_nm']:>7g} {r['elements_per_step']:>8} {r['seconds']:8.2f} {r['cpu_seconds']:8.2f} "
+              f"{r['ms_per_step']:8.2f} {r['peak_memory_mb']:8.1f} {r['mean_iterations']:6.1f}")
+    print(f"({results['fft']}; numpy {results['numpy']}, scipy {results['scipy']}; "
+          f"OMP_NUM_THREADS={results['threads']})")
+    if args.profile:
+        stats.sort_stats("cumulative").print_stats(15)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
