@@ -227,6 +227,10 @@ def test_default_point_function_is_the_mesh_summary(params, tmp_path):
         assert values[0] == pytest.approx(values[1], rel=1e-9)
         assert values[1] == direct[key]  # bit for bit: same inputs, no global state
     assert result.dataset["friction_force_max"].attrs["units"] == "N"
+    # inputs a point does not set show the value it ran with
+    assert list(result.dataset["input_coating"].values) == ["OTS", "none"]
+    assert list(result.dataset["input_wear"].values) == [1.0, 1.0]
+    assert list(result.dataset["input_steps"].values) == [6, 6]
 
 
 @pytest.mark.parametrize("name, n_points", [("study_load_wear.toml", 30), ("study_design_points.toml", 4)])

@@ -515,7 +515,7 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     if missing:  # cannot happen unless files vanished while running
         raise InputError(f"{len(missing)} point(s) have no result file in '{folder / POINTS_FOLDER}'; rerun with --resume.")
     ordered = [records[p.id] for p in points]
-    dataset = study_dataset(ordered, spec)
+    dataset = study_dataset(ordered, spec, points)
     from .output import write_dataset
 
     write_dataset(dataset, folder, "results")
@@ -556,10 +556,12 @@ def _compute(spec, todo, folder, total, already, scheduler, workers, progress) -
     return computed
 
 
-def study_dataset(records: list[dict], spec: StudySpec | None = None):
+def study_dataset(records: list[dict], spec: StudySpec | None = None, points: list | None = None):
     """The points as an :class:`xarray.Dataset` over dimension ``point`` (inputs, then results).
 
-    Inputs keep the values written in the spec, converted to SI where they carry units.
+    Inputs are in SI. With ``points`` (from :func:`prepare_points`), a point that does not set
+    an input shows the value it ran with (the base parameter, the default coating, ...);
+    without, the values written in the spec (NaN or "" where a point does not set one).
     """
     import xarray as xr
 
@@ -571,6 +573,8 @@ def study_dataset(records: list[dict], spec: StudySpec | None = None):
     input_keys = list(dict.fromkeys(k for r in records for k in r["inputs"]))
     for key in input_keys:
         raw = [r["inputs"].get(key) for r in records]
+        if points is not None:
+            raw = [_effective_input(key, point) for point in points]
         unit = _unit_of(key)
         if key in SPECS and SPECS[key].kind in ("float", "int") or key in ("wear", "seed", "steps"):
             values = np.array([np.nan if v is None else to_si(v, unit, key) for v in raw], dtype=float)
@@ -596,6 +600,24 @@ def study_dataset(records: list[dict], spec: StudySpec | None = None):
     if spec is not None:
         dataset.attrs["point_function"] = spec.function
     return dataset
+
+
+def _effective_input(key: str, point) -> Any:
+    """The value of input ``key`` that ``point`` ran with (SI or text)."""
+    if key == "seed":
+        return point.params["roughness_seed"]
+    if key == "coating":
+        return point.options["coating"] or "none"
+    if key == "roughness":
+        return point.options["roughness"] or "synthetic"
+    if key == "steps":
+        steps = point.options["steps"]
+        if steps is None and "mesh_steps" in point.params:
+            steps = point.params["mesh_steps"]
+        return steps
+    if key in STUDY_KEYS:
+        return point.options.get(key)
+    return point.params[key]
 
 
 def _result_units(spec: StudySpec | None) -> dict[str, str]:
