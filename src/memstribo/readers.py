@@ -461,8 +461,6 @@ def read_topography(path, channel=None, unit=None):
     name = path.name
     if suffix == ".zip":
         return _read_container(path, name, channel, unit)
-    if channel is not None and (suffix in _TEXT or suffix == ".npy"):
-        pass  # single-channel formats: checked below
     if suffix == ".npy":
         result = _read_npy(path, name, unit)
     elif suffix in _TEXT:
