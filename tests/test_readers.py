@@ -19,6 +19,9 @@ from memstribo.roughness import Profile, areal_statistics, line_scan_statistics,
 
 from conftest import AFM
 
+# SurfaceTopography's statistics call its own deprecated aliases (Rq, Sq) internally
+pytestmark = pytest.mark.filterwarnings("ignore:Function/property:DeprecationWarning")
+
 
 def _sig(value, printed):
     """Agreement to the digits printed: half a unit of the last printed digit."""
