@@ -259,7 +259,8 @@ def critical_wear(sweep) -> float | None:
 
 @cites("thesis", "model")
 def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float = 0.185, *, roughness=None,
-                              steps: int | None = None) -> tuple[Coating, dict]:
+                              steps: int | None = None, rtol: float = 1e-3,
+                              max_runs: int = 6) -> tuple[Coating, dict]:
     """Scale the coating's U_vdW so that the fully coated pair (Omega = 0) has COF ``target_cof``.
 
     Parameters
@@ -272,18 +273,24 @@ def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float 
         COF of the fully coated pair [-] (thesis 5.5.3: 0.185).
     roughness, steps
         As for :func:`wear_sweep`.
+    rtol : float
+        Relative tolerance on the COF [-].
+    max_runs : int
+        Meshing-cycle runs allowed.
 
     Returns
     -------
     (Coating, dict)
         The calibrated coating and a record: ``vdw_bond_energy_before``, ``..._after`` [J],
-        ``cof_before``, ``cof_after``, ``cof_elastic`` [-].
+        ``cof_before``, ``cof_after`` [-], ``runs``, ``converged``.
 
     Notes
     -----
-    With the coating U_chem = 0, so COF = cof_vdw + cof_elastic; cof_vdw is proportional to
-    U_vdW at fixed contact, hence one scaling (checked by a second run) calibrates it.
-    Raises :class:`InputError` if cof_elastic alone exceeds the target.
+    With the coating U_chem = 0, so COF = cof_vdw + cof_elastic, and cof_vdw is proportional to
+    U_vdW at a fixed contact; the contact itself barely depends on U_vdW (the vdW adhesion force
+    does, slightly), so U_vdW <- U_vdW (target - cof_elastic) / (COF - cof_elastic) converges in
+    a few meshing-cycle runs (at most ``max_runs``; tolerance ``rtol`` on the cycle's mean COF).
+    Raises :class:`InputError` if cof_elastic alone reaches the target.
     """
     from . import mesh
 
@@ -291,14 +298,20 @@ def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float 
         coating = get_coating(coating)
     if not (0 < target_cof < 10):
         raise InputError(f"target_cof must be a COF between 0 and 10, got {target_cof!r}.")
-    before = mesh.summarize(mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=0.0))
-    cof, cof_vdw, cof_elastic = (float(before[k]) for k in ("cof_mean", "cof_vdw", "cof_elastic"))
-    if cof_elastic >= target_cof or cof_vdw <= 0:
-        raise InputError(f"cannot calibrate U_vdW: the elastic COF {cof_elastic:.3g} alone (vdW part {cof_vdw:.3g}) "
-                         f"does not leave room for the target {target_cof:g}.")
-    factor = (target_cof - cof_elastic) / cof_vdw
-    calibrated = coating.updated(vdw_bond_energy=coating.vdw_bond_energy * factor)
-    after = mesh.summarize(mesh.simulate_mesh(params, roughness, steps=steps, coating=calibrated, wear=0.0))
-    return calibrated, {"vdw_bond_energy_before": coating.vdw_bond_energy,
-                        "vdw_bond_energy_after": calibrated.vdw_bond_energy,
-                        "cof_before": cof, "cof_after": float(after["cof_mean"]), "cof_elastic": cof_elastic}
+    current = coating
+    history = []
+    for _ in range(max_runs):
+        summary = mesh.summarize(mesh.simulate_mesh(params, roughness, steps=steps, coating=current, wear=0.0))
+        cof, cof_elastic = float(summary["cof_mean"]), float(summary["cof_elastic"])
+        history.append((current.vdw_bond_energy, cof))
+        if abs(cof - target_cof) <= rtol * target_cof:
+            break
+        if cof_elastic >= target_cof or cof <= cof_elastic:
+            raise InputError(f"cannot calibrate U_vdW: the elastic COF {cof_elastic:.3g} alone (total {cof:.3g}) "
+                             f"does not leave room for the target {target_cof:g}.")
+        current = current.updated(vdw_bond_energy=current.vdw_bond_energy * (target_cof - cof_elastic)
+                                  / (cof - cof_elastic))
+    return current, {"vdw_bond_energy_before": coating.vdw_bond_energy,
+                     "vdw_bond_energy_after": current.vdw_bond_energy,
+                     "cof_before": history[0][1], "cof_after": history[-1][1], "runs": len(history),
+                     "converged": abs(history[-1][1] - target_cof) <= rtol * target_cof}

@@ -21,6 +21,9 @@ def register(subparsers, parents):
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and figures (COF vs Omega, "
                                                      "friction vs tangential force) to DIR")
     parser.add_argument("--progress", action="store_true", help="show the mesh progress bar on stderr")
+    parser.add_argument("--calibrate", nargs="?", const=0.185, type=float, metavar="COF",
+                        help="instead of a sweep: scale the coating's U_vdW so that the fully coated pair "
+                             "(Omega = 0) has this mean COF (default 0.185, thesis 5.5.3) and print the calibration")
     parser.set_defaults(handler=run)
 
 
@@ -46,6 +49,8 @@ def run(args, params):
     from ..errors import InputError
 
     coating = get_coating(args.coating)
+    if args.calibrate is not None:
+        return _calibrate(args, params, coating)
     wears = parse_wear_list(params["coating_wear"] if args.wear is None else args.wear)
     if args.steps is not None and args.steps < 2:
         raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
@@ -68,7 +73,7 @@ def run(args, params):
     if args.json:
         return CommandResult(values={"coating": coating.name, "points": points})
     keys = ["wear", *SWEEP_VARIABLES]
-    width = 14
+    width = max(len(k) for k in keys) + 2
     lines = ["  " + "".join(f"{k:>{width}}" for k in keys)]
     for point in points:
         lines.append("  " + "".join(f"{format_value(point[k], units.get(k, '')):>{width}}" for k in keys))
@@ -99,3 +104,15 @@ def _write_outputs(sweep, coating, folder) -> list[str]:
     ax.legend()
     written += save_figure(fig, folder, "friction_vs_tangential")
     return ["  wrote " + ", ".join(str(p) for p in written)]
+
+
+def _calibrate(args, params, coating):
+    from ..coating import calibrate_vdw_bond_energy
+
+    calibrated, record = calibrate_vdw_bond_energy(params, coating, args.calibrate, steps=args.steps)
+    values = {"coating": coating.name, "target_cof": args.calibrate, **record,
+              "factor": record["vdw_bond_energy_after"] / record["vdw_bond_energy_before"]}
+    units = {}  # U_vdW [J] printed as plain numbers: 6.863e-22 reads better than 0.0006863 aJ
+    notes = [f"  put vdw_bond_energy = {calibrated.vdw_bond_energy:.4g} J into coatings/{coating.name.lower()}.toml "
+             "to make it the default"]
+    return CommandResult(values=values, units=units, title=f"calibration of {coating.name}'s U_vdW", notes=notes)
