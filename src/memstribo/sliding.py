@@ -382,14 +382,16 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
     out = {key: [] for key in ("bonds_chem", "bonds_vdw", "adhesion", "block_adhesion", "normal", "approach",
                                "residual", "block_force", "adh_c", "bulk_c", "shrink", "at_c", "at_f", "rigid",
                                "contacts")}
-    chunks = range(0, n_steps, _CHUNK)
+    bar = None
     if progress:
         from tqdm import tqdm
 
-        chunks = tqdm(chunks, desc=f"slide {mode}", unit="chunk", leave=False)
+        bar = tqdm(total=n_steps, desc=f"slide {mode}", unit="step", unit_scale=True, leave=False)
     full_chem = friction.full_overlap_bond_count(w_at, d_chem)
     full_vdw = friction.full_overlap_bond_count(w_adh, d_chem)
-    for start in chunks:
+    for start in range(0, n_steps, _CHUNK):
+        if bar is not None and start:
+            bar.update(_CHUNK)
         pos = positions[start:start + _CHUNK] + x[0]
         left = pos[:, None, None] + centres[None] - w_at / 2  # (N, n, m)
         peak = _footprint_max(x, z, table, left, left + w_at)
@@ -425,6 +427,8 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
         out["at_f"].append(spread(state.atomic_force / m))
         out["rigid"].append(spread(state.rigid))
         out["contacts"].append(m * touching.sum(axis=(-2, -1)))
+    if bar is not None:
+        bar.close()
     r = {key: np.concatenate(values, axis=0) for key, values in out.items()}
     if mode == "fixed-gap" and not np.any(r["contacts"]):
         raise InputError(f"gap {tips:.4g} m: no atomic block touches the counter profile anywhere on the slide "
