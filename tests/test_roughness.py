@@ -333,6 +333,19 @@ def test_cli_map_resample(cli):
     assert out["Sq"] == pytest.approx(8.094e-9, abs=0.5e-12)  # areal values are of the map as measured
 
 
+def test_cli_save_profile_round_trip(cli, tmp_path):
+    target = tmp_path / "out" / "thesis.txt"
+    out = cli.json("roughness", "thesis", "--resample", "10 nm", "--save-profile", target)
+    from memstribo.readers import read_topography
+
+    again = read_topography(target)
+    assert again.n_points == out["n_points"] and again.sample_spacing == pytest.approx(10e-9, rel=1e-12)
+    assert r.profile_statistics(again).Rq == pytest.approx(out["Rq"], rel=1e-12)
+    assert "SYNTHETIC" in target.read_text().splitlines()[0]
+    code, _, err = cli("roughness", "thesis", "--save-profile", tmp_path / "x.png")
+    assert code == 2 and "must end in .txt or .csv" in err and "Traceback" not in err
+
+
 def test_cli_text_output_has_units(cli):
     code, text, err = cli("roughness", AFM / "opdx-3.opdx")
     assert code == 0 and "Rq" in text and "2.826 nm" in text

@@ -32,7 +32,7 @@ import numpy as np
 from .errors import DataFileError, InputError
 from .roughness import UNIFORM_RTOL, Profile
 
-__all__ = ["SurfaceMap", "read_topography", "SUPPORTED_EXTENSIONS", "LENGTH_UNITS"]
+__all__ = ["SurfaceMap", "read_topography", "write_profile", "SUPPORTED_EXTENSIONS", "LENGTH_UNITS"]
 
 #: length units accepted by ``unit`` and their size in metres
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "μm": 1e-6, "nm": 1e-9, "A": 1e-10, "Å": 1e-10,
@@ -481,3 +481,41 @@ def read_topography(path, channel=None, unit=None):
             raise DataFileError(f"{path}: no channel '{channel}'; this file has one channel: "
                                 f"'{getattr(result, 'channel', 'default') or 'default'}' (ch0).")
     return result
+
+
+def write_profile(profile: Profile, path) -> Path:
+    """Write a profile as x-z text in metres (``#`` header with name and provenance).
+
+    The file reads back with :func:`read_topography` (same numbers to 17 significant digits).
+
+    Parameters
+    ----------
+    profile : Profile
+        The profile (x, z [m]).
+    path : str or pathlib.Path
+        Output file (``.txt`` or ``.csv``; folders are created).
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+    """
+    from .output import ensure_directory
+
+    if not isinstance(profile, Profile):
+        raise InputError("write_profile needs a Profile (a map: write one of its line_scans()).")
+    path = Path(path)
+    if path.suffix.lower() not in (".txt", ".csv"):
+        raise InputError(f"profile output '{path}' must end in .txt or .csv.")
+    ensure_directory(path.parent)
+    kind = "SYNTHETIC" if profile.synthetic else "measured"
+    header = (f"{profile.name} ({kind})\nsource: {profile.source}\n"
+              f"{profile.n_points} points; columns: x [m], height [m] (written by memstribo)")
+    delimiter = "," if path.suffix.lower() == ".csv" else " "
+    tmp = path.with_name(path.name + ".tmp")
+    try:
+        np.savetxt(tmp, np.column_stack([profile.x, profile.z]), fmt="%.17g", delimiter=delimiter, header=header)
+        tmp.replace(path)
+    except OSError as exc:
+        raise InputError(f"cannot write '{path}': {exc.strerror}.") from None
+    return path

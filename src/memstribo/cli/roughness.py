@@ -24,6 +24,9 @@ def register(subparsers, parents):
     parser.add_argument("--resample", metavar="STEP", help="PCHIP-resample to this step first ('39 nm' or metres)")
     parser.add_argument("--channel", metavar="NAME", help="channel name or chN; for a .zip a member name (or part)")
     parser.add_argument("--unit", metavar="U", help="unit of x and heights for files that do not say (m, mm, um, nm)")
+    parser.add_argument("--save-profile", metavar="FILE",
+                        help="write the profile as analysed (after --resample, before levelling) to FILE (.txt/.csv, "
+                             "x and height in m); for a map, its middle scan line")
     parser.set_defaults(handler=run)
 
 
@@ -87,4 +90,16 @@ def run(args, params):
             notes.append("non-uniform sampling: point-wise statistics, slopes between neighbouring points; "
                          "--resample STEP gives a uniform grid.")
     values.update(synthetic=bool(getattr(surface, "synthetic", False)), name=surface.name, source=surface.source)
+    if args.save_profile:
+        from ..readers import write_profile
+
+        if isinstance(surface, SurfaceMap):
+            scans = surface.line_scans()
+            saved = scans[len(scans) // 2]
+            if step is not None:
+                saved = rough.resample_pchip(saved, step)
+        else:
+            saved = profile
+        values["saved_profile"] = str(write_profile(saved, args.save_profile))
+        notes.append(f"profile written to {values['saved_profile']} ({saved.name})")
     return CommandResult(values=values, units=_UNITS, title=f"roughness of {surface.name}", notes=notes)
