@@ -195,3 +195,8 @@ def test_cli_bad_input(cli, argv, message):
     code, out, err = cli("slide", *argv)
     assert code == 2
     assert "Traceback" not in err and message in err
+
+
+def test_too_many_steps(params_m):
+    with pytest.raises(InputError, match="more than 1e6"):
+        sliding.slide_single(params_m, distance=1e-3)

@@ -95,8 +95,9 @@ def _positions(distance, step):
     n = int(round(distance / step))
     if abs(n * step - distance) > 1e-9 * max(step, distance):
         n = int(math.ceil(distance / step))
-    if n > 50_000_000:
-        raise InputError(f"{n} steps: too many; use a larger step (sliding_step) or a shorter distance.")
+    if n > 1_000_000:
+        raise InputError(f"{n} steps: more than 1e6 (the per-block time series would not fit in memory); "
+                         "use a larger step (--step, sliding_step) or a shorter distance.")
     positions = np.linspace(0.0, distance, n + 1) if n > 0 else np.zeros(1)
     return positions
 
