@@ -102,7 +102,12 @@ def main(argv: list[str] | None = None) -> int:
               file=sys.stderr)
         return 1
     if result is not None:
-        print(dumps_json(result.values) if args.json else result.to_text())
+        try:
+            print(dumps_json(result.values) if args.json else result.to_text())
+            sys.stdout.flush()
+        except BrokenPipeError:  # e.g. `memstribo ... --json | head`: the reader has gone, not an error
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
     return 0
 
 
