@@ -132,12 +132,21 @@ def _normalised_surface_stress(degree: float, friction_coefficient: float, poiss
     n = int(round(2 * half / h)) | 1  # odd: a grid line through the centre
     coords = (np.arange(n) - (n - 1) / 2) * h
     yy, xx = np.meshgrid(coords, coords, indexing="ij")
+    # p = sqrt(z) F(z), z = 1 - rho^2, with F = 2F1(1 - d/2, 1; 3/2; z) smooth: tabulate F once
+    z_table = np.linspace(0.0, 1.0, 4001)
+    f_table = _normalised_pressure(np.sqrt(1.0 - z_table), degree) / np.sqrt(np.where(z_table > 0, z_table, 1.0))
+    f_table[0] = 2 * f_table[1] - f_table[2]
+
+    def shape(rho):
+        z = np.clip(1.0 - rho * rho, 0.0, None)
+        return np.sqrt(z) * np.interp(z, z_table, f_table)
+
     # cell-averaged pressure (the sqrt edge is averaged on a 4 x 4 sub-grid)
     sub = (np.arange(4) + 0.5) / 4 - 0.5
     pressure = np.zeros((n, n))
     for sx in sub:  # 16 evaluations of a vectorised field
         for sy in sub:
-            pressure += _normalised_pressure(np.hypot(xx + sx * h, yy + sy * h), degree)
+            pressure += shape(np.hypot(xx + sx * h, yy + sy * h))
     pressure /= sub.size ** 2
     traction = friction_coefficient * pressure
     kernels = _cell_kernels(n, h, poisson_ratio)
@@ -166,7 +175,7 @@ def _normalised_surface_stress(degree: float, friction_coefficient: float, poiss
 
 
 def surface_stresses(xi, degree: float, friction_coefficient: float, poisson_ratio: float,
-                     cells: int = 200) -> dict:
+                     cells: int = 400) -> dict:
     """Surface stresses / p_scale along y = 0 under a power-law pressure and traction mu p [-].
 
     Parameters
@@ -210,7 +219,7 @@ def surface_stresses(xi, degree: float, friction_coefficient: float, poisson_rat
 
 @cites("goryacheva_torskaya_2003", "hamilton_1983", "johnson_1985")
 def normalised_principal_shear(xi, degree: float, friction_coefficient: float, poisson_ratio: float,
-                               cells: int = 200) -> np.ndarray:
+                               cells: int = 400) -> np.ndarray:
     """Surface principal shear stress tau_1 / p_scale along x through the centre of a power-law contact [-].
 
     Parameters

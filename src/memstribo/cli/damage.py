@@ -88,7 +88,8 @@ def run(args, params):
         "damage_exponent": m,
         "peaks_per_cycle": s["peaks_per_cycle"],
     }
-    units = {"omega_over_c1_max": f"Pa^{m:g}", "location": "m", "damage_coefficient": f"Pa^-{m:g}"}
+    power = "" if m == 1 else f"^{m:g}"
+    units = {"omega_over_c1_max": f"Pa{power}", "location": "m", "damage_coefficient": f"Pa^-{m:g}"}
     if c1_known:
         values.update({
             "damage_coefficient": s["damage_coefficient"],
