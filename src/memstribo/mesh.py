@@ -290,7 +290,8 @@ def _heights(profile, coordinate):
 # --------------------------------------------------------------------------------------------
 # the cycle
 # --------------------------------------------------------------------------------------------
-def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, progress, pbar):
+def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar):
+    """Rough contact of every step of one row: pressure, deformed gap and solver info."""
     from .contact import solve_line_contact
 
     grid = setup.grid
@@ -317,12 +318,12 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, progr
     return pressure, gap, info
 
 
-def _lattice(n_steps, roll, sign, w_adh, grid_half, extra):
-    """Material indices k of the nanoblocks whose footprint meets the window, per step (slots)."""
-    # block k of a flank spans roll coordinates [k w_adh, (k+1) w_adh); its centre is at x = sign*(s - sigma)
+def _lattice(roll, w_adh, grid_half):
+    """Material indices k of the nanoblocks whose footprint meets the window, per step (steps, slots)."""
+    # block k of a flank spans roll coordinates [k w_adh, (k+1) w_adh)
     lo = roll - grid_half - w_adh
     k0 = np.floor(lo / w_adh).astype(int)
-    slots = int(math.ceil((2 * grid_half + 2 * w_adh) / w_adh)) + 1 + extra
+    slots = int(math.ceil((2 * grid_half + 2 * w_adh) / w_adh)) + 1
     return k0[:, None] + np.arange(slots)[None, :]
 
 
@@ -376,12 +377,11 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                                               "iterations", "window_exceeded", "approach")}
     block_loads = []
     for row in range(n_rows_solved):
-        shear = None
         if beta != 0.0 and mu_previous is not None:
-            shear = "pending"
-        pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, progress, pbar) \
-            if shear is None else _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
+            pressure, gap, info = _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
                                                     slip, pbar)
+        else:
+            pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, pbar)
         # window check: the contact must stay clear of the window's ends (5 % margin each side)
         edge = max(1, grid.size // 20)
         out["window_exceeded"] += (pressure[:, :edge].any(axis=1) | pressure[:, -edge:].any(axis=1))
@@ -409,8 +409,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
             return values.reshape(x.shape)
 
         # lattices: pinion block k centred at sigma = (k + 1/2) w_adh -> x = s1 - sigma; gear: x = sigma - s2
-        k1 = _lattice(n_steps, s1, -1, w_adh, half, 0)
-        k2 = _lattice(n_steps, s2, +1, w_adh, half, 0)
+        k1 = _lattice(s1, w_adh, half)
+        k2 = _lattice(s2, w_adh, half)
         x1 = s1[:, None] - (k1 + 0.5) * w_adh
         x2 = (k2 + 0.5) * w_adh - s2[:, None]
         flank_states = []
@@ -508,12 +508,12 @@ def _interlocking(k, comp_at, comp_adh, stiffness):
 def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar):
     """Contacts with the normal gap change of the friction traction mu p (dissimilar materials)."""
     # first the frictionless solution gives p; the traction term uses it (one fixed-point sweep per pass)
-    pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, False, None)
+    pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None)
     dx = params["mesh_grid_spacing"]
     integral = np.cumsum(pressure, axis=1) * dx
     integral -= integral.mean(axis=1, keepdims=True)
     shear = (2 * beta / modulus) * (mu * np.sign(slip))[:, None] * integral
-    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, False, pbar)
+    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, pbar)
 
 
 def _geometry(params):
