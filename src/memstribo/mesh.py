@@ -529,7 +529,7 @@ def _geometry(params):
                                atomic_per_side=params["atomic_per_side"], bulk_height=params["bulk_height"])
 
 
-@cites("thesis", "model", "johnson_1985", "polonsky_keer_1999")
+@cites("thesis", "model", "johnson_1985", "polonsky_keer_1999", "hu_1986")
 def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False):
     """Friction, adhesion and COF of two rough silicon teeth over one meshing cycle (thesis 4.6, 4.9).
 

@@ -87,6 +87,10 @@ REFERENCES: dict[str, str] = {
         "J. Vac. Sci. Technol. B 15 (1997) 1-20. doi:10.1116/1.589247"
     ),
     "krajcinovic_1996": "D. Krajcinovic, Damage Mechanics, North-Holland (Elsevier), 1996.",
+    "hu_1986": (
+        "J. Z. Hu, L. D. Merkle, C. S. Menoni, I. L. Spain, 'Crystal data for high-pressure phases of silicon', "
+        "Phys. Rev. B 34 (1986) 4679-4684. doi:10.1103/PhysRevB.34.4679"
+    ),
 }
 
 _used: dict[str, None] = {}
