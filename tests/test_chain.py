@@ -95,6 +95,12 @@ def test_mesh_stages_when_the_mesh_model_is_installed(small_run):
     loads = summaries["load_sweep"]
     assert loads["normal_load"] == pytest.approx([25e-6, 150e-6])
     assert loads["energy_dissipated"][1] > loads["energy_dissipated"][0]  # more load, more dissipation (4.9.3)
+    if "sliding" in summaries:
+        single = summaries["sliding"]["single"]
+        # thesis 2.6.2: one nanoblock on a flat, COF constant in time; the split adds up
+        assert single["cof"] == pytest.approx(single["cof_chemical"] + single["cof_vdw"] + single["cof_elastic"],
+                                              rel=1e-9)
+        assert single["fraction_chemical"] + single["fraction_vdw"] + single["fraction_elastic"] == pytest.approx(1)
     if "coated" in summaries:
         # a coating forms no chemical bonds: less friction than bare silicon (thesis 5.4)
         assert summaries["coated"]["energy_chemical"] == 0.0
@@ -141,6 +147,7 @@ def test_run_options_from_a_config_table(tmp_path):
     ({"mesh_roughness": 3}, "mesh_roughness"),
     ({"cycles_observed": -5}, "cycles > 0"),
     ({"areas": [1.5]}, "whole multiples"),
+    ({"sliding_distance": "-1 nm"}, "length > 0"),
 ])
 def test_bad_run_tables_raise_input_error(table, match, tmp_path):
     with pytest.raises(InputError, match=match):

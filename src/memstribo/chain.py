@@ -7,6 +7,8 @@ as soon as they exist, so an interrupted run loses nothing already computed. The
 
 1. ``roughness``   the default profile (seeded, labelled synthetic) and any measured file;
 2. ``geometry``    nanoblock geometry, from the parameters and derived from each profile;
+   ``sliding``     one nanoblock on a flat (2.6.2) and the hierarchical structure on the rough profile
+                   under a fixed load (3.4.2, 3.6);
 3. ``gear``        involute pair, Hertz contact at the pitch point, tangential force F_t;
 4. ``mesh``        the bare-silicon meshing cycle (:func:`memstribo.mesh.simulate_mesh`);
 5. ``load_sweep``  COF and dissipated energy versus external load (thesis 4.9.3);
@@ -45,6 +47,7 @@ __all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain",
 STAGES: dict[str, str] = {
     "roughness": "Roughness of the tooth surfaces",
     "geometry": "Nanoblock geometry",
+    "sliding": "Sliding of nanoblocks on a flat and on the rough surface",
     "gear": "Gear pair and macroscopic contact",
     "mesh": "Bare silicon meshing cycle",
     "load_sweep": "COF and dissipated energy versus external load",
@@ -56,7 +59,7 @@ STAGES: dict[str, str] = {
 
 #: What each stage needs.
 DEPENDS: dict[str, tuple[str, ...]] = {
-    "roughness": (), "geometry": ("roughness",), "gear": (), "mesh": ("roughness",),
+    "roughness": (), "geometry": ("roughness",), "sliding": ("roughness",), "gear": (), "mesh": ("roughness",),
     "load_sweep": ("roughness",), "area_sweep": ("roughness",), "coated": ("roughness",),
     "wear_sweep": ("roughness",), "damage": ("coated",),
 }
@@ -70,6 +73,7 @@ _RUN_KEYS = {
     "roughness_files": "measured profiles / AFM files to analyse besides the default synthetic profile",
     "mesh_roughness": "which profile the meshing stages use: 'synthetic' (default) or the index of roughness_files",
     "stages": "stages to run (default: all)",
+    "sliding_distance": "sliding distance of the structure in the sliding stage (default: the model's)",
     "cycles_observed": "observed coating life [meshing cycles] to calibrate c1 (default: none)",
 }
 
@@ -98,6 +102,8 @@ class RunOptions:
         Stages to run.
     cycles_observed : float or None
         An observed coating life [cycles] to calibrate the damage constant c1.
+    sliding_distance : float or None
+        Sliding distance [m] of the structure in the ``sliding`` stage (None: the model's default).
     """
 
     steps: int | None = None
@@ -109,6 +115,7 @@ class RunOptions:
     mesh_roughness: Any = "synthetic"
     stages: tuple[str, ...] = tuple(STAGES)
     cycles_observed: float | None = None
+    sliding_distance: float | None = None
 
     @classmethod
     def from_table(cls, table: Mapping[str, Any] | None, base_folder: str | Path | None = None) -> "RunOptions":
@@ -192,6 +199,11 @@ class RunOptions:
             if not cycles > 0:
                 raise InputError(f"[run] cycles_observed = {table['cycles_observed']!r}: give a number of cycles > 0.")
             options["cycles_observed"] = cycles
+        if "sliding_distance" in table:
+            distance = to_si(table["sliding_distance"], "m", "sliding_distance")
+            if not distance > 0:
+                raise InputError(f"[run] sliding_distance = {table['sliding_distance']!r}: give a length > 0.")
+            options["sliding_distance"] = distance
         return cls(**options)
 
 
@@ -390,6 +402,31 @@ def plot_cycle(dataset, tangential_force=None, title=""):
     return figure
 
 
+def plot_sliding(dataset, title="", max_points=4000):
+    """Forces and COF split over the sliding distance (thesis Figures 2-20, 3-22 to 3-27).
+
+    Long slides are drawn with every k-th step (k chosen so that at most ``max_points`` are drawn).
+    """
+    from .output import new_figure
+
+    stride = max(1, int(math.ceil(dataset.sizes["step"] / max_points)))
+    data = dataset.isel(step=slice(None, None, stride))
+    distance = np.asarray(data["sliding_distance"].values) * 1e9
+    figure, (top, bottom) = new_figure(2, 1, figsize=(7, 5.5), sharex=True)
+    for name, style in (("friction_force", "-"), ("adhesion_force", "--"), ("normal_force", ":")):
+        top.plot(distance, np.asarray(data[name].values) * 1e6, style, lw=0.8, label=name.replace("_", " "))
+    top.set_ylabel("force [µN]")
+    top.legend(fontsize=8)
+    top.set_title(title + (f" (every {stride}th step drawn)" if stride > 1 else ""), fontsize=10)
+    for name in ("cof", "cof_chemical", "cof_vdw", "cof_elastic"):
+        bottom.plot(distance, data[name].values, lw=0.8, label=name.replace("_", " "))
+    bottom.set_ylabel("COF [-]")
+    bottom.set_xlabel("sliding distance [nm]")
+    bottom.legend(fontsize=8)
+    figure.tight_layout()
+    return figure
+
+
 def plot_energy(dataset, title=""):
     """Energy dissipated per step by mechanism over the meshing cycle (Figure 4-47)."""
     from .output import new_figure
@@ -554,6 +591,30 @@ class RunChain:
         self._json(summary, "nanoblock_geometry")
         self.results["geometry"] = rows["parameters"]
         self.summaries["geometry"] = summary
+
+    def sliding(self):
+        """A single nanoblock on a flat at the external load (2.6.2) and the hierarchical structure sliding on
+        the rough profile under a fixed load (3.4.2, 3.6): friction, COF and its split over the distance."""
+        sliding = _module("sliding")
+        summaries = {}
+        for model, profile, distance, stem in (
+                ("single", None, None, "sliding_single"),
+                ("fixed-load", self.results["mesh_profile"], self.options.sliding_distance, "sliding_fixed_load")):
+            dataset = sliding.slide(model, self.params, profile, distance=distance)
+            stored = dataset
+            if dataset.sizes["step"] > 20000:  # long slides: keep the per-step series (not per block), NetCDF only
+                stored = dataset.drop_vars([n for n, v in dataset.data_vars.items() if v.dims != ("step",)])
+            self._files(write_dataset(stored, self.folder / "data", stem, csv=stored.sizes["step"] <= 20000))
+            summary = sliding.summarize(dataset)
+            summaries[model] = dict(summary.__dict__)
+            title = ("one nanoblock on a flat" if model == "single" else
+                     "hierarchical structure on the rough profile, fixed load")
+            self._figure(plot_sliding(dataset, title), stem,
+                         f"Sliding of {title} at {self.params['normal_load'] * 1e6:.4g} µN: friction, adhesion and "
+                         f"normal force (top), COF and its chemical / vdW / elastic split (bottom); mean COF "
+                         f"{summary.cof:.3g}, chemical share of the dissipated energy {summary.fraction_chemical:.0%} "
+                         f"(thesis {'2.6.2' if model == 'single' else '3.6'}).")
+        self.summaries["sliding"] = summaries
 
     def gear(self):
         """Gear pair geometry, Hertz contact at the pitch point and F_t (4-27)."""
@@ -739,4 +800,5 @@ class RunChain:
 
 def options_for_test(**changes) -> RunOptions:
     """Small, fast options (few steps and sweep points) exercising every stage."""
-    return replace(RunOptions(steps=8, loads=(25e-6, 150e-6), areas=(1.0, 4.0), wear=(0.0, 1.0)), **changes)
+    return replace(RunOptions(steps=8, loads=(25e-6, 150e-6), areas=(1.0, 4.0), wear=(0.0, 1.0),
+                              sliding_distance=0.5e-6), **changes)
