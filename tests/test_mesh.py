@@ -265,3 +265,16 @@ def test_cli_mesh(cli, tmp_path, afm_dir):
     assert code == 2 and "--coating" in err and "Traceback" not in err
     code, out, err = cli("mesh", "--steps", "11", "--set", "normal_load=1 N")
     assert code == 2 and "elastic range" in err and "Traceback" not in err
+
+
+def test_lubricated_load_sharing(params):
+    ds = simulate_mesh(params.updated({"load_sharing": "lubricated"}), steps=21)
+    load = params["normal_load"]
+    assert ds.normal_force.values[0] == pytest.approx(load / 3, rel=1e-9)
+    assert ds.normal_force.values[-1] == pytest.approx(load / 3, rel=1e-9)
+    assert ds.normal_force.values.max() == pytest.approx(load)
+
+
+def test_progress_bar_on_stderr(params, capsys):
+    simulate_mesh(params, steps=11, progress=True)
+    assert "meshing cycle" in capsys.readouterr().err

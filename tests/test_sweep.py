@@ -66,3 +66,9 @@ def test_cli_sweep_bad_values_exit_2(cli):
     assert code == 2 and "STEP must be positive" in err and "Traceback" not in err
     code, out, err = cli("sweep", "area", "--values", "0.5", "--steps", STEPS)
     assert code == 2 and "whole multiples" in err and "Traceback" not in err
+
+
+def test_cli_sweep_progress_bar_on_stderr(cli):
+    code, out, err = cli("sweep", "load", "--values", "25uN", "--steps", "11", "--progress", "--json")
+    assert code == 0 and "sweep load" in err
+    assert out.lstrip().startswith("{")  # stdout stays one JSON object
