@@ -114,6 +114,10 @@ def test_summary_keys_and_values(base):
     assert summary["cof_chemical"] + summary["cof_vdw"] + summary["cof_elastic"] == pytest.approx(
         summary["energy_dissipated"] / work, rel=1e-12)
     assert summary["unconverged_steps"] == 0
+    assert summary["steps_above_elastic_limit"] == 0  # rough peaks ~1.4 GPa < 11.3 GPa
+    lowered = ds.copy()
+    lowered.attrs["elastic_limit_pressure"] = 0.5 * summary["max_contact_pressure"]
+    assert summarize(lowered)["steps_above_elastic_limit"] > 0
     assert summary["stiction_margin"] == pytest.approx(float(ds.stiction_margin.min()))
     # the cycle's vdW COF is of the order of the thesis's (~0.9 total at 25 uN); see docs/mesh.md
     assert 0.3 < summary["cof_vdw"] < 1.5

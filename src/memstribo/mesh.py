@@ -82,6 +82,7 @@ SUMMARY_UNITS = {
     "tangential_force": "N", "stiction": "", "stiction_margin": "N", "steps": "", "sliding_distance": "m",
     "energy_dissipated": "J", "energy_chemical": "J", "energy_vdw": "J", "energy_elastic": "J",
     "unconverged_steps": "", "window_exceeded_steps": "", "max_contact_pressure": "Pa",
+    "steps_above_elastic_limit": "",
 }
 
 _GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
@@ -693,6 +694,7 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "grid_spacing": params["mesh_grid_spacing"],
         "window": setup.grid.size * params["mesh_grid_spacing"],
         "tangential_force_total": f_t,
+        "elastic_limit_pressure": params["elastic_limit_pressure"],
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
@@ -734,6 +736,8 @@ def summarize(dataset) -> dict:
         "unconverged_steps": int((~np.asarray(dataset["contact_converged"], dtype=bool)).sum()),
         "window_exceeded_steps": int(np.asarray(dataset["window_exceeded"], dtype=bool).sum()),
         "max_contact_pressure": float(dataset["max_contact_pressure"].max()),
+        "steps_above_elastic_limit": int((np.asarray(dataset["max_contact_pressure"])
+                                          > dataset.attrs.get("elastic_limit_pressure", np.inf)).sum()),
     }
 
 

@@ -81,6 +81,10 @@ def run(args, params):
     if summary["window_exceeded_steps"]:
         notes.append(f"  WARNING: the contact reached the ends of the window in {summary['window_exceeded_steps']} "
                      "step(s): raise mesh_window.")
+    if summary["steps_above_elastic_limit"]:
+        notes.append(f"  WARNING: the rough contact's peak pressure exceeds the elastic limit of silicon "
+                     f"({dataset.attrs['elastic_limit_pressure'] / 1e9:.3g} GPa) in {summary['steps_above_elastic_limit']} "
+                     "step(s): the elastic model is stretched there.")
     if summary["stiction"]:
         notes.append("  stiction: the friction force exceeds the pair's share of F_t in part of the cycle.")
     if args.out:
