@@ -172,3 +172,12 @@ def test_cli_gear_set_and_bad_input(cli):
     assert values["pressure_angle"] == pytest.approx(math.radians(25))
     code, out, err = cli("gear", "--set", "teeth_pinion=12")
     assert code == 2 and "interference" in err and "Traceback" not in err
+
+
+def test_cli_gear_outer_diameters(cli):
+    values = cli.json("gear", "--outer-diameters", "81um,303um")
+    assert values["module"] == pytest.approx(3.878787878787879e-6, rel=1e-12)
+    code, out, err = cli("gear", "--outer-diameters", "81um")
+    assert code == 2 and "two lengths" in err and "Traceback" not in err
+    code, out, err = cli("gear", "--outer-diameters=-81um,303um")
+    assert code == 2 and "Traceback" not in err

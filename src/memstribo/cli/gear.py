@@ -13,7 +13,23 @@ def register(subparsers, parents):
     parser = subparsers.add_parser(
         NAME, parents=parents, help=HELP, description=HELP + ". Change the pair with --set teeth_pinion=..., "
         "teeth_gear, module, pressure_angle ('20 deg'), face_width, addendum_coefficient, normal_load, drive_torque.")
+    parser.add_argument("--outer-diameters", metavar="D1,D2",
+                        help="tip diameters of pinion and gear ('81um,303um'): sets the module of a standard pair, "
+                             "m = (D1 + D2) / (z1 + z2 + 4 h_a)")
     parser.set_defaults(handler=run)
+
+
+def _module_from_option(text, params):
+    from ..errors import InputError
+    from ..gear import module_from_outer_diameters
+    from ..units import to_si
+
+    parts = [p for p in text.split(",") if p.strip()]
+    if len(parts) != 2:
+        raise InputError(f"--outer-diameters expects two lengths D1,D2 (e.g. 81um,303um), got {text!r}.")
+    d1, d2 = (to_si(p, "m", "--outer-diameters") for p in parts)
+    return module_from_outer_diameters(d1, d2, params["teeth_pinion"], params["teeth_gear"],
+                                       params["addendum_coefficient"])
 
 
 def gear_summary(params) -> tuple[dict, dict]:
@@ -53,6 +69,9 @@ def gear_summary(params) -> tuple[dict, dict]:
 def run(args, params):
     import math
 
+    if args.outer_diameters:
+        params = params.updated({"module": _module_from_option(args.outer_diameters, params)},
+                                origin="--outer-diameters")
     values, units = gear_summary(params)
     notes = [
         f"  pressure angle {math.degrees(values['pressure_angle']):.4g} deg; radii as [pinion, gear]; positions c on "
