@@ -243,3 +243,37 @@ def test_cli_damage_bad_input(cli, argv, match):
     code, out, err = cli("damage", *argv)
     assert code == 2
     assert match in err and "Traceback" not in err
+
+
+# --- from the meshing cycle ---------------------------------------------------------------------------------
+
+
+def test_mesh_damage_from_block_loads(params):
+    from memstribo import mesh
+    from memstribo.coating import get_coating
+    from memstribo.damage import mesh_damage
+
+    dataset = mesh.simulate_mesh(params, steps=24, coating=get_coating("OTS"), wear=0.0)
+    result = mesh_damage(dataset, params)
+    gear_blocks = int((dataset["block_flank"].values == "gear").sum())
+    assert result.omega_over_c1.shape[:2] == (gear_blocks, 9)
+    assert result.peaks_per_cycle.sum() > 0
+    assert result.maximum["corner"] > result.maximum["central"] > 0
+    assert np.all(result.omega_over_c1 >= 0)
+    # a block that never carries load is never damaged
+    assert np.all(result.per_asperity[result.peaks_per_cycle == 0] == 0)
+    with pytest.raises(InputError, match="block_load"):
+        mesh_damage(dataset.drop_vars("block_load"), params)
+
+
+def test_cli_damage_from_the_mesh_with_c1(cli, tmp_path):
+    out = cli.json("damage", "--steps", "24", "--wear-points", "2", "--set", "damage_coefficient=1e-15",
+                   "--out", tmp_path)
+    assert set(out["omega_over_c1_max"]) == {"corner", "side", "central"}
+    assert out["cycles_to_failure"] == pytest.approx(1 / (1e-15 * out["omega_over_c1_max"]["corner"]))
+    assert "cycles_to_stiction" in out
+    assert out["life_ratio_corner_to_central"] < 1
+    for stem in ("damage_profile", "damage_history", "coating_wear"):
+        assert (tmp_path / f"{stem}.nc").exists() and (tmp_path / f"{stem}.csv").exists()
+    for stem in ("damage_profile", "damage_map", "damage_history", "pressure_and_tau1"):
+        assert (tmp_path / f"{stem}.png").exists() and (tmp_path / f"{stem}.svg").exists()

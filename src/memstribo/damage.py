@@ -202,7 +202,11 @@ def surface_stresses(xi, degree: float, friction_coefficient: float, poisson_rat
     Boussinesq and Cerruti point-load solutions (Johnson 1985, (3.19), (3.21)), evaluated by
     FFT on square cells; the in-plane strains are their central differences, and Hooke's law
     with the known surface tractions (sigma_zz = -p, tau_xz = -mu p) gives the surface
-    stresses. d = 2 reproduces Hertz's closed-form surface stresses (tests: within 1 %).
+    stresses. d = 2 reproduces Hertz's closed-form surface stresses within 2e-3 p0 away from the
+    contact edge, and a Hertzian traction the sliding-sphere sigma_x of Johnson (1985, 7.2)
+    within 0.2 %. The peak of tau_1 at the contact edge converges as about h^0.6 with the cell
+    size h: 200 cells give 0.1446, 400 cells 0.1487, 800 cells 0.1511 (d = 4, mu = 0.1,
+    nu = 0.23), about 4 % below the extrapolated limit at the default 400.
     """
     if int(cells) < 20:
         raise InputError(f"cells must be >= 20, got {cells!r}.")
@@ -720,7 +724,11 @@ def run_damage(params, mesh_dataset=None, *, loads=None, wear_sweep=None, cycles
         summary["critical_wear"] = crit
     datasets = {"damage_profile": _profile_dataset(result)}
     if c1 is not None:
-        lives = cycles_to_failure(per_asperity, c1)
+        # Omega counts the coating where the teeth touch: the asperities of the nanoblocks that carry
+        # load in the cycle (a block never loaded neither wears nor adds friction; the mesh's Omega is
+        # a fraction of bare blocks spread evenly over the flank, i.e. also over the touching ones)
+        loaded = result.peaks_per_cycle > 0
+        lives = cycles_to_failure(per_asperity[loaded], c1)
         summary["cycles_to_failure"] = float(np.min(lives))
         summary["cycles_to_failure_by_position"] = {
             p: float(np.min(lives[:, result.classes == p])) for p in POSITIONS if (result.classes == p).any()}
