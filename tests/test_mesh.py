@@ -282,3 +282,20 @@ def test_lubricated_load_sharing(params):
 def test_progress_bar_on_stderr(params, capsys):
     simulate_mesh(params, steps=11, progress=True)
     assert "meshing cycle" in capsys.readouterr().err
+
+
+def test_smooth_teeth_reproduce_hertz(params):
+    """Flat roughness: the contact solved at every step is the Hertz line contact (4-22..4-26).
+
+    Tolerances: contact width within two 2 nm elements of 2a; peak pressure within 2 % of p0
+    (piecewise-constant elements); the vdW and chemical parts still work on the smooth gap.
+    """
+    from memstribo.roughness import Profile
+
+    flat = Profile(x=np.arange(6000) * 2e-9, z=np.zeros(6000), name="flat")
+    ds = simulate_mesh(params, flat, steps=21)
+    width = ds.contact_width.values
+    np.testing.assert_allclose(width, 2 * ds.hertz_half_width.values, atol=2 * params["mesh_grid_spacing"] + 1e-15)
+    np.testing.assert_allclose(ds.max_contact_pressure.values, ds.hertz_peak_pressure.values, rtol=0.02)
+    assert ds.hertz_half_width.values[np.flatnonzero(ds["c"].values == 0.0)[0]] == pytest.approx(
+        43.45e-9 * math.sqrt(2e-6 / ds.attrs["effective_face_width"]), rel=1e-3)

@@ -66,7 +66,7 @@ import numpy as np
 
 from .errors import InputError
 from .adhesion import contact_modulus
-from .gear import GearPair, tangential_force
+from .gear import GearPair, hertz_line_contact, tangential_force
 from .references import cites
 
 __all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "SUMMARY_UNITS", "BLOCK_LOAD_VARIANT",
@@ -580,8 +580,10 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
                         params["counter_poisson_ratio"])
     setup = _prepare(params, roughness, steps)
     pair = setup.pair
-    hertz = pair.hertz(setup.positions, setup.load, modulus)
-    hertz_peak = hertz.peak_pressure * math.sqrt(params["face_width"] / setup.effective_face_width)
+    # smooth-teeth Hertz contact under the line load actually solved (load / L_eff), Eqs. (4-22)-(4-26)
+    hertz = hertz_line_contact(setup.load, setup.effective_face_width, pair.effective_radius(setup.positions),
+                               modulus)
+    hertz_peak = hertz.peak_pressure
     if hertz_peak.max() > params["elastic_limit_pressure"]:
         i = int(np.argmax(hertz_peak))
         raise InputError(f"normal_load {params['normal_load'] * 1e6:.4g} uN is beyond the elastic range: the Hertz peak "
@@ -640,7 +642,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "load_share": var(share, "", f"load share of the pair ({params['load_sharing']}, Figure 4-11)"),
         "normal_force": var(setup.load, "N", "normal force on the tooth pair"),
         "effective_radius": var(kin["r_ef"], "m", "radius of relative curvature R_ef (4-11)"),
-        "hertz_half_width": var(hertz.half_width, "m", "Hertz half-width a of the smooth teeth (4-24)"),
+        "hertz_half_width": var(hertz.half_width, "m", "Hertz half-width a of smooth teeth under the step's load (4-24)"),
+        "hertz_peak_pressure": var(hertz.peak_pressure, "Pa", "Hertz peak pressure p0 of smooth teeth (4-26)"),
         "sliding_velocity": var(kin["slip"], "m/s", "sliding velocity u1 - u2 (4-12)"),
         "sliding_distance": var(sliding, "m", "sliding distance of the step |u1 - u2| dt"),
         "contact_width": var(out["contact_width"], "m", "measure of the contact set of the rough contact (row mean)"),
