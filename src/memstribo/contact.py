@@ -455,8 +455,15 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
         Warm start [Pa], e.g. the previous step's pressure of a meshing cycle; rescaled to
         the load.
     precondition : bool, optional
-        Use the Fourier preconditioner (default). ``False`` gives the plain Polonsky-Keer
-        iteration (for comparison).
+        Use the Fourier preconditioner (default). ``False`` with ``method="polonsky-keer"``
+        gives the plain Polonsky-Keer iteration (for comparison).
+    continuation : bool, optional
+        Start from the solution on nested coarser grids (every other point, down to 256
+        elements, solved to 1e-4) when no ``initial_pressure`` is given (default).
+    method : {"active-set", "polonsky-keer"}, optional
+        "active-set" (default): primal-dual active set, each contact set solved by the
+        preconditioned CG, falling back to Polonsky-Keer should the set not settle within 30
+        updates; "polonsky-keer": the constrained CG of [1]_ throughout.
 
     Returns
     -------
@@ -467,13 +474,18 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     Notes
     -----
     Minimises the complementary energy :math:`\frac12 p^T A p + p^T h` subject to
-    :math:`p \ge 0` and :math:`dx\sum p = w` by the constrained conjugate gradient of [1]_,
-    preconditioned as in [2]_ with :math:`P_C\,\mathcal F^{-1}\frac{E^*|q|}{2}\mathcal F\,P_C`
-    (P_C: restriction to the contact set, with the mean removed so the load is kept).
+    :math:`p \ge 0` and :math:`dx\sum p = w`. On a fixed contact set C the equations
+    :math:`A_{CC} p_C - \delta = -h_C`, :math:`dx\sum p_C = w` are solved by a conjugate
+    gradient preconditioned as in [2]_ with :math:`P_C\,\mathcal F^{-1}\frac{E^*|q|}{2}\mathcal F\,P_C`
+    (P_C: restriction to C with the mean removed, so the load is kept); then C is updated
+    (points with p < 0 leave, points that penetrate join: a primal-dual active-set step)
+    until it no longer changes. The constrained CG of [1]_ is the fallback and the
+    alternative. The convergence test is the same for both: the largest gap error on C or
+    penetration outside it, relative to the peak-to-valley of h, at most ``tolerance``.
 
     Examples
     --------
-    >>> x = (np.arange(1024) - 512) * 1e-9
+    >>> x = (np.arange(1024) - 511.5) * 1e-9
     >>> sol = solve_line_contact(x**2 / (2 * 20e-6), 1e-9, 100e9, load=1.0)
     >>> sol.converged, round(sol.contact_length * 1e9)
     (True, 32)
