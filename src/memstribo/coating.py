@@ -195,7 +195,7 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
     steps : int, optional
         Steps of each meshing-cycle simulation (the mesh's default if None).
     progress : bool
-        Show the mesh's progress bar on stderr.
+        Show a progress bar over the wear states on stderr.
 
     Returns
     -------
@@ -217,9 +217,15 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
         coating = get_coating(coating)
     omega = np.atleast_1d(check_wear(wears))
     rows = {key: np.empty(omega.size) for key in SWEEP_VARIABLES}
-    for i, w in enumerate(omega):  # one meshing-cycle simulation per wear state
-        dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w),
-                                     progress=progress)
+    states = enumerate(omega)
+    if progress:
+        import sys
+
+        from tqdm import tqdm
+
+        states = tqdm(states, total=omega.size, desc="wear states", unit="cycle", file=sys.stderr, leave=False)
+    for i, w in states:  # one meshing-cycle simulation per wear state
+        dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w))
         summary = mesh.summarize(dataset)
         for key in SWEEP_VARIABLES:
             rows[key][i] = _summary_value(summary, dataset, key)

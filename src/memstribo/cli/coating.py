@@ -20,7 +20,7 @@ def register(subparsers, parents):
     parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and figures (COF vs Omega, "
                                                      "friction vs tangential force) to DIR")
-    parser.add_argument("--progress", action="store_true", help="show the mesh progress bar on stderr")
+    parser.add_argument("--progress", action="store_true", help="show a progress bar on stderr (shown anyway when stderr is a terminal)")
     parser.add_argument("--calibrate", nargs="?", const=0.185, type=float, metavar="COF",
                         help="instead of a sweep: scale the coating's U_vdW so that the fully coated pair "
                              "(Omega = 0) has this mean COF (default 0.185, thesis 5.5.3) and print the calibration")
@@ -54,7 +54,7 @@ def run(args, params):
     wears = parse_wear_list(params["coating_wear"] if args.wear is None else args.wear)
     if args.steps is not None and args.steps < 2:
         raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
-    sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=args.progress and sys.stderr.isatty())
+    sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=args.progress or sys.stderr.isatty())
     units = {key: unit for key, (unit, _) in SWEEP_VARIABLES.items()}
     points = []
     for i, w in enumerate(wears):

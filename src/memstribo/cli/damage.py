@@ -28,6 +28,8 @@ def register(subparsers, parents):
                         help="wear states Omega in the COF sweep that decides stiction (default 6: 0, 0.2, ... 1)")
     parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
     parser.add_argument("--out", metavar="DIR", help="write datasets (NetCDF + CSV) and figures to DIR")
+    parser.add_argument("--progress", action="store_true",
+                        help="show a progress bar on stderr (shown anyway when stderr is a terminal)")
     parser.set_defaults(handler=run)
 
 
@@ -76,11 +78,16 @@ def run(args, params):
                      "per cycle, full unloading between peaks")
     sweep = None
     if c1_known:
-        sweep = wear_sweep(params, coating, np.linspace(0.0, 1.0, args.wear_points), steps=args.steps)
+        import sys
+
+        sweep = wear_sweep(params, coating, np.linspace(0.0, 1.0, args.wear_points), steps=args.steps,
+                           progress=args.progress or sys.stderr.isatty())
     outcome = run_damage(params, mesh_dataset, loads=loads, wear_sweep=sweep, cycles_observed=args.observed_life,
                          figures=bool(args.out))
     s = outcome.summary
     m = s["damage_exponent"]
+    if loads is None:
+        notes.append(f"  peaks_per_cycle: the most load peaks of one nanoblock in the cycle (thesis: k = 48)")
     values = {
         "omega_over_c1_max": s["omega_over_c1_max"],
         "location": s["location"],
