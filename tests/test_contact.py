@@ -268,3 +268,12 @@ def test_cli_bad_input_exit_2(cli, argv, match):
 def test_cli_unconverged_allowed(cli):
     out = cli.json("contact", "--flat", "--max-iterations", "1", "--tolerance", "1e-14", "--allow-unconverged")
     assert out["converged"] is False and out["residual"] > 1e-14
+
+
+def test_validation_rows_agree():
+    from memstribo.validation.contact import rows
+
+    table = rows()
+    assert len(table) == 5
+    assert all(row.agrees for row in table), [row for row in table if not row.agrees]
+    assert all(row.command.startswith("memstribo contact") for row in table)

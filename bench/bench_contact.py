@@ -1,0 +1,186 @@
+"""Speed benchmark: memstribo's line-contact solver against Tamaas and ContactMechanics.
+
+Identical periodic 1D problems (a self-affine rough profile, optionally under a cylinder) are
+solved at the same mean pressure by each solver; the script reports wall times, iteration
+counts, contact fractions and the agreement of the pressure fields. It is a benchmark, not a
+test: run it in an environment that has the peers (bench/requirements-peers.txt), e.g.::
+
+    python3.11 -m venv /work/bench-venv
+    /work/bench-venv/bin/pip install -r bench/requirements-peers.txt
+    OMP_NUM_THREADS=1 /work/bench-venv/bin/python bench/bench_contact.py --sizes 10 12 14 16
+
+memstribo is imported from ``src/`` (only numpy and scipy are needed for the solver).
+All solvers run on one thread (scipy.fft workers=1; OMP/FFTW threads 1).
+
+Tolerances are not defined alike: memstribo stops when the largest gap error on the contact
+set (or penetration outside it) is below ``tol * ptp(h)``; ContactMechanics gets
+``pentol = tol * ptp(h)`` (its absolute penetration tolerance); Tamaas gets ``tol`` in its
+own relative error measure. The pressure-field agreement reported shows what each reached.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+import numpy as np  # noqa: E402
+
+MODULUS = 100e9  # contact modulus E* [Pa]
+DOMAIN = 1e-6  # [m] at N = 2^12; the grid step is kept fixed (domain grows with N)
+RMS_HEIGHT = 1e-9  # [m] at N = 2^12
+HURST = 0.8
+
+
+def self_affine_profile(n, length, seed=0):
+    """Periodic self-affine heights [m] (Hurst exponent HURST, random phases and amplitudes)."""
+    rng = np.random.default_rng(seed)
+    q = 2 * np.pi * np.fft.rfftfreq(n, length / n)
+    amplitude = np.zeros_like(q)
+    amplitude[1:] = q[1:] ** (-0.5 - HURST)
+    spectrum = amplitude * (rng.normal(size=q.size) + 1j * rng.normal(size=q.size))
+    spectrum[-1] = spectrum[-1].real
+    z = np.fft.irfft(spectrum, n) * np.sqrt(n)
+    return z
+
+
+def problem(exponent, cylinder=False, seed=0):
+    """Gap h [m], element width [m] and mean pressure [Pa] of the benchmark problem at N = 2^exponent."""
+    n = 2**exponent
+    dx = DOMAIN / 2**12
+    length = n * dx
+    z = self_affine_profile(n, length, seed)
+    reference = self_affine_profile(2**12, DOMAIN, seed)
+    z *= RMS_HEIGHT / reference.std() * (length / DOMAIN) ** HURST  # same spectrum at every N
+    h = z.max() - z
+    if cylinder:
+        x = (np.arange(n) - n / 2) * dx
+        h = h + x**2 / (2 * (50 * length))
+    h -= h.min()
+    slope = np.std(np.diff(z)) / dx
+    mean_pressure = 0.08 * MODULUS * slope  # ~16 % contact (Persson: A/A0 ~ 2 p/(E* h'_rms))
+    return h, dx, mean_pressure
+
+
+def run_memstribo(h, dx, mean_pressure, tol, **options):
+    from memstribo.contact import solve_line_contact
+
+    start = time.perf_counter()
+    sol = solve_line_contact(h, dx, MODULUS, mean_pressure=mean_pressure, periodic=True, tolerance=tol,
+                             max_iterations=20000, **options)
+    return dict(time=time.perf_counter() - start, iterations=sol.iterations, pressure=sol.pressure,
+                converged=sol.converged)
+
+
+def run_tamaas(h, dx, mean_pressure, tol):
+    import tamaas as tm
+
+    n = h.size
+    model = tm.ModelFactory.createModel(tm.model_type.basic_1d, [n * dx], [n])
+    model.E, model.nu = MODULUS, 0.0  # E* = E / (1 - nu^2)
+    surface = np.ascontiguousarray(-h)  # Tamaas: heights of the rigid surface
+    solver = tm.PolonskyKeerRey(model, surface, tol)
+    solver.max_iter = 20000
+    # Tamaas prints its iterations (file descriptors 1 and 2): capture them to count them
+    import tempfile
+
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = os.dup(1), os.dup(2)
+    with tempfile.TemporaryFile(mode="w+") as log:
+        os.dup2(log.fileno(), 1)
+        os.dup2(log.fileno(), 2)
+        try:
+            start = time.perf_counter()
+            solver.solve(mean_pressure)
+            elapsed = time.perf_counter() - start
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            for fd, copy in zip((1, 2), saved):
+                os.dup2(copy, fd)
+                os.close(copy)
+        log.seek(0)
+        numbers = [line.split()[0] for line in log.read().splitlines() if line.split()[:1]
+                   and line.split()[0].isdigit()]
+    pressure = np.array(model.traction).ravel()
+    iterations = int(numbers[-1]) if numbers else None
+    return dict(time=elapsed, iterations=iterations, pressure=pressure, converged=None)
+
+
+def run_contactmechanics(h, dx, mean_pressure, tol):
+    from ContactMechanics import PeriodicFFTElasticHalfSpace
+    from ContactMechanics.Optimization import constrained_conjugate_gradients
+
+    n = h.size
+    substrate = PeriodicFFTElasticHalfSpace((n,), MODULUS, physical_sizes=(n * dx,))
+    from SurfaceTopography import UniformLineScan
+
+    heights = UniformLineScan(-h, n * dx, periodic=True)  # rigid surface heights
+    start = time.perf_counter()
+    result = constrained_conjugate_gradients(substrate, heights, external_force=mean_pressure * n * dx,
+                                             pentol=tol * np.ptp(h), maxiter=20000)
+    elapsed = time.perf_counter() - start
+    pressure = np.asarray(result.jac).ravel() / dx
+    if pressure.sum() < 0:  # forces are negative (compressive) in some versions
+        pressure = -pressure
+    return dict(time=elapsed, iterations=int(result.nit), pressure=pressure, converged=bool(result.success))
+
+
+SOLVERS = {"memstribo": run_memstribo, "tamaas": run_tamaas, "contactmechanics": run_contactmechanics}
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sizes", type=int, nargs="+", default=[10, 12, 14], help="exponents k of N = 2^k")
+    parser.add_argument("--solvers", nargs="+", default=list(SOLVERS), choices=list(SOLVERS))
+    parser.add_argument("--tolerance", type=float, default=1e-8)
+    parser.add_argument("--cylinder", action="store_true", help="the same profile under a cylinder")
+    parser.add_argument("--repeat", type=int, default=1, help="best of this many runs")
+    parser.add_argument("--json", help="write the rows to this JSON file")
+    args = parser.parse_args(argv)
+
+    import scipy
+
+    print(f"# numpy {np.__version__}, scipy {scipy.__version__} (scipy.fft pocketfft, workers=1); "
+          f"OMP_NUM_THREADS={os.environ['OMP_NUM_THREADS']}; tolerance {args.tolerance:g}; "
+          f"{'cylinder + ' if args.cylinder else ''}self-affine H={HURST}", flush=True)
+    print(f"{'N':>8} {'solver':>17} {'time [s]':>10} {'iter':>6} {'contact':>8} {'max|dp|/max p':>14}", flush=True)
+    rows = []
+    for exponent in args.sizes:
+        h, dx, mean_pressure = problem(exponent, args.cylinder)
+        results = {}
+        for name in args.solvers:
+            best = None
+            for _ in range(args.repeat):
+                result = SOLVERS[name](h, dx, mean_pressure, args.tolerance)
+                if best is None or result["time"] < best["time"]:
+                    best = result
+            results[name] = best
+        base = results[args.solvers[0]]["pressure"]
+        for name, result in results.items():
+            p = result["pressure"]
+            difference = float(np.abs(p - base).max() / base.max())
+            row = dict(n=2**exponent, solver=name, time=result["time"], iterations=result["iterations"],
+                       contact_fraction=float(np.mean(p > 0)), difference=difference,
+                       mean_pressure=mean_pressure, converged=result["converged"])
+            rows.append(row)
+            print(f"{2**exponent:>8} {name:>17} {result['time']:>10.4g} {str(result['iterations']):>6} "
+                  f"{row['contact_fraction']:>8.3f} {difference:>14.2e}", flush=True)
+        times = {name: r["time"] for name, r in results.items()}
+        if "memstribo" in times and len(times) > 1:
+            fastest_peer = min(t for name, t in times.items() if name != "memstribo")
+            print(f"{'':>8} {'speed-up vs fastest peer':>30}: {fastest_peer / times['memstribo']:.2f}x", flush=True)
+    if args.json:
+        Path(args.json).write_text(json.dumps(rows, indent=1))
+
+
+if __name__ == "__main__":
+    main()
