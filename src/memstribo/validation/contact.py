@@ -10,7 +10,7 @@ from . import ValidationRow, compare
 
 HERTZ_ARGS = ["contact", "--flat", "--radius", "20 um", "--load", "1 N/m", "--modulus", "100 GPa",
               "--points", "2048", "--length", "127.7 nm"]
-DEFAULT_ARGS = ["contact", "--flat", "--points", "4000"]
+DEFAULT_ARGS = ["contact", "--flat", "--points", "4000", "--length", "400 nm"]
 
 
 def _cli_json(argv):
@@ -54,6 +54,6 @@ def rows() -> list[ValidationRow]:
     rows_.append(compare(
         "contact", "contact length 2a, thesis gear case at the pitch point (smooth, 25 uN)",
         "Hertz (4-24) with E*, R_ef, w = F/b of the parameter set", 2 * float(hertz_line_half_width(load, radius, modulus))
-        * 1e9, out["contact_length"] * 1e9, "nm", rtol=1e-2, command="memstribo contact --flat --points 4000 --json",
+        * 1e9, out["contact_length"] * 1e9, "nm", rtol=1e-2, command="memstribo contact --flat --points 4000 --length '400 nm' --json",
         note="the thesis prints 2a = 117.7 nm (a = 58.9 nm), which does not follow from its inputs (MODEL §6)"))
     return rows_
