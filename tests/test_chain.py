@@ -148,6 +148,7 @@ def test_run_options_from_a_config_table(tmp_path):
     ({"cycles_observed": -5}, "cycles > 0"),
     ({"areas": [1.5]}, "whole multiples"),
     ({"sliding_distance": "-1 nm"}, "length > 0"),
+    ({"validation": "yes"}, "true or false"),
 ])
 def test_bad_run_tables_raise_input_error(table, match, tmp_path):
     with pytest.raises(InputError, match=match):
@@ -156,7 +157,7 @@ def test_bad_run_tables_raise_input_error(table, match, tmp_path):
 
 def test_cli_run_json_with_config_file(cli, tmp_path):
     config = tmp_path / "case.toml"
-    config.write_text('[parameters]\nnormal_load = "50 uN"\n[run]\nstages = ["roughness", "geometry", "gear"]\n')
+    config.write_text('[parameters]\nnormal_load = "50 uN"\n[run]\nstages = ["roughness", "geometry", "gear"]\nvalidation = false\n')
     values = cli.json("run", config, "--out", tmp_path / "out", "--steps", "5")
     assert values["stages"]["gear"] == "done" and values["stages"]["mesh"] == "skipped"
     assert values["complete"] is True

@@ -12,6 +12,7 @@ import pytest
 
 from memstribo.chain import FigureRecord, RunOptions, RunResult, StageRecord
 from memstribo.report import render_report, write_report
+from memstribo.validation import ValidationRow, compare
 
 EVIL = "<script>alert('x')</script>&\"scan\".txt"
 
@@ -40,8 +41,14 @@ def make_result(folder: Path, params, n_figures=2, verdict=None) -> RunResult:
                      stages, figures, {}, verdict, inputs, 12.0)
 
 
+ROWS = ([compare("gear", "tangential force F_t", "thesis 4.7 (4-27)", 2.82e-3, 2.82e-3, "N", rtol=1e-3,
+                  command="memstribo gear --json"),
+          ValidationRow("mesh", "COF <falls> with load", "thesis 4.9.3", None, None, "", "trend", False,
+                        "memstribo sweep load --json", "differs: see docs/mesh.md")], None)
+
+
 def test_report_is_self_contained_and_escapes_input_text(tmp_path, params):
-    text = render_report(make_result(tmp_path, params))
+    text = render_report(make_result(tmp_path, params), ROWS)
     assert "<script>alert" not in text
     assert "&lt;script&gt;alert(&#x27;x&#x27;)&lt;/script&gt;&amp;&quot;scan&quot;.txt" in text
     assert "caption 0 with &lt;b&gt;markup&lt;/b&gt;" in text
@@ -53,13 +60,21 @@ def test_report_is_self_contained_and_escapes_input_text(tmp_path, params):
     assert "STICTION" in text and "no stiction" in text and "&Omega; = 80 %" in text
     assert "The question" in text and "synthetic (generated, seeded)" in text and "measured" in text
     assert "Validation: thesis against memstribo" in text and "<th>tolerance</th>" in text
-    assert "normal_load" in text and "--set" in text
+    assert "COF &lt;falls&gt; with load" in text and "thesis 4.7 (4-27)" in text
+    assert "<td class='bad'>no</td>" in text and "<td class='good'>yes</td>" in text
+    assert "Changed from that set: <code>normal_load</code> (--set &lt;script&gt;" in text
 
 
 def test_report_without_meshing_says_there_is_no_verdict(tmp_path, params):
     text = render_report(make_result(tmp_path, params, n_figures=0, verdict={}))
     assert "No verdict: the meshing stages did not run" in text
     assert "No figures" in text
+    assert "computed at the end of the run" in text  # no validation table passed
+
+
+def test_broken_validation_rows_are_reported_in_the_page(tmp_path, params):
+    text = render_report(make_result(tmp_path, params), ([], "KeyError: 'x'"))
+    assert "could not all be computed: KeyError: &#x27;x&#x27;" in text
 
 
 def test_missing_figure_file_is_reported_not_hidden(tmp_path, params):
@@ -95,7 +110,7 @@ def browser_dom(path: Path, profile: Path) -> str:
 @pytest.mark.browser
 def test_every_figure_renders_in_headless_chromium(tmp_path, params):
     result = make_result(tmp_path, params, n_figures=3)
-    page = write_report(result, tmp_path / "report.html")
+    page = write_report(result, tmp_path / "report.html", ROWS)
     dom = browser_dom(page, tmp_path / "chromium-profile")
     marker = re.search(r"<body[^>]*data-figures=\"([^\"]*)\"", dom)
     assert marker, dom[:500]

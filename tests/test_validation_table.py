@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -56,9 +54,16 @@ def test_format_number_is_six_significant_digits():
     assert format_number(None) == "-"
 
 
-def test_check_mode_reports_an_outdated_file(tmp_path):
-    stale = tmp_path / "validation.md"
-    stale.write_text("old\n", encoding="utf-8")
-    run = subprocess.run([sys.executable, "-m", "memstribo.validation", "--check", "--output", str(stale)],
-                         capture_output=True, text=True, timeout=120)
-    assert run.returncode == 1 and "out of date" in run.stderr
+def test_check_mode_and_writing(tmp_path, monkeypatch, capsys):
+    from memstribo.validation import __main__ as generator
+
+    rows = [compare("alpha", "x", "closed form", 1.0, 1.0, "", rtol=0, command="memstribo x")]
+    monkeypatch.setattr(generator, "all_rows", lambda: rows)
+    target = tmp_path / "validation.md"
+    target.write_text("old\n", encoding="utf-8")
+    assert generator.main(["--check", "--output", str(target)]) == 1
+    assert "out of date" in capsys.readouterr().err
+    assert generator.main(["--output", str(target)]) == 0
+    assert target.read_text(encoding="utf-8") == render_markdown(rows)
+    assert generator.main(["--check", "--output", str(target)]) == 0
+    assert not list(tmp_path.glob("*.tmp"))

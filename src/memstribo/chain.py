@@ -73,6 +73,7 @@ _RUN_KEYS = {
     "roughness_files": "measured profiles / AFM files to analyse besides the default synthetic profile",
     "mesh_roughness": "which profile the meshing stages use: 'synthetic' (default) or the index of roughness_files",
     "stages": "stages to run (default: all)",
+    "validation": "put the validation table into report.html (default true; computed at the end of the run)",
     "sliding_distance": "sliding distance of the structure in the sliding stage (default: the model's)",
     "cycles_observed": "observed coating life [meshing cycles] to calibrate c1 (default: none)",
 }
@@ -104,6 +105,8 @@ class RunOptions:
         An observed coating life [cycles] to calibrate the damage constant c1.
     sliding_distance : float or None
         Sliding distance [m] of the structure in the ``sliding`` stage (None: the model's default).
+    validation : bool
+        Put the validation table (every topic's rows, computed at the end) into the report.
     """
 
     steps: int | None = None
@@ -116,6 +119,7 @@ class RunOptions:
     stages: tuple[str, ...] = tuple(STAGES)
     cycles_observed: float | None = None
     sliding_distance: float | None = None
+    validation: bool = True
 
     @classmethod
     def from_table(cls, table: Mapping[str, Any] | None, base_folder: str | Path | None = None) -> "RunOptions":
@@ -199,6 +203,10 @@ class RunOptions:
             if not cycles > 0:
                 raise InputError(f"[run] cycles_observed = {table['cycles_observed']!r}: give a number of cycles > 0.")
             options["cycles_observed"] = cycles
+        if "validation" in table:
+            if not isinstance(table["validation"], bool):
+                raise InputError(f"[run] validation = {table['validation']!r}: give true or false.")
+            options["validation"] = table["validation"]
         if "sliding_distance" in table:
             distance = to_si(table["sliding_distance"], "m", "sliding_distance")
             if not distance > 0:
@@ -773,7 +781,12 @@ class RunChain:
             self.run_stage(name)
             self._finish(time.perf_counter() - start)
         bar.close()
-        return self._finish(time.perf_counter() - start)
+        validation = None
+        if self.options.validation:
+            from .report import validation_rows
+
+            validation = validation_rows()
+        return self._finish(time.perf_counter() - start, validation)
 
     def _write_text(self, name, text):
         path = self.folder / name
@@ -781,7 +794,7 @@ class RunChain:
         tmp.write_text(text, encoding="utf-8")
         tmp.replace(path)
 
-    def _finish(self, elapsed) -> RunResult:
+    def _finish(self, elapsed, validation=None) -> RunResult:
         from .references import used_references
         from .report import write_report
 
@@ -794,11 +807,11 @@ class RunChain:
             "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
             "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
             "references": [key for key, _ in references]}))
-        write_report(result, self.folder / "report.html")
+        write_report(result, self.folder / "report.html", validation)
         return result
 
 
 def options_for_test(**changes) -> RunOptions:
     """Small, fast options (few steps and sweep points) exercising every stage."""
     return replace(RunOptions(steps=8, loads=(25e-6, 150e-6), areas=(1.0, 4.0), wear=(0.0, 1.0),
-                              sliding_distance=0.5e-6), **changes)
+                              sliding_distance=0.5e-6, validation=False), **changes)
