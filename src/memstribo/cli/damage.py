@@ -111,8 +111,23 @@ def run(args, params):
     else:
         notes.append("  c1 unknown: give --set damage_coefficient=C1 [Pa^-m] or --observed-life N for cycles to "
                      "failure and to stiction")
-    notes.append(f"  corner life / central life = {s['life_ratio_corner_to_central']:.4g} "
-                 f"(the corner's coating wears through {100 * (1 - s['life_ratio_corner_to_central']):.3g} % sooner)")
+    from ..asperity import _contact_modulus_from, power_law_contact_radius
+
+    largest = float(np.max(outcome.result.asperity_peak_loads, initial=0.0))
+    if largest > 0:
+        radius = float(power_law_contact_radius(largest, params["asperity_degree"],
+                                                params["asperity_shape_coefficient"], _contact_modulus_from(params)))
+        if radius > params["asperity_half_width"]:
+            notes.append(f"  warning: the largest asperity load gives a contact radius of {radius * 1e9:.3g} nm, more "
+                         f"than the asperity half width {params['asperity_half_width'] * 1e9:.3g} nm: the power-law "
+                         "shape no longer describes the asperity there")
+    ratio = s["life_ratio_corner_to_central"]
+    if ratio is None:
+        notes.append("  life_ratio_corner_to_central: none - a nanoblock needs atomic_per_side >= 3 to have both "
+                     "corner and central asperities")
+    else:
+        notes.append(f"  corner life / central life = {ratio:.4g} "
+                     f"(the corner's coating wears through {100 * (1 - ratio):.3g} % sooner)")
     if args.out:
         from ..output import save_figure, write_dataset
 
