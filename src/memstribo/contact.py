@@ -53,9 +53,9 @@ from memstribo.references import cites
 __all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "HalfPlane"]
 
 #: Grids with fewer elements are solved directly (the coarsest level of the nested grids).
-_COARSEST = 256
+_COARSEST = 512
 #: Tolerance of the coarse levels of the nested grids (only their contact set matters).
-_COARSE_TOLERANCE = 1e-4
+_COARSE_TOLERANCE = 1e-3
 #: Outer iterations (contact-set updates) of the active-set method before Polonsky-Keer takes over.
 _MAX_OUTER = 30
 #: Inner CG tolerance relative to the complementarity violation of the previous contact set.
