@@ -80,7 +80,8 @@ def run(args, params):
                      "flagged in the dataset (contact_converged).")
     if summary["window_exceeded_steps"]:
         notes.append(f"  WARNING: the contact reached the ends of the window in {summary['window_exceeded_steps']} "
-                     "step(s): raise mesh_window.")
+                     f"step(s): raise mesh_window (now {dataset.attrs['window'] * 1e6:.3g} um), e.g. --set "
+                     f"mesh_window='{2 * dataset.attrs['window'] * 1e6:.3g} um'.")
     if summary["steps_above_elastic_limit"]:
         notes.append(f"  WARNING: the rough contact's peak pressure exceeds the elastic limit of silicon "
                      f"({dataset.attrs['elastic_limit_pressure'] / 1e9:.3g} GPa) in {summary['steps_above_elastic_limit']} "
