@@ -40,7 +40,8 @@ vertical-align:top}th{background:#f2f2f2;text-align:left}td.num{text-align:right
 .verdict{border:2px solid #555;border-radius:6px;padding:.6rem 1rem;background:#fafafa}
 .bad{color:#a00;font-weight:bold}.good{color:#060;font-weight:bold}.note{color:#555;font-size:.85rem}
 figure{margin:1.2rem 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.9rem;color:#333}
-code{background:#f4f4f4;padding:0 .2rem}details{margin:.5rem 0}
+code{background:#f4f4f4;padding:0 .2rem;overflow-wrap:anywhere}details{margin:.5rem 0}
+.wide{overflow-x:auto}.wide table{font-size:.75rem;width:100%}td{overflow-wrap:break-word}
 """
 
 _SCRIPT = """
@@ -201,7 +202,11 @@ def _validation_html(validation) -> str:
     if error:
         parts.append(f"<p class='bad'>The validation rows could not all be computed: {_e(error)}</p>")
     if rows:
-        from .validation.__main__ import format_number
+        from .validation.__main__ import format_number, summary
+
+        counts = summary(rows)
+        parts.append(f"<p><b>{counts['rows']} comparisons: {counts['agree']} agree, {counts['differ']} differ</b> "
+                     "(on purpose where the tolerance says 'differs'; the note says why).</p>")
 
         body = "".join(
             f"<tr><td>{_e(r.topic)}</td><td>{_e(r.quantity)}</td><td>{_e(r.reference)}</td>"
@@ -209,9 +214,9 @@ def _validation_html(validation) -> str:
             f"<td>{_e(r.unit)}</td><td>{_e(r.tolerance)}</td>"
             f"<td class='{'good' if r.agrees else 'bad'}'>{'yes' if r.agrees else 'no'}</td>"
             f"<td><code>{_e(r.command)}</code></td><td>{_e(r.note)}</td></tr>" for r in rows)
-        parts.append("<table><tr><th>topic</th><th>quantity</th><th>reference</th><th>reference value</th>"
+        parts.append("<div class='wide'><table><tr><th>topic</th><th>quantity</th><th>reference</th><th>reference value</th>"
                      "<th>memstribo</th><th>unit</th><th>tolerance</th><th>agrees</th><th>command</th><th>note</th></tr>"
-                     + body + "</table>")
+                     + body + "</table></div>")
     return "".join(parts)
 
 
