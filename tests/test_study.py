@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from memstribo.errors import InputError
-from memstribo.study import StudySpec, load_study_spec, prepare_points, run_study, study_spec
+from memstribo.study import load_study_spec, prepare_points, run_study, study_spec
 
 TESTS = Path(__file__).resolve().parent
 HERTZ = "_study_points:hertz_point"
