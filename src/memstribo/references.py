@@ -91,6 +91,10 @@ REFERENCES: dict[str, str] = {
         "J. Z. Hu, L. D. Merkle, C. S. Menoni, I. L. Spain, 'Crystal data for high-pressure phases of silicon', "
         "Phys. Rev. B 34 (1986) 4679-4684. doi:10.1103/PhysRevB.34.4679"
     ),
+    "hamilton_goodman_1966": (
+        "G. M. Hamilton, L. E. Goodman, 'The stress field created by a circular sliding contact', "
+        "J. Appl. Mech. 33 (1966) 371-376. doi:10.1115/1.3625051"
+    ),
 }
 
 _used: dict[str, None] = {}
