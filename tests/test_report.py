@@ -36,7 +36,8 @@ def make_result(folder: Path, params, n_figures=2, verdict=None) -> RunResult:
         "tangential_force": 2.82e-3, "bare_friction_force_max": 4e-3, "bare_stiction_margin": -1.18e-3,
         "bare_stiction": True, "bare_cof_mean": 0.8, "coated_friction_force_max": 1e-3,
         "coated_stiction_margin": 1.82e-3, "coated_stiction": False, "coated_cof_mean": 0.19,
-        "wear_at_stiction": 0.8}
+        "wear_at_stiction": 0.8, "damage_per_cycle_over_c1": 8.5e8, "damage_exponent": 1.0,
+        "life_ratio_corner_to_central": 0.92}
     return RunResult(folder, params.updated({"normal_load": "50 uN"}, origin=f"--set {EVIL}"), RunOptions(),
                      stages, figures, {}, verdict, inputs, 12.0)
 
@@ -58,6 +59,8 @@ def test_report_is_self_contained_and_escapes_input_text(tmp_path, params):
     assert text.count("src='data:image/png;base64,") == 2
     # the verdict, the question, provenance and the validation table are there
     assert "STICTION" in text and "no stiction" in text and "&Omega; = 80 %" in text
+    assert "850 M Pa<sup>1</sup>" in text or "8.5e+08 Pa<sup>1</sup>" in text
+    assert "0.92 times as long" in text
     assert "The question" in text and "synthetic (generated, seeded)" in text and "measured" in text
     assert "Validation: thesis against memstribo" in text and "<th>tolerance</th>" in text
     assert "COF &lt;falls&gt; with load" in text and "thesis 4.7 (4-27)" in text

@@ -366,7 +366,7 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
         out["wear_at_stiction"] = sweep.get("critical_wear")
     damage = summaries.get("damage")
     if damage:
-        for key in ("cycles_to_stiction", "cycles_to_failure", "damage_per_cycle_over_c1",
+        for key in ("cycles_to_stiction", "cycles_to_failure", "damage_per_cycle_over_c1", "damage_exponent",
                     "life_ratio_corner_to_central"):
             if key in damage:
                 out[key] = damage[key]

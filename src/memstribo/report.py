@@ -107,15 +107,22 @@ def _verdict_html(result) -> str:
         wear = v["wear_at_stiction"]
         text = ("no worn fraction of the sweep reaches stiction" if wear is None else
                 f"stiction returns once a fraction &Omega; = {wear * 100:.0f} % of the gear's coating is worn "
-                "(smallest such value of the sweep)")
+                "(the stiction margin of the wear sweep interpolated to zero)")
         items.append(f"<li>Coating wear: {text}.</li>")
     if v.get("cycles_to_stiction") is not None:
         items.append(f"<li>Coating life: stiction returns after about {_quantity(v['cycles_to_stiction'])} meshing "
                      "cycles.</li>")
     elif "damage_per_cycle_over_c1" in v:
+        exponent = v.get("damage_exponent")
+        unit = f" Pa<sup>{exponent:g}</sup>" if exponent is not None else ""
+        ratio = v.get("life_ratio_corner_to_central")
+        relative = (f" The corner asperities' coating lives {ratio:.3g} times as long as the central ones'."
+                    if ratio is not None else "")
         items.append("<li>Coating life: the damage constant c<sub>1</sub> is not known from first principles; the "
-                     "damage per cycle divided by c<sub>1</sub> is "
-                     f"{_quantity(v['damage_per_cycle_over_c1'])} (give an observed life to calibrate it).</li>")
+                     "largest damage per meshing cycle divided by c<sub>1</sub> is "
+                     f"{_quantity(v['damage_per_cycle_over_c1'])}{unit}; give an observed life "
+                     f"(<code>[run] cycles_observed</code>) or the parameter <code>damage_coefficient</code> to turn it "
+                     f"into cycles.{relative}</li>")
     if not items:
         items.append("<li>No verdict: the meshing stages did not run (see the stages below).</li>")
     return "<div class='verdict'><ul>" + "".join(items) + "</ul></div>"
@@ -173,8 +180,13 @@ def _changed_parameters(params) -> list[str]:
 def _stages_html(result) -> str:
     rows = "".join(
         f"<tr><td>{_e(s.title)}</td><td>{_e(s.status)}</td><td class='num'>{s.seconds:.1f} s</td>"
-        f"<td>{_e(s.message)}</td></tr>" for s in result.stages)
-    return "<table><tr><th>stage</th><th>status</th><th>time</th><th>note</th></tr>" + rows + "</table>"
+        f"<td>{_e(s.message)}</td><td>{'<br>'.join(_e(f) for f in s.files if f.startswith('data/'))}</td></tr>"
+        for s in result.stages)
+    return ("<p>Datasets are NetCDF (units as attributes) and CSV (units in the column headers) in "
+            "<code>data/</code>; figures are PNG and SVG in <code>figures/</code>; <code>parameters.toml</code> holds "
+            "the parameters used (a valid <code>--config</code> file), <code>references.txt</code> the references, "
+            "<code>run.json</code> every stage's summary.</p><div class='wide'><table><tr><th>stage</th><th>status</th>"
+            "<th>time</th><th>note</th><th>datasets</th></tr>" + rows + "</table></div>")
 
 
 def _figures_html(result) -> str:
