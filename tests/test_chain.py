@@ -210,3 +210,25 @@ def test_python_api_example_on_a_real_profile(capsys):
     out = capsys.readouterr().out
     assert "opdx-3.opdx" in out and "Rq = 2.826 nm" in out  # data/afm/README.md: Rq 2.826 nm
     assert results["coated"]["friction_force_max"] < results["bare"]["friction_force_max"]
+
+
+def test_run_progress_bar_over_the_stages(params, tmp_path, capsys):
+    RunChain(params, tmp_path / "out", options_for_test(stages=("gear",), validation=False), progress=True).run()
+    err = capsys.readouterr().err
+    assert "memstribo run" in err and f"{len(STAGES)}/{len(STAGES)}" in err and "stage" in err
+
+
+def test_an_interrupted_run_keeps_what_it_finished(params, tmp_path, monkeypatch):
+    """Ctrl-C in a later stage: the earlier stages' files and run.json stay on disk."""
+    def interrupt(self):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(RunChain, "mesh", interrupt)
+    chain = RunChain(params, tmp_path / "out", options_for_test(validation=False))
+    with pytest.raises(KeyboardInterrupt):
+        chain.run()
+    manifest = json.loads((tmp_path / "out" / "run.json").read_text())
+    done = [s["name"] for s in manifest["stages"] if s["status"] == "done"]
+    assert "roughness" in done and "gear" in done
+    assert (tmp_path / "out" / "data" / "gear.json").is_file()
+    assert (tmp_path / "out" / "report.html").is_file()

@@ -239,3 +239,20 @@ def test_example_study_specs_are_valid(params, name, n_points):
     points = prepare_points(spec, params)
     assert len(points) == n_points
     assert spec.function == "mesh"
+
+
+def test_unreachable_scheduler_is_an_input_error(cli, tmp_path, monkeypatch):
+    import memstribo.study
+
+    monkeypatch.setattr(memstribo.study, "CONNECT_TIMEOUT", "1s")
+    spec = write_spec(tmp_path / "s.toml", SPEC)
+    code, out, err = cli("study", spec, "--out", tmp_path / "out", "--scheduler", "tcp://127.0.0.1:9")
+    assert code == 2, err
+    assert "cannot connect to the Dask scheduler at 'tcp://127.0.0.1:9'" in err and "Traceback" not in err
+
+
+def test_progress_bar_shows_points_rate_and_time_left(params, tmp_path, capsys):
+    spec = study_spec({"name": "bar", "function": HERTZ, "grid": {"seed": [1, 2, 3]}})
+    run_study(spec, tmp_path / "out", params, workers=1, progress=True)
+    err = capsys.readouterr().err
+    assert "bar: 100%" in err and "3/3" in err and "point/s" in err and "<00:00" in err

@@ -73,6 +73,9 @@ STUDY_KEYS: dict[str, tuple[str, str]] = {
     "steps": ("", "number of positions along the path of contact (default: the model's)"),
 }
 
+#: How long to wait for an existing Dask scheduler before giving up.
+CONNECT_TIMEOUT = "10s"
+
 POINTS_FOLDER = "points"
 MANIFEST = "study.json"
 FORMAT_VERSION = 1
@@ -439,8 +442,8 @@ def _connect(scheduler: str | None, workers: int | None):
 
     if scheduler:
         try:
-            return Client(scheduler, timeout="10s", set_as_default=False), None
-        except (OSError, TimeoutError) as exc:
+            return Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False), None
+        except (OSError, TimeoutError, ValueError) as exc:
             raise InputError(f"cannot connect to the Dask scheduler at '{scheduler}': {exc}. "
                              "Start one with 'dask scheduler' (see docs/studies.md).") from None
     n_workers = workers or os.cpu_count() or 1
