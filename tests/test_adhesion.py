@@ -207,3 +207,13 @@ def test_nanoscale_constants_overrides(params):
 def test_bad_input(call, match):
     with pytest.raises(InputError, match=match):
         call()
+
+
+def test_validation_rows_agree_or_are_marked_as_differing():
+    from memstribo.validation.adhesion import rows
+
+    table = rows()
+    assert len(table) >= 10
+    for row in table:
+        assert row.agrees != row.tolerance.startswith("differs"), row
+        assert row.command.startswith("memstribo")

@@ -275,3 +275,10 @@ def test_profile_shapes():
 def test_bad_input(call, match):
     with pytest.raises(InputError, match=match):
         call()
+
+
+def test_validation_rows_agree():
+    from memstribo.validation.stresses import rows
+
+    table = rows()
+    assert len(table) >= 5 and all(row.agrees for row in table), [r for r in table if not r.agrees]
