@@ -277,3 +277,14 @@ def test_validation_rows_agree():
     assert len(table) == 5
     assert all(row.agrees for row in table), [row for row in table if not row.agrees]
     assert all(row.command.startswith("memstribo contact") for row in table)
+
+
+def test_cli_map_row_out_of_range(cli, afm_dir):
+    code, out, err = cli("contact", "--profile", afm_dir / "example_ps.tiff", "--row", "100000")
+    assert code == 2 and "--row 100000 is outside" in err and "Traceback" not in err
+
+
+def test_cli_map_row_and_periodic(cli, afm_dir):
+    out = cli.json("contact", "--profile", afm_dir / "example_ps.tiff", "--row", "3", "--periodic")
+    assert out["converged"] is True
+    assert out["load"] == pytest.approx(12.5, rel=1e-12)  # the gear-case default w = F/b
