@@ -288,3 +288,16 @@ def test_cli_map_row_and_periodic(cli, afm_dir):
     out = cli.json("contact", "--profile", afm_dir / "example_ps.tiff", "--row", "3", "--periodic")
     assert out["converged"] is True
     assert out["load"] == pytest.approx(12.5, rel=1e-12)  # the gear-case default w = F/b
+
+
+def test_fallback_to_polonsky_keer_when_the_set_does_not_settle(monkeypatch):
+    import memstribo.contact as contact_module
+
+    n, length = 1024, 1e-6
+    z = _rough(n, length, 1e-9, seed=13)
+    h = z.max() - z
+    reference_solution = solve_line_contact(h, length / n, E, mean_pressure=0.5e9, periodic=True)
+    monkeypatch.setattr(contact_module, "_MAX_OUTER", 1)
+    sol = solve_line_contact(h, length / n, E, mean_pressure=0.5e9, periodic=True, continuation=False)
+    assert sol.converged and "active-set, then polonsky-keer" in sol.message
+    assert np.abs(sol.pressure - reference_solution.pressure).max() < 1e-5 * reference_solution.max_pressure
