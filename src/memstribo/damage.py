@@ -41,6 +41,7 @@ __all__ = [
     "DamageResult",
     "DamageOutcome",
     "normalised_principal_shear",
+    "surface_stresses",
     "principal_shear_profile",
     "damage_sum",
     "cyclic_peak_loads",
@@ -174,6 +175,7 @@ def _normalised_surface_stress(degree: float, friction_coefficient: float, poiss
     return coords, stresses
 
 
+@cites("johnson_1985")
 def surface_stresses(xi, degree: float, friction_coefficient: float, poisson_ratio: float,
                      cells: int = 400) -> dict:
     """Surface stresses / p_scale along y = 0 under a power-law pressure and traction mu p [-].
@@ -221,9 +223,26 @@ def surface_stresses(xi, degree: float, friction_coefficient: float, poisson_rat
     return {name: np.interp(xi, coords, table[i]) for i, name in enumerate(names)}
 
 
+def _table_points() -> np.ndarray:
+    """x / a of the tau_1 table: uniform, refined towards the contact edges (cusp of tau_1 at |x| = a)."""
+    near = np.geomspace(1e-5, 0.1, 60)
+    edges = np.concatenate([1 - near, 1 + near, [1.0]])
+    return np.unique(np.concatenate([np.linspace(-2.5, 2.5, 1001), edges, -edges]))
+
+
+@functools.lru_cache(maxsize=32)
+def _tau1_table(degree: float, friction_coefficient: float, poisson_ratio: float) -> tuple[np.ndarray, np.ndarray]:
+    from . import stresses
+    from .asperity import _normalised_pressure
+
+    xi = _table_points()
+    tau = stresses.principal_shear_profile(xi, 0.0, lambda r: _normalised_pressure(r, degree), 1.0,
+                                           friction_coefficient, poisson_ratio)
+    return xi, np.asarray(tau, dtype=float)
+
+
 @cites("goryacheva_torskaya_2003", "hamilton_1983", "johnson_1985")
-def normalised_principal_shear(xi, degree: float, friction_coefficient: float, poisson_ratio: float,
-                               cells: int = 400) -> np.ndarray:
+def normalised_principal_shear(xi, degree: float, friction_coefficient: float, poisson_ratio: float) -> np.ndarray:
     """Surface principal shear stress tau_1 / p_scale along x through the centre of a power-law contact [-].
 
     Parameters
@@ -236,8 +255,6 @@ def normalised_principal_shear(xi, degree: float, friction_coefficient: float, p
         mu of the traction mu p along +x [-].
     poisson_ratio : float
         nu of the asperity [-].
-    cells : int
-        Grid cells across the contact diameter of :func:`surface_stresses`.
 
     Returns
     -------
@@ -246,8 +263,27 @@ def normalised_principal_shear(xi, degree: float, friction_coefficient: float, p
         :func:`memstribo.asperity.power_law_pressure`. For a power-law punch the pressure is
         p_scale times a shape of r/a only, so the surface stresses scale the same way and
         one table serves every load.
+
+    Notes
+    -----
+    The table (1 240 points on |x/a| <= 2.5, refined to 1e-5 a at the contact edges, where
+    tau_1 has a cusp) comes from :func:`memstribo.stresses.principal_shear_profile` at z = 0+
+    (Boussinesq and Cerruti solutions integrated exactly over the contact circle); it is
+    interpolated linearly. :func:`surface_stresses` is an independent FFT solution of the
+    same surface problem: the two agree to 1e-4 p_scale away from the edge (tests).
     """
-    return surface_stresses(xi, degree, friction_coefficient, poisson_ratio, cells=cells)["tau1"]
+    if not (-1.0 < poisson_ratio <= 0.5):
+        raise InputError(f"poisson_ratio must be within (-1, 0.5], got {poisson_ratio!r}.")
+    if not (math.isfinite(friction_coefficient) and friction_coefficient >= 0):
+        raise InputError(f"friction coefficient must be a finite number >= 0, got {friction_coefficient!r}.")
+    xi_table, tau_table = _tau1_table(float(degree), float(friction_coefficient), float(poisson_ratio))
+    xi = np.asarray(xi, dtype=float)
+    outside = np.abs(xi) > xi_table[-1]
+    value = np.interp(xi, xi_table, tau_table)
+    if np.any(outside):  # far field: tau_1 decays as (a/x)^2, continued from the table's end
+        value = np.where(outside, np.interp(np.sign(xi) * xi_table[-1], xi_table, tau_table)
+                         * (xi_table[-1] / np.where(outside, np.abs(xi), 1.0)) ** 2, value)
+    return value
 
 
 @cites("goryacheva_torskaya_2003", "galin_1961", "thesis")
@@ -439,8 +475,11 @@ def _asperity_damage(peak_block_loads, valley_block_loads, block_index, n_blocks
         asperity_loads[positive] = sharing.loads
     peaks, valleys = asperity_loads[:peak_block_loads.size], asperity_loads[peak_block_loads.size:]
     if x is None:
-        a_max = float(power_law_contact_radius(max(peaks.max(), 1e-30), degree, coefficient, modulus))
-        x = np.linspace(-1.25 * a_max, 1.25 * a_max, 501)
+        # a uniform grid plus the contact edges of every load (tau_1 peaks in a cusp there)
+        loaded = np.unique(peaks[peaks > 0])
+        radii = power_law_contact_radius(loaded, degree, coefficient, modulus) if loaded.size else np.ones(1)
+        a_max = float(radii.max())
+        x = np.unique(np.concatenate([np.linspace(-1.25 * a_max, 1.25 * a_max, 501), radii, -radii]))
     tau_peak = principal_shear_profile(x, peaks, degree, coefficient, modulus, friction, nu)
     tau_valley = principal_shear_profile(x, valleys, degree, coefficient, modulus, friction, nu)
     amplitude = np.abs(tau_peak - tau_valley) ** m  # (n_peaks, m*m, n_x)
