@@ -265,6 +265,7 @@ def test_profile_shapes():
     (lambda: st.stress_field(0.0, 0.0, 0.1, "hertz", A, 0.0, NU), "pressure"),
     (lambda: st.stress_field(0.0, 0.0, 0.1, ([0.0, 0.5, 0.2], [1, 1, 1]), A, 0.0, NU), "increasing"),
     (lambda: st.stress_field(0.0, 0.0, 0.1, hertz, A, 0.0, NU, nodes=2), "nodes"),
+    (lambda: st.stress_field(0.0, 0.0, 0.1, st.flat_punch_weight(hertz, A), 2 * A, 0.0, NU), "weight"),
     (lambda: st.hamilton_sliding_sphere(0.0, 0.0, 0.1, A, 0.0, 0.0, NU), "max_pressure"),
     (lambda: st.hamilton_sliding_sphere(0.0, 0.0, 0.1, -A, 1.0, 0.0, NU), "contact_radius"),
     (lambda: st.boussinesq(0.0, 0.0, 0.0, 1.0, NU), "z must be > 0"),

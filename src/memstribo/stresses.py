@@ -397,7 +397,13 @@ def stress_field(x, y, z, pressure, contact_radius, friction_coefficient=0.0, po
     nu = _poisson(poisson_ratio)
     if int(nodes) != nodes or nodes < 4:
         raise InputError(f"nodes must be an integer >= 4, got {nodes!r}.")
-    weight = pressure if isinstance(pressure, _Weight) else flat_punch_weight(pressure, a)
+    if isinstance(pressure, _Weight):
+        if not np.isclose(pressure.contact_radius, a, rtol=1e-12, atol=0.0):
+            raise InputError(f"the flat-punch weight was computed for contact_radius = {pressure.contact_radius!r} m, "
+                             f"not {a!r} m: compute it with the same contact_radius.")
+        weight = pressure
+    else:
+        weight = flat_punch_weight(pressure, a)
     shape = x.shape
     values = _near_surface(lambda xx, yy, zz: _complex_integral(xx, yy, zz, a, weight, mu, nu, int(nodes)),
                            x.ravel().astype(float), y.ravel().astype(float), z.ravel().astype(float), a)
