@@ -289,5 +289,5 @@ def test_cli_damage_from_the_mesh_with_c1(cli, tmp_path):
     assert out["life_ratio_corner_to_central"] < 1
     for stem in ("damage_profile", "damage_history", "coating_wear"):
         assert (tmp_path / f"{stem}.nc").exists() and (tmp_path / f"{stem}.csv").exists()
-    for stem in ("damage_profile", "damage_map", "damage_history", "pressure_and_tau1"):
+    for stem in ("damage_profile", "damage_map", "damage_history", "pressure_and_tau1", "tau1_corner_loads"):
         assert (tmp_path / f"{stem}.png").exists() and (tmp_path / f"{stem}.svg").exists()

@@ -821,7 +821,8 @@ def _figures(result: DamageResult, datasets) -> dict:
         if key in profile:
             ax.plot(profile["x"].values * 1e9, profile[key].values, style, label=position)
     ax.set_xlabel("x along sliding [nm]")
-    ax.set_ylabel(f"omega / c1 per cycle [Pa^{result.damage_exponent:g}]")
+    power = "" if result.damage_exponent == 1 else f"^{result.damage_exponent:g}"
+    ax.set_ylabel(f"omega / c1 per cycle [Pa{power}]")
     ax.legend()
     figures["damage_profile"] = (fig, f"Damage per meshing cycle omega/c1 along the sliding direction through the "
                                       f"corner, side and central asperities, m = {result.damage_exponent:g} "
@@ -830,7 +831,9 @@ def _figures(result: DamageResult, datasets) -> dict:
     worst = int(np.argmax(result.per_asperity.max(axis=1)))
     fig, ax = new_figure(figsize=(4, 3.5))
     image = ax.imshow(result.per_asperity[worst].reshape(per_side, per_side), cmap="magma", origin="lower")
-    fig.colorbar(image, ax=ax, label=f"max omega/c1 per cycle [Pa^{result.damage_exponent:g}]")
+    fig.colorbar(image, ax=ax, label=f"max omega/c1 per cycle [Pa{power}]")
+    ax.set_xticks(range(per_side))
+    ax.set_yticks(range(per_side))
     ax.set_title("damage map of a nanoblock")
     ax.set_xlabel("asperity column")
     ax.set_ylabel("asperity row")

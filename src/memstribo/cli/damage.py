@@ -173,4 +173,18 @@ def _stress_figures(params, outcome, folder):
     ax2.set_ylabel("principal shear stress tau_1 [GPa]")
     ax2.set_xlabel("x along sliding through the asperity centre [nm]")
     ax1.set_title("largest load peak (thesis Figures 5-17, 5-20)")
-    return save_figure(fig, folder, "pressure_and_tau1")
+    written = save_figure(fig, folder, "pressure_and_tau1")
+    # tau_1 of the corner asperity at the smallest, a middle and the largest peak (Figure 5-21)
+    corner = result.classes == "corner" if (result.classes == "corner").any() else np.ones_like(result.classes, bool)
+    corner_loads = np.unique(loads[:, corner].max(axis=1))
+    picks = corner_loads[[0, corner_loads.size // 2, -1]] if corner_loads.size >= 3 else corner_loads
+    fig, ax = new_figure(figsize=(5, 3.5))
+    for load, style in zip(picks, ("r-", "g-", "b-")):
+        tau = principal_shear_profile(x, float(load), d, b, modulus, params["asperity_friction_coefficient"],
+                                      params["poisson_ratio"])
+        ax.plot(x * 1e9, tau / 1e9, style, label=f"{load * 1e6:.3g} uN")
+    ax.set_xlabel("x along sliding through the asperity centre [nm]")
+    ax.set_ylabel("tau_1 [GPa]")
+    ax.set_title("corner asperity at several loads (thesis Figure 5-21)")
+    ax.legend()
+    return written + save_figure(fig, folder, "tau1_corner_loads")
