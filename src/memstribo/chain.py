@@ -435,6 +435,31 @@ def plot_sliding(dataset, title="", max_points=4000):
     return figure
 
 
+def plot_gear(pair, load, contact_modulus, points=401):
+    """Load share, effective radius, sliding velocity and Hertz half-width along the path of contact (4.3-4.5)."""
+    from .output import new_figure
+
+    c = np.linspace(pair.first_contact, pair.last_contact, points)
+    figure, axes = new_figure(2, 2, figsize=(9, 5.5), sharex=True)
+    (share, radius), (sliding, width) = axes
+    for kind, style in (("dry", "-"), ("lubricated", "--")):
+        share.plot(c * 1e6, pair.load_share(c, kind), style, label=kind)
+    share.set_ylabel("load share of one pair [-]")
+    share.legend(fontsize=8)
+    radius.plot(c * 1e6, np.asarray(pair.effective_radius(c)) * 1e6)
+    radius.set_ylabel("R_ef [µm]")
+    sliding.plot(c * 1e6, pair.sliding_velocity(c))
+    sliding.axhline(0.0, color="k", lw=0.5)
+    sliding.set_ylabel("sliding velocity [m/s]")
+    hertz = pair.hertz(c, load * np.asarray(pair.load_share(c, "dry")), contact_modulus)
+    width.plot(c * 1e6, np.asarray(hertz.half_width) * 1e9)
+    width.set_ylabel("Hertz half-width a [nm]")
+    for ax in axes[1]:
+        ax.set_xlabel("position on the line of action c [µm]")
+    figure.tight_layout()
+    return figure
+
+
 def plot_energy(dataset, title=""):
     """Energy dissipated per step by mechanism over the meshing cycle (Figure 4-47)."""
     from .output import new_figure
@@ -628,10 +653,15 @@ class RunChain:
         """Gear pair geometry, Hertz contact at the pitch point and F_t (4-27)."""
         from .cli.gear import gear_summary
 
-        _module("gear")
+        gear = _module("gear")
         values, units = gear_summary(self.params)
         self._json({"values": values, "units": units}, "gear")
         self.summaries["gear"] = values
+        pair = gear.GearPair.from_parameters(self.params)
+        self._figure(plot_gear(pair, self.params["normal_load"], values["contact_modulus"]), "gear_path_of_contact",
+                     "Along the path of contact: load share of one tooth pair (dry: half the load in double-tooth "
+                     "contact; lubricated, Figure 4-11), effective radius R_ef (4-11), sliding velocity u1 - u2 "
+                     "(4-12, signed radii) and Hertz half-width (4-24) at the external load.")
 
     def _simulate(self, params, coating=None, wear=1.0):
         mesh = _module("mesh")
