@@ -183,3 +183,9 @@ def test_degree_two_matches_reference_hertz_sphere():
     np.testing.assert_allclose(power_law_pressure(r, loads[-1], 2, 1 / (2 * radius), modulus),
                                reference.hertz_sphere_pressure(r, loads[-1], radius, modulus), rtol=1e-12,
                                atol=1e-3)
+
+
+def test_cli_singular_centre_is_null_in_json(cli):
+    out = cli.json("asperity", "--load", "1e-6", "--degree", "1", "--shape-coefficient", "0.5")
+    assert out["max_pressure"] is None  # infinite: the cone's pressure is singular at the centre
+    assert out["mean_pressure"] > 0

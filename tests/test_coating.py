@@ -180,3 +180,11 @@ def test_cli_table_and_json_points(cli, tmp_path):
         assert (tmp_path / name).stat().st_size > 0
     code, text, err = cli("coating", "--wear", "0,0.5", "--steps", str(STEPS))
     assert code == 0 and "cof_chemical" in text and "mN" in text
+
+
+def test_cli_calibrate_and_percent_wear(cli):
+    out = cli.json("coating", "--calibrate", "0.3", "--steps", str(STEPS))
+    assert out["converged"] and out["cof_after"] == pytest.approx(0.3, rel=1e-3)
+    assert out["vdw_bond_energy_after"] == pytest.approx(out["factor"] * out["vdw_bond_energy_before"])
+    half = cli.json("coating", "--wear", "50%", "--steps", str(STEPS))
+    assert half["wear"] == 0.5
