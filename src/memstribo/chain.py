@@ -460,6 +460,25 @@ def plot_gear(pair, load, contact_modulus, points=401):
     return figure
 
 
+def plot_block_loads(dataset, title=""):
+    """Normal load of every nanoblock over the meshing cycle (the load peaks of thesis Figure 5-18)."""
+    from .output import new_figure
+
+    loads = np.asarray(dataset["block_load"].values) * 1e6  # (step, block)
+    c = np.asarray(dataset["c"].values) * 1e6 if "c" in dataset.coords else np.arange(loads.shape[0])
+    figure, (image_ax, peak_ax) = new_figure(2, 1, figsize=(7, 5.5), sharex=True,
+                                             gridspec_kw={"height_ratios": [2, 1]})
+    image = image_ax.imshow(loads.T, aspect="auto", origin="lower", cmap="viridis", interpolation="nearest",
+                            extent=(c[0], c[-1], -0.5, loads.shape[1] - 0.5))
+    figure.colorbar(image, ax=[image_ax, peak_ax], label="block load [µN]", fraction=0.04)
+    image_ax.set_ylabel("nanoblock (flank, row, index)")
+    image_ax.set_title(title, fontsize=10)
+    peak_ax.plot(c, loads.max(axis=1), lw=0.8)
+    peak_ax.set_ylabel("largest block load [µN]")
+    peak_ax.set_xlabel("position on the line of action c [µm]")
+    return figure
+
+
 def plot_energy(dataset, title=""):
     """Energy dissipated per step by mechanism over the meshing cycle (Figure 4-47)."""
     from .output import new_figure
@@ -724,6 +743,11 @@ class RunChain:
         self._figure(plot_cycle(dataset, self._tangential_force(), f"{self.options.coating}-coated, Omega = 0"),
                      "mesh_coated_forces_cof", f"Meshing cycle of the {self.options.coating}-coated pair "
                      "(no chemical bonds): forces against F_t and the COF split.")
+        if "block_load" in dataset:
+            self._figure(plot_block_loads(dataset, f"{self.options.coating}-coated pair, Omega = 0"),
+                         "mesh_coated_block_loads", "Normal load of every nanoblock of both flanks over the meshing "
+                         "cycle (top) and the largest one (bottom): the load peaks that damage the coating "
+                         "(thesis Figure 5-18).")
 
     def wear_sweep(self):
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
