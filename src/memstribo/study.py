@@ -541,14 +541,15 @@ def _compute(spec, todo, folder, total, already, scheduler, workers, progress) -
             future = client.submit(evaluate_point, spec.function, point.params, point.options,
                                    key=f"memstribo-{point.id}-{os.getpid()}", pure=False)
             futures[future] = point
-        for future in as_completed(futures, loop=client.loop):
-            point = futures[future]
+        for future in as_completed(list(futures), loop=client.loop):
+            point = futures.pop(future)  # release the result on the cluster once it is on disk
             try:
                 outcome = future.result()
             except Exception as exc:  # a bug in the point function: record it, carry on
                 outcome = {"values": {}, "error": f"{type(exc).__name__}: {exc}", "seconds": None}
             record = {"id": point.id, "index": point.index, "inputs": point.inputs, **outcome}
             _write_json_atomic(folder / POINTS_FOLDER / f"{point.id}.json", record)
+            future.release()
             computed += 1
             bar.update(1)
     finally:
