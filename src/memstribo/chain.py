@@ -631,11 +631,13 @@ class RunChain:
         """Nanoblock geometry from the parameters, and derived from each profile (with the rules used)."""
         geometry = _module("nanoblock.geometry")
         rows = {"parameters": geometry.NanoblockGeometry.from_parameters(self.params)}
+        notes = []
         for profile in self.results["profiles"]:
             try:
                 rows[f"from profile {profile.name}"] = geometry.nanoblock_geometry_from_profile(profile)
             except MemstriboError as exc:
-                self._current.message += f"geometry from '{profile.name}' not derived: {exc} "
+                notes.append(f"geometry from '{profile.name}' not derived: {exc}")
+        self._current.message = "; ".join(notes)
         fields = ("atomic_width", "atomic_height", "adhesive_width", "adhesive_height", "atomic_pitch",
                   "atomic_per_side", "bulk_height")
         summary = {label: {**{f: getattr(g, f) for f in fields}, "rules": dict(getattr(g, "rules", {}))}
