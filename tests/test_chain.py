@@ -65,6 +65,7 @@ def test_outputs_are_on_disk_with_units(small_run):
     assert stats["Rq"].attrs["units"] == "m"
     # the default profile is labelled synthetic, the file is named with its provenance
     assert small_run.inputs[0]["synthetic"] is True and "synthetic" in small_run.inputs[0]["source"]
+    assert [item["meshing"] for item in small_run.inputs][0] is True  # mesh_roughness = "synthetic"
     if len(small_run.inputs) > 1:
         assert small_run.inputs[1]["synthetic"] is False
         assert "si_profile_linescan" in small_run.inputs[1]["source"]

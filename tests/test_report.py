@@ -31,7 +31,7 @@ def make_result(folder: Path, params, n_figures=2, verdict=None) -> RunResult:
     inputs = [{"name": EVIL, "source": f"file {EVIL}", "synthetic": False, "Rq": 1.6e-9, "rms_slope": 0.024,
                "n_points": 100},
               {"name": "synthetic profile", "source": "synthetic: seed 1", "synthetic": True, "Rq": 1.6e-9,
-               "rms_slope": 0.024, "n_points": 100}]
+               "rms_slope": 0.024, "n_points": 100, "meshing": True}]
     verdict = verdict if verdict is not None else {
         "tangential_force": 2.82e-3, "bare_friction_force_max": 4e-3, "bare_stiction_margin": -1.18e-3,
         "bare_stiction": True, "bare_cof_mean": 0.8, "coated_friction_force_max": 1e-3,
@@ -61,6 +61,7 @@ def test_report_is_self_contained_and_escapes_input_text(tmp_path, params):
     assert "STICTION" in text and "no stiction" in text and "&Omega; = 80 %" in text
     assert "850 M Pa<sup>1</sup>" in text or "8.5e+08 Pa<sup>1</sup>" in text
     assert "0.92 times as long" in text
+    assert text.count("<td>yes</td></tr>") == 1  # the profile used by the meshing stages
     assert "The question" in text and "synthetic (generated, seeded)" in text and "measured" in text
     assert "Validation: thesis against memstribo" in text and "<th>tolerance</th>" in text
     assert "COF &lt;falls&gt; with load" in text and "thesis 4.7 (4-27)" in text

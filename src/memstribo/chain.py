@@ -624,7 +624,10 @@ class RunChain:
                      "Roughness profiles after levelling (the default is synthetic, seeded; measured files as named).")
         self.results["profiles"] = profiles
         choice = self.options.mesh_roughness
-        self.results["mesh_profile"] = profiles[0] if choice == "synthetic" else profiles[1 + int(choice)]
+        index = 0 if choice == "synthetic" else 1 + int(choice)
+        self.results["mesh_profile"] = profiles[index]
+        for i, item in enumerate(self.inputs):
+            item["meshing"] = i == index
         self.summaries["roughness"] = {p.name: s.to_dict() for p, s in zip(profiles, statistics)}
 
     def geometry(self):

@@ -135,9 +135,10 @@ def _inputs_html(result) -> str:
         rows.append(f"<tr><td>{_e(item.get('name', ''))}</td><td>{_e(label)}</td><td>{_e(item.get('source', ''))}</td>"
                     f"<td class='num'>{_quantity(item.get('Rq'), 'm')}</td>"
                     f"<td class='num'>{_quantity(item.get('rms_slope'))}</td>"
-                    f"<td class='num'>{_quantity(item.get('n_points'))}</td></tr>")
+                    f"<td class='num'>{_quantity(item.get('n_points'))}</td>"
+                    f"<td>{'yes' if item.get('meshing') else ''}</td></tr>")
     roughness = ("<table><tr><th>profile</th><th>kind</th><th>provenance</th><th>Rq</th><th>rms slope</th>"
-                 "<th>points</th></tr>" + "".join(rows) + "</table>") if rows else "<p>No roughness input was read.</p>"
+                 "<th>points</th><th>used by the meshing stages</th></tr>" + "".join(rows) + "</table>") if rows else "<p>No roughness input was read.</p>"
     from .parameters import SPECS
 
     params = result.params
