@@ -99,6 +99,33 @@ def test_integral_matches_hamilton_closed_form_frictionless():
     np.testing.assert_allclose(numeric, closed, atol=2e-7 * P0)
 
 
+def test_integral_matches_hamilton_closed_form_with_friction():
+    """The tangential part of hamilton_sliding_sphere is an analytic (quadrature-free) evaluation
+    of the same field: it checks the quadrature, the weight W and the near-surface extrapolation."""
+    x, y, z = GRID.T
+    for mu in (0.2, 0.5):
+        numeric = _values(st.stress_field(x, y, z, hertz, A, mu, NU))
+        closed = _values(st.hamilton_sliding_sphere(x, y, z, A, P0, mu, NU))
+        np.testing.assert_allclose(numeric, closed, atol=2e-6 * P0)
+        deep = z >= 0.05
+        np.testing.assert_allclose(numeric[:, deep], closed[:, deep], atol=2e-8 * P0)
+
+
+def test_hamilton_tangential_closed_form_on_the_surface():
+    """Surface values of the tangential part (Hamilton 1983; Johnson 7.1) from the closed form, to 1e-9."""
+    x = np.array([-0.999, -0.5, 0.3, 0.9, 0.99])
+    both = st.hamilton_sliding_sphere(x, 0.0, 0.0, A, P0, 1.0, NU)
+    normal = st.hamilton_sliding_sphere(x, 0.0, 0.0, A, P0, 0.0, NU)
+    np.testing.assert_allclose(both.sigma_xx - normal.sigma_xx, -np.pi * (4 + NU) / 8 * x, atol=1e-9)
+    np.testing.assert_allclose(both.sigma_yy - normal.sigma_yy, -3 * np.pi * NU / 8 * x, atol=1e-9)
+    np.testing.assert_allclose(both.sigma_xz, -np.sqrt(1 - x**2), atol=1e-9)
+    # at and next to the contact edge, on the axis: the quadrature fallback keeps it continuous
+    edge = st.hamilton_sliding_sphere(np.array([-1.0, -1.0 + 1e-3, 1e-8]), 0.0, np.array([0.0, 0.0, 0.3]),
+                                      A, P0, 0.25, NU)
+    assert float(edge.sigma_xx[0]) == pytest.approx((1 - 2 * NU) / 3 + np.pi * (4 + NU) * 0.25 / 8, abs=2e-6)
+    assert np.all(np.isfinite(edge.tensor()))
+
+
 def test_hamilton_axis_and_surface_closed_forms():
     z = np.array([0.1, 0.48, 1.0, 3.0])
     s = st.hamilton_sliding_sphere(0.0, 0.0, z, A, P0, 0.0, NU)

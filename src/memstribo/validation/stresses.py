@@ -26,6 +26,8 @@ def rows() -> list[ValidationRow]:
                      for d in (0.0, 0.05, 0.3, 0.48, 1.2)])
     numeric = st.stress_field(*grid.T, hertz, a, 0.0, nu).tensor()
     closed = st.hamilton_sliding_sphere(*grid.T, a, p0, 0.0, nu).tensor()
+    numeric_f = st.stress_field(*grid.T, hertz, a, 0.3, nu).tensor()
+    closed_f = st.hamilton_sliding_sphere(*grid.T, a, p0, 0.3, nu).tensor()
     mu = 0.25
     edge = float(st.stress_field(-a, 0.0, 0.0, hertz, a, mu, nu).sigma_xx)
     x = np.linspace(-1.5, 1.5, 121)
@@ -39,6 +41,10 @@ def rows() -> list[ValidationRow]:
         compare(TOPIC, "complex-depth integral vs Hamilton closed form (max |difference|, 70 points)",
                 "Hamilton 1983, normal load", 0.0, float(np.max(np.abs(numeric - closed))), "p0", atol=2e-7,
                 command=COMMAND),
+        compare(TOPIC, "complex-depth integral vs closed form with friction mu = 0.3 (max |difference|, 70 points)",
+                "Hamilton 1983 normal load; tangential part integrated analytically", 0.0,
+                float(np.max(np.abs(numeric_f - closed_f))), "p0", atol=2e-6, command=COMMAND,
+                note="largest next to the contact edge just below the surface (near-surface extrapolation)"),
         compare(TOPIC, "tensile stress at the trailing edge, mu = 0.25", "Hamilton 1983: p0 [(1-2nu)/3 + pi(4+nu)mu/8]",
                 (1 - 2 * nu) / 3 + math.pi * (4 + nu) * mu / 8, edge, "p0", atol=2e-6, command=COMMAND),
         ValidationRow(TOPIC, "mu = 0.5: max tau_1 on the surface", "Johnson 1985 §7.1 (mu > 0.3)", 0.0,
