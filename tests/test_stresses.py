@@ -37,7 +37,7 @@ def test_boussinesq_matches_johnson_closed_form():
     np.testing.assert_allclose(s.sigma_zz, -3 * z**3 / (2 * np.pi * r**5), rtol=1e-12)
     np.testing.assert_allclose(s.sigma_xz, -3 * x * z**2 / (2 * np.pi * r**5), rtol=1e-12, atol=1e-15)
     np.testing.assert_allclose(s.sigma_yz, -3 * y * z**2 / (2 * np.pi * r**5), rtol=1e-12, atol=1e-15)
-    # Johnson (3.?) sigma_x off the axis
+    # Johnson (1985) section 3.2: sigma_x off the axis
     rho2 = x[:3] ** 2 + y[:3] ** 2
     sxx = 1 / (2 * np.pi) * ((1 - 2 * NU) / rho2 * ((1 - z[:3] / r[:3]) * (x[:3] ** 2 - y[:3] ** 2) / rho2
                                                      + z[:3] * y[:3] ** 2 / r[:3] ** 3) - 3 * z[:3] * x[:3] ** 2 / r[:3] ** 5)

@@ -175,7 +175,7 @@ def boussinesq(x, y, z, load, poisson_ratio):
     Returns
     -------
     StressField
-        E.g. sigma_zz = -3 P z³ / (2 pi R⁵) (Johnson (3.?) in [3]_).
+        E.g. sigma_zz = -3 P z³ / (2 pi R⁵) (Johnson section 3.2 in [3]_).
     """
     x, y, z = _points(x, y, z)
     if np.any(z <= 0):
@@ -256,7 +256,7 @@ def flat_punch_weight(pressure, contact_radius, *, degree: int = 96, nodes: int 
     .. math:: W(\\tau) = \\frac{2}{\\pi}\\int_\\tau^a\\frac{r\\,p(r)}{\\sqrt{r^2-\\tau^2}}dr
               = \\frac{2}{\\pi}\\int_0^{\\sqrt{a^2-\\tau^2}} p\\left(\\sqrt{\\tau^2+s^2}\\right) ds
 
-    (module notes). W(0) times pi a... : the total load is P = 2 pi int_0^a W dtau.
+    (module notes); the total load is P = 2 pi int_0^a W dtau.
 
     Parameters
     ----------
