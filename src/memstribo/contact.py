@@ -453,6 +453,31 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition):
     return np.maximum(p, 0.0), iterations, outer, False
 
 
+def _nested_guess(h, dx, modulus, target, periodic, reference, cap):
+    """Initial pressure from nested coarser grids (every other point), or (None, 0) if n is small or odd.
+
+    Each level runs the active-set method to ``_COARSE_TOLERANCE`` from the level below; its
+    result is only a guess, so a level that does not settle is used as it is (no fallback).
+    Returns the guess on this grid [Pa] and the CG iterations spent.
+    """
+    n = h.size
+    if n % 2 or n < 2 * _COARSEST:
+        return None, 0
+    coarse_h = h[::2] - h[::2].min()
+    guess, iterations = _nested_guess(coarse_h, 2.0 * dx, modulus, target, periodic, reference, cap)
+    if guess is None:
+        guess = np.full(coarse_h.size, target)
+    operator = _half_plane(coarse_h.size, 2.0 * dx, modulus, periodic, reference)
+    scale = float(coarse_h.max()) if coarse_h.max() > 0 else 1.0
+    coarse_p, used, _, _ = _active_set(operator, coarse_h, guess * (target / guess.mean()), target,
+                                       _COARSE_TOLERANCE * scale, cap, True)
+    fine = np.empty(n)
+    fine[0::2] = coarse_p
+    following = np.roll(coarse_p, -1) if periodic else np.append(coarse_p[1:], 0.0)
+    fine[1::2] = 0.5 * (coarse_p + following)
+    return fine, iterations + used
+
+
 @cites("polonsky_keer_1999", "vollebregt_2014", "johnson_1985", "model")
 def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_pressure=None, periodic=False,
                        tolerance=1e-8, max_iterations=None, reference_distance=None, initial_pressure=None,
@@ -535,19 +560,8 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     offset = float(h.min())
     h = h - offset
     scale = float(h.max()) if h.max() > 0 else 1.0  # residual scale [m]
-    if (initial_pressure is None and continuation and precondition and n % 2 == 0
-            and n >= 2 * _COARSEST):
-        # nested grids: the coarse solution (every other point) is the initial guess here
-        coarse = solve_line_contact(h[::2], 2.0 * dx, modulus, mean_pressure=target, periodic=periodic,
-                                    tolerance=max(tolerance, _COARSE_TOLERANCE), max_iterations=cap,
-                                    reference_distance=reference, precondition=True, continuation=True,
-                                    method=method)
-        coarse_p = coarse.pressure
-        coarse_iterations = coarse.iterations + coarse.coarse_iterations
-        initial_pressure = np.empty(n)
-        initial_pressure[0::2] = coarse_p
-        following = np.roll(coarse_p, -1) if periodic else np.append(coarse_p[1:], 0.0)
-        initial_pressure[1::2] = 0.5 * (coarse_p + following)
+    if initial_pressure is None and continuation and precondition:
+        initial_pressure, coarse_iterations = _nested_guess(h, dx, modulus, target, periodic, reference, cap)
     if initial_pressure is not None and np.sum(initial_pressure) > 0:
         p = np.asarray(initial_pressure, dtype=float) * (target / np.mean(initial_pressure))
     else:
