@@ -22,12 +22,14 @@ where u is the combined elastic surface displacement (positive: the surfaces mov
     zero mean displacement (the convention of ContactMechanics and Tamaas, so the same
     problem is solved).
 
-The solver is Polonsky & Keer's (1999) constrained conjugate gradient with load control,
-preconditioned with the inverse of the half-plane operator in Fourier space (E*|q|/2),
-restricted to the current contact set, in the manner of Vollebregt (2014). The operator is
-diagonal in Fourier space with a symbol |q|^-1, so without preconditioning the condition
-number grows like n and the iteration count like sqrt(n); with it the count hardly grows with
-n (docs/contact.md gives measured counts).
+The solver (load control) is a primal-dual active-set iteration: on each contact set a
+conjugate gradient preconditioned with the inverse of the half-plane operator in Fourier
+space (E*|q|/2), restricted to the set, in the manner of Vollebregt (2014); the initial guess
+from nested coarser grids; Polonsky & Keer's (1999) constrained conjugate gradient as the
+fallback and alternative. The operator is diagonal in Fourier space with a symbol |q|^-1, so
+plain CG iteration counts grow quickly with n; here they grow roughly like sqrt(n) and the
+measured lead over Tamaas and ContactMechanics widens with n (docs/contact.md,
+bench/README-contact.md).
 
 References
 ----------
@@ -50,7 +52,7 @@ import scipy.fft
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "HalfPlane"]
+__all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "strip_influence", "HalfPlane"]
 
 #: Grids with fewer elements are solved directly (the coarsest level of the nested grids).
 _COARSEST = 512
@@ -175,8 +177,6 @@ class HalfPlane:
             self.green = scipy.fft.rfft(kernel, workers=FFT_WORKERS)
             q = 2.0 * np.pi * np.abs(scipy.fft.rfftfreq(self.size, d=dx))
             stiffness = 0.5 * contact_modulus * q
-        # diagonal of the preconditioner (stiffness of one element) [Pa/m]
-        self.diagonal = float(np.mean(stiffness))
         self.stiffness = stiffness
 
     def _apply(self, values, symbol):
