@@ -58,6 +58,8 @@ __all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "str
 _COARSEST = 512
 #: Tolerance of the coarse levels of the nested grids (only their contact set matters).
 _COARSE_TOLERANCE = 1e-3
+#: ... and at most this fraction of the rms height step between neighbouring points.
+_COARSE_STEP_FRACTION = 0.1
 #: Outer iterations (contact-set updates) of the active-set method before Polonsky-Keer takes over.
 _MAX_OUTER = 30
 #: Inner CG tolerance relative to the complementarity violation of the previous contact set.
@@ -468,9 +470,12 @@ def _nested_guess(h, dx, modulus, target, periodic, reference, cap):
     if guess is None:
         guess = np.full(coarse_h.size, target)
     operator = _half_plane(coarse_h.size, 2.0 * dx, modulus, periodic, reference)
+    # gap tolerance: the smaller of 1e-3 of the peak-to-valley and 1/10 of the rms step between
+    # neighbours (on long domains the first alone is too loose to predict the contact set)
     scale = float(coarse_h.max()) if coarse_h.max() > 0 else 1.0
+    local = float(np.std(np.diff(coarse_h))) or scale
     coarse_p, used, _, _ = _active_set(operator, coarse_h, guess * (target / guess.mean()), target,
-                                       _COARSE_TOLERANCE * scale, cap, True)
+                                       min(_COARSE_TOLERANCE * scale, _COARSE_STEP_FRACTION * local), cap, True)
     fine = np.empty(n)
     fine[0::2] = coarse_p
     following = np.roll(coarse_p, -1) if periodic else np.append(coarse_p[1:], 0.0)
