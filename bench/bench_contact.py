@@ -64,7 +64,7 @@ def problem(exponent, cylinder=False, seed=0, cutoff=None):
     z = self_affine_profile(n, length, seed, cutoff)
     reference = self_affine_profile(2**12, DOMAIN, seed, cutoff)
     # Same spectral shape (L down to 2 dx) at every N; the amplitude factor grows like N^0.8 (the
-    # rms slope with it, ~0.035 at 2^12). The problem is homogeneous (h and the mean pressure scale
+    # rms slope with it: 0.074 at 2^12). The problem is homogeneous (h and the mean pressure scale
     # together; the mean pressure below follows the slope), so this factor changes neither the
     # contact set nor the iterations: only the units of h and p.
     z *= RMS_HEIGHT / reference.std() * (length / DOMAIN) ** HURST
