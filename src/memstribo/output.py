@@ -41,16 +41,35 @@ def write_dataset(dataset, folder: str | Path, stem: str, csv: bool = True) -> l
     """Write ``dataset`` to ``folder/stem.nc`` (NetCDF) and, if ``csv``, ``folder/stem.csv``.
 
     Units stay as variable attributes in NetCDF; CSV column headers read ``name [unit]``.
+    The CSV holds the variables along the dataset's main dimension (see :func:`_table`);
+    the NetCDF file holds everything.
     Returns the paths written.
     """
     folder = ensure_directory(folder)
     written = [_atomic_write(folder / f"{stem}.nc", lambda tmp: dataset.to_netcdf(tmp, format="NETCDF4"))]
     if csv:
-        frame = dataset.to_dataframe()
+        frame = _table(dataset).to_dataframe()
         frame.columns = [_column_label(dataset, name) for name in frame.columns]
         frame.index.names = [_column_label(dataset, name) for name in frame.index.names]
         written.append(_atomic_write(folder / f"{stem}.csv", lambda tmp: frame.to_csv(tmp)))
     return written
+
+
+def _table(dataset):
+    """The part of ``dataset`` that is a table: variables along its main dimension.
+
+    A CSV file is a table; variables with more dimensions (per-block loads over steps, say)
+    would multiply its rows, so they stay in the NetCDF file only. The main dimension is
+    the one most one-dimensional variables run along.
+    """
+    one_dimensional = [v for v in dataset.data_vars.values() if v.ndim == 1]
+    if not one_dimensional or all(v.ndim <= 1 for v in dataset.data_vars.values()):
+        return dataset
+    dims = [v.dims[0] for v in one_dimensional]
+    main = max(set(dims), key=dims.count)
+    keep = [name for name, v in dataset.data_vars.items() if v.dims == (main,)]
+    table = dataset[keep]
+    return table.drop_vars([c for c in table.coords if table[c].dims not in ((main,), ())])
 
 
 def _column_label(dataset, name) -> str:
