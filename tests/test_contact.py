@@ -301,3 +301,28 @@ def test_fallback_to_polonsky_keer_when_the_set_does_not_settle(monkeypatch):
     sol = solve_line_contact(h, length / n, E, mean_pressure=0.5e9, periodic=True, continuation=False)
     assert sol.converged and "active-set, then polonsky-keer" in sol.message
     assert np.abs(sol.pressure - reference_solution.pressure).max() < 1e-5 * reference_solution.max_pressure
+
+
+def test_periodic_westergaard_full_contact():
+    n, wavelength, amplitude = 512, 1e-6, 2e-9
+    dx = wavelength / n
+    x = (np.arange(n) - n / 2) * dx
+    h = amplitude * (1 - np.cos(2 * np.pi * x / wavelength))
+    mean_pressure = 1.5 * np.pi * E * amplitude / wavelength  # above p*: complete contact
+    sol = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True)
+    exact = ref.westergaard_pressure(x, mean_pressure, amplitude, wavelength, E)
+    assert sol.converged and sol.contact.all()
+    assert np.abs(sol.pressure - exact).max() < 1e-10 * exact.max()  # exact in the spectral discretisation
+
+
+def test_flat_punch_free_boundary():
+    # a flat gap (rigid flat punch of the domain's width): the residual scale falls back to w/E*
+    n, half_width = 1000, 0.5e-6
+    dx = 2 * half_width / n
+    x = (np.arange(n) - n / 2 + 0.5) * dx
+    sol = solve_line_contact(np.zeros(n), dx, E, load=1.0)
+    exact = ref.flat_punch_line_pressure(x, 1.0, half_width)
+    middle = np.abs(x) < 0.5 * half_width
+    assert sol.converged and sol.contact.all()
+    assert np.abs(sol.pressure - exact)[middle].max() < 2e-3 * exact[middle].max()
+    assert "reaches the edge of the domain" in sol.message

@@ -564,7 +564,8 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
 
     offset = float(h.min())
     h = h - offset
-    scale = float(h.max()) if h.max() > 0 else 1.0  # residual scale [m]
+    # residual scale [m]: the peak-to-valley of the gap; for a flat gap the displacement scale w/E*
+    scale = float(h.max()) if h.max() > 0 else target * n * dx / modulus
     if initial_pressure is None and continuation and precondition:
         initial_pressure, coarse_iterations = _nested_guess(h, dx, modulus, target, periodic, reference, cap)
     if initial_pressure is not None and np.sum(initial_pressure) > 0:
