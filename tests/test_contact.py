@@ -326,3 +326,46 @@ def test_flat_punch_free_boundary():
     assert sol.converged and sol.contact.all()
     assert np.abs(sol.pressure - exact)[middle].max() < 2e-3 * exact[middle].max()
     assert "reaches the edge of the domain" in sol.message
+
+
+def test_small_contact_dense_path_matches_fft_path_and_direct(monkeypatch):
+    import memstribo.contact as contact_module
+
+    # a tooth-like case: Hertz gap plus roughness, a few tens of elements in contact
+    n, length, radius = 1024, 1e-6, 10e-6
+    dx = length / n
+    x = (np.arange(n) - n / 2 + 0.5) * dx
+    h = x**2 / (2 * radius) - _rough(n, length, 1e-9, seed=2)
+    h -= h.min()
+    dense = solve_line_contact(h, dx, 85e9, load=12.5, tolerance=1e-10)
+    assert 5 < dense.contact.sum() <= 64  # on the dense path (n_contact^2 <= 4 * 2048)
+    monkeypatch.setattr(contact_module, "_DENSE_MAX", 0)
+    fft = solve_line_contact(h, dx, 85e9, load=12.5, tolerance=1e-10)
+    assert dense.converged and fft.converged
+    assert np.array_equal(dense.contact, fft.contact)
+    assert np.abs(dense.pressure - fft.pressure).max() < 1e-7 * fft.max_pressure
+    A = strip_influence((np.arange(n)[:, None] - np.arange(n)[None, :]) * dx, dx, 85e9, n * dx)
+    p_direct, _ = _direct_solution_with(A, h, 12.5 / (n * dx), start=dense.contact)
+    assert np.abs(dense.pressure - p_direct).max() < 1e-7 * p_direct.max()
+
+
+def _direct_solution_with(A, h, mean_pressure, start):
+    """The direct active-set reference started from a given contact set (large grids)."""
+    n = h.size
+    contact = start.copy()
+    for _ in range(50):
+        idx = np.flatnonzero(contact)
+        m = idx.size
+        system = np.zeros((m + 1, m + 1))
+        system[:m, :m] = A[np.ix_(idx, idx)]
+        system[:m, m] = -1.0
+        system[m, :m] = 1.0
+        solution = np.linalg.solve(system, np.concatenate([-h[idx], [mean_pressure * n]]))
+        p = np.zeros(n)
+        p[idx] = solution[:m]
+        gap = h + A[:, idx] @ solution[:m] - solution[m]
+        new = (contact & (p > 0)) | (~contact & (gap < -1e-15 * np.ptp(h)))
+        if np.array_equal(new, contact):
+            return p, solution[m]
+        contact = new
+    raise AssertionError("direct reference did not settle")

@@ -60,6 +60,10 @@ _COARSEST = 512
 _COARSE_TOLERANCE = 1e-3
 #: ... and at most this fraction of the rms height step between neighbouring points.
 _COARSE_STEP_FRACTION = 0.1
+#: Contact sets up to this many elements (and n_contact^2 <= 4 x FFT size) use dense influence
+#: matrices in the CG (a BLAS matrix-vector product of this size takes a few microseconds and
+#: stays single-threaded; larger ones may go threaded, which is slow on a busy machine).
+_DENSE_MAX = 256
 #: Outer iterations (contact-set updates) of the active-set method before Polonsky-Keer takes over.
 _MAX_OUTER = 30
 #: Inner CG tolerance relative to the complementarity violation of the previous contact set.
@@ -195,6 +199,20 @@ class HalfPlane:
         spectrum = scipy.fft.rfft(full, workers=FFT_WORKERS)
         spectrum *= symbol
         return scipy.fft.irfft(spectrum, n=self.size, workers=FFT_WORKERS)[indices]
+
+    @functools.cached_property
+    def green_kernel(self):
+        """The operator in real space: displacement [m/Pa] at element offset k (modulo the FFT size)."""
+        return scipy.fft.irfft(self.green, n=self.size, workers=FFT_WORKERS)
+
+    @functools.cached_property
+    def stiffness_kernel(self):
+        """The preconditioner in real space [Pa/m], indexed like :attr:`green_kernel`."""
+        return scipy.fft.irfft(self.stiffness, n=self.size, workers=FFT_WORKERS)
+
+    def matrix(self, indices, kernel):
+        """Dense matrix of a real-space ``kernel`` between the elements ``indices``."""
+        return kernel[(indices[:, None] - indices[None, :]) % self.size]
 
     def displacement(self, pressure):
         """Combined elastic surface displacement [m] of an element pressure [Pa]."""
@@ -407,13 +425,27 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition):
         r -= r.mean()
         t = np.zeros(n_contact)
         G_old = 1.0
-        stiffness, green = operator.stiffness, operator.green
+        if n_contact <= _DENSE_MAX and n_contact**2 <= 4 * operator.size:
+            # small sets on a larger grid (a tooth contact): dense products beat full-grid FFTs
+            # (building the matrices costs ~n_contact^2 per set, so only when that is cheap)
+            influence = operator.matrix(indices, operator.green_kernel)
+            inverse = operator.matrix(indices, operator.stiffness_kernel) if precondition else None
+            apply = influence.__matmul__
+            apply_inverse = inverse.__matmul__ if precondition else None
+        else:
+            stiffness, green = operator.stiffness, operator.green
+
+            def apply(values):
+                return operator.restricted(values, indices, green)
+
+            def apply_inverse(values):
+                return operator.restricted(values, indices, stiffness)
         for inner in range(cap):
             if max(r.max(), -r.min()) <= inner_tolerance or iterations >= cap:
                 break
             iterations += 1
             if precondition:
-                z = operator.restricted(r, indices, stiffness)
+                z = apply_inverse(r)
                 z -= z.mean()
             else:
                 z = r
@@ -424,7 +456,7 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition):
             else:
                 t = z.copy()
             G_old = G
-            q = operator.restricted(t, indices, green)
+            q = apply(t)
             q -= q.mean()
             denominator = _dot(q, t)
             if denominator <= 0.0:
