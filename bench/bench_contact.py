@@ -161,6 +161,44 @@ def complementarity_residual(h, dx, pressure):
 SOLVERS = {"memstribo": run_memstribo, "tamaas": run_tamaas, "contactmechanics": run_contactmechanics}
 
 
+def tooth_timings(sizes, repeat=5, calls=10):
+    """Timings of a tooth-like free-boundary contact (Hertz gap + roughness, few elements in contact):
+    cold and warm-started solves, with the dense small-set path and with FFTs only."""
+    import memstribo.contact as contact
+
+    radius, load, modulus, length = 10e-6, 12.5, 85e9, 1e-6
+    print(f"# tooth-like contact: R = 10 um, w = 12.5 N/m, E* = 85 GPa, Rq 1 nm over 1 um, free boundary; "
+          f"best of {repeat} x {calls} solves")
+    print(f"{'N':>6} {'path':>6} {'cold [ms]':>10} {'warm [ms]':>10} {'in contact':>11}")
+    default = contact._DENSE_MAX
+    for exponent in sizes:
+        n = 2**exponent
+        dx = length / n
+        x = (np.arange(n) - n / 2 + 0.5) * dx
+        z = self_affine_profile(n, length, seed=2)
+        z *= 1e-9 / z.std()
+        h = x**2 / (2 * radius) - z
+        shifted = x**2 / (2 * radius) - np.roll(z, 1)  # one meshing step later
+        for path, dense_max in (("dense", default), ("fft", 0)):
+            contact._DENSE_MAX = dense_max
+            try:
+                first = contact.solve_line_contact(h, dx, modulus, load=load)
+                timings = []
+                for keywords in ({}, {"initial_pressure": first.pressure}):
+                    best = np.inf
+                    for _ in range(repeat):
+                        start = time.perf_counter()
+                        for _ in range(calls):
+                            contact.solve_line_contact(shifted if keywords else h, dx, modulus, load=load,
+                                                       **keywords)
+                        best = min(best, (time.perf_counter() - start) / calls)
+                    timings.append(best)
+            finally:
+                contact._DENSE_MAX = default
+            print(f"{n:>6} {path:>6} {timings[0] * 1e3:>10.2f} {timings[1] * 1e3:>10.2f} "
+                  f"{int(first.contact.sum()):>11}", flush=True)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", type=int, nargs="+", default=[10, 12, 14], help="exponents k of N = 2^k")
@@ -171,7 +209,12 @@ def main(argv=None):
                         help="short-wavelength cutoff in grid steps (default: none, roughness down to 2 steps)")
     parser.add_argument("--repeat", type=int, default=1, help="best of this many runs")
     parser.add_argument("--json", help="write the rows to this JSON file")
+    parser.add_argument("--tooth", action="store_true",
+                        help="time a tooth-like free-boundary contact instead (memstribo only)")
     args = parser.parse_args(argv)
+    if args.tooth:
+        tooth_timings(args.sizes)
+        return
 
     import scipy
 
