@@ -48,6 +48,8 @@ def format_quantity(value: float, unit: str = "") -> str:
     """``2.5e-05, "N"`` -> ``"25 uN"``: a number with an engineering prefix and its unit."""
     if value is None:
         return "-"
+    if isinstance(value, str):
+        return value
     if isinstance(value, (bool, np.bool_)):
         return "yes" if value else "no"
     if isinstance(value, (int, np.integer)) and not unit:
