@@ -33,7 +33,10 @@ of contact:
    (``m`` rows of atomic blocks across each nanoblock, aligned across the face width). As the
    two lattices slide past each other the overlaps, bond counts and block loads fluctuate (the
    peaks of Figure 5-18). Each pinion nanoblock holds van der Waals bonds over the length
-   ``L_vdW`` of its footprint where the gap is inside the adhesive layer ``h0`` (Maugis):
+   ``L_vdW`` of its footprint where the gap is inside the adhesive layer (thickness
+   ``adhesive_layer_thickness``; unset: the adhesive-block height ``H_adh``, thesis 3.5, the
+   same rule as the flat sliding models, :func:`memstribo.nanoblock.geometry.adhesive_layer_thickness`;
+   the Maugis range ``h0 = w / sigma0`` of MODEL §2 is an explicit alternative):
    ``N_vdW = w_adh L_vdW / D_chem^2`` (3-12), and adds its pull-off force
    ``sqrt(8 pi w12 E* C_NS a^3)``, ``a = L_vdW / 2`` (3-31, 3-32). All bonds break and re-form
    every bond length of sliding (3.5): the friction force of the bonds is
@@ -53,7 +56,9 @@ of contact:
 Coatings (thesis 5.5.3): the pinion's coating is fully worn; a fraction ``wear`` (Omega) of the
 gear's nanoblocks is bare, chosen deterministically by a low-discrepancy sequence over the
 block lattice. A coated gear block forms no chemical bonds; vdW bonds over it use the
-coating's bond energy, work of adhesion and cut-off distance. ``wear=1`` is bare silicon.
+coating's bond energy and work of adhesion, inside the same adhesive layer as a bare block
+(the layer is a geometric band of the nanoblock model, not a property of the chemistry).
+``wear=1`` is bare silicon.
 """
 
 from __future__ import annotations
@@ -131,13 +136,6 @@ def dundurs_beta(youngs_modulus, poisson_ratio, counter_youngs_modulus=None, cou
     nu2 = poisson_ratio if counter_poisson_ratio is None else counter_poisson_ratio
     g1, g2 = youngs_modulus / (2 * (1 + poisson_ratio)), e2 / (2 * (1 + nu2))
     return 0.5 * ((1 - 2 * poisson_ratio) / g1 - (1 - 2 * nu2) / g2) / ((1 - poisson_ratio) / g1 + (1 - nu2) / g2)
-
-
-def _adhesive_layer(work, cutoff_distance):
-    """Maugis range h0 = w / sigma0 of the adhesive layer (3-17) [m]."""
-    from .adhesion import maugis_range, maugis_stress
-
-    return float(maugis_range(work, maugis_stress(work, cutoff_distance)))
 
 
 def _work_of_adhesion(params):
@@ -330,6 +328,7 @@ def _lattice(roll, w_adh, grid_half):
 
 def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress):
     from .nanoblock.mechanics import BlockStiffness, structure_fixed_load
+    from .nanoblock.geometry import adhesive_layer_thickness
 
     pair = setup.pair
     c = setup.positions
@@ -357,12 +356,10 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     from .friction import chemical_bond_count, vdw_bond_count
 
     w_si = _work_of_adhesion(params)
-    layer = params.to_dict().get("adhesive_layer_thickness") if hasattr(params, "to_dict") else None
-    h0_si = _adhesive_layer(w_si, params["cutoff_distance"]) if layer is None else float(layer)
+    # one rule with the sliding models (thesis 3.5), for bare and coated blocks alike
+    layer = adhesive_layer_thickness(params, geometry)
     if coating is not None:
-        w_coat, h0_coat, u_vdw_coat = (float(coating.work_of_adhesion),
-                                       _adhesive_layer(coating.work_of_adhesion, coating.cutoff_distance),
-                                       float(coating.vdw_bond_energy))
+        w_coat, u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
     c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
     n_rows_solved = len(setup.pinion_profiles)
     row_weight = setup.rows / n_rows_solved
@@ -456,8 +453,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         k1_at_x = np.floor((s1[:, None] - grid[None, :]) / w_adh).astype(int)  # pinion block at each element
         k2_at_x = np.floor((s2[:, None] + grid[None, :]) / w_adh).astype(int)
         bare_x = gear_bare(k2_at_x)
-        h0_x = np.where(bare_x, h0_si, h0_coat) if coating is not None else h0_si
-        inside = gap <= h0_x
+        inside = gap <= layer
         u_vdw_x = np.where(bare_x, params["vdw_bond_energy"], u_vdw_coat) if coating is not None \
             else params["vdw_bond_energy"]
         w_x = np.where(bare_x, w_si, w_coat) if coating is not None else w_si

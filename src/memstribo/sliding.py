@@ -22,8 +22,9 @@ Geometry of the structure models (memstribo's reading of Figures 3-16 to 3-19, 3
 - a touching atomic block bonds chemically over the part of its face where the counter
   profile lies within one bond length ``D_chem`` of the face (``L_chem`` of (3-10));
 - an adhesive block forms vdW bonds over the part of its face where the counter profile lies
-  within the adhesive layer (thickness ``adhesive_layer_thickness``, thesis 3.5: the
-  adhesive-block height) below the face (``L_vdW`` of (3-12)), and adheres with the pull-off
+  within the adhesive layer (thickness ``adhesive_layer_thickness``, unset: the
+  adhesive-block height, thesis 3.5; the same rule as the meshing cycle,
+  :func:`memstribo.nanoblock.geometry.adhesive_layer_thickness`) below the face (``L_vdW`` of (3-12)), and adheres with the pull-off
   force (3-32) of a contact of half-width ``a = L_vdW / 2`` (``a = w_adh / 2`` when fully
   inside, as in 3.5);
 - every time the structure slides by ``D_chem`` all current bonds break and re-form (3.5);
@@ -47,6 +48,7 @@ import numpy as np
 from . import friction
 from .errors import InputError
 from .nanoblock import mechanics
+from .nanoblock.geometry import adhesive_layer_thickness
 from .references import cites
 
 __all__ = [
@@ -349,7 +351,7 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
     positions = _positions(distance, step)
     centres = structure_footprints(geometry, blocks)  # (n, m)
     table = _RangeMax(z)
-    layer = params["adhesive_layer_thickness"] or geometry.adhesive_height
+    layer = adhesive_layer_thickness(params, geometry)  # one rule with the meshing cycle
     stiffness = mechanics.BlockStiffness.from_geometry(geometry, params["youngs_modulus"],
                                                        constants.contact_modulus, params["threshold_strain"])
     if mode == "fixed-gap":

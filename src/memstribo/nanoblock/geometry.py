@@ -33,7 +33,8 @@ from ..errors import InputError
 from ..references import cites
 from ..roughness import Profile, asperity_widths, level_profile, rms_wavelength
 
-__all__ = ["NanoblockGeometry", "nanoblock_geometry_from_profile", "ATOMIC_HEIGHT_FACTOR", "ADHESIVE_HEIGHT_FACTOR"]
+__all__ = ["NanoblockGeometry", "nanoblock_geometry_from_profile", "adhesive_layer_thickness",
+           "ATOMIC_HEIGHT_FACTOR", "ADHESIVE_HEIGHT_FACTOR"]
 
 #: H_at / Rq (thesis 3.4.1: the atomic subscale "at 50 percent of Rq")
 ATOMIC_HEIGHT_FACTOR = 0.5
@@ -135,6 +136,38 @@ class NanoblockGeometry:
         else:
             rules["bulk_height"] = f"parameter set '{params.name}': {params.source('bulk_height')}"
         return cls(**{name: params[name] for name in names}, bulk_height=bulk, rules=rules)
+
+
+@cites("thesis")
+def adhesive_layer_thickness(params, geometry: NanoblockGeometry) -> float:
+    """Thickness of the adhesive layer of a nanoblock [m]: the one rule of every friction model.
+
+    An adhesive block forms van der Waals bonds and adheres where its gap to the counter
+    surface is inside this layer. The parameter ``adhesive_layer_thickness`` when set;
+    unset, the height of the adhesive-subscale block, ``geometry.adhesive_height`` (thesis
+    3.5, 3.6: "the thickness is assumed to be equal to the height of the adhesive subscale
+    asperity"). The layer is a geometric band of the nanoblock model, not a property of the
+    surface chemistry: bare and coated blocks use the same layer. The Maugis range
+    ``h0 = w / sigma0`` (3-17, MODEL.md §2; ``memstribo constants`` prints it) is the physical
+    alternative, available as an explicit setting (``--set adhesive_layer_thickness="0.2494 nm"``).
+
+    Used by the flat sliding models (:mod:`memstribo.sliding`) and the meshing cycle
+    (:mod:`memstribo.mesh`).
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters
+        Uses ``adhesive_layer_thickness`` [m] (optional).
+    geometry : NanoblockGeometry
+        The nanoblock geometry; its ``adhesive_height`` [m] is the default.
+
+    Returns
+    -------
+    float
+        The layer thickness [m].
+    """
+    layer = params["adhesive_layer_thickness"]
+    return float(geometry.adhesive_height if layer is None else layer)
 
 
 def _line_scans(surface):

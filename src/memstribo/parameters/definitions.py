@@ -152,7 +152,9 @@ _SPECS = [
     _positive("sliding_step", "m", "Sliding distance per step of the flat-friction models; unset: bond_length",
               optional=True),
     _positive("adhesive_layer_thickness", "m", "Thickness of the adhesive layer inside which an adhesive block "
-              "forms vdW bonds and adheres; unset: adhesive_height (thesis 3.5)", optional=True),
+              "forms vdW bonds and adheres, in the sliding models and the meshing cycle, for bare and coated "
+              "blocks alike; unset: adhesive_height (thesis 3.5); the Maugis range h0 = w/sigma0 (MODEL §2, "
+              "'memstribo constants') is the explicit alternative", optional=True),
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}
