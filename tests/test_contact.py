@@ -369,3 +369,43 @@ def _direct_solution_with(A, h, mean_pressure, start):
             return p, solution[m]
         contact = new
     raise AssertionError("direct reference did not settle")
+
+
+def test_small_grid_dense_path_matches_fft_path(monkeypatch):
+    """Small periodic grids (FFT size <= _DENSE_GRID) run the CG on dense matrices of a working set
+    that contains the contact set (masked when larger): same solution as the FFT path."""
+    import memstribo.contact as contact_module
+
+    n, length = 512, 1e-6
+    dx = length / n
+    h = -_rough(n, length, 1e-9, seed=5)
+    h -= h.min()
+    mean_pressure = 0.08 * E * np.std(np.diff(h)) / dx
+    calls = {"matrix": 0, "restricted": 0}
+    original_matrix, original_restricted = contact_module.HalfPlane.matrix, contact_module.HalfPlane.restricted
+
+    def matrix(self, indices, kernel, offsets=None):
+        calls["matrix"] += 1
+        return original_matrix(self, indices, kernel, offsets)
+
+    def restricted(self, values, indices, symbol):
+        calls["restricted"] += 1
+        return original_restricted(self, values, indices, symbol)
+
+    monkeypatch.setattr(contact_module.HalfPlane, "matrix", matrix)
+    monkeypatch.setattr(contact_module.HalfPlane, "restricted", restricted)
+    dense = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-12)
+    assert calls["matrix"] >= 2  # the dense path ran (influence + preconditioner matrices) ...
+    used_fft = calls["restricted"]
+    assert used_fft < 2 * dense.iterations  # ... for most CG iterations (the first, full set may use FFTs)
+    monkeypatch.setattr(contact_module, "_DENSE_MAX", 0)
+    fft = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-12)
+    assert calls["restricted"] - used_fft >= 2 * fft.iterations  # FFT path only
+    assert dense.converged and fft.converged
+    assert 0.05 < dense.contact.mean() < 0.4
+    assert np.array_equal(dense.contact, fft.contact)
+    assert np.abs(dense.pressure - fft.pressure).max() < 1e-10 * fft.max_pressure
+    assert dense.approach == pytest.approx(fft.approach, rel=1e-12, abs=1e-12 * np.ptp(h))
+    # the independent dense reference (explicit cosine sum, exact solves)
+    p_direct, _ = _direct_solution(_dense_operator(n, dx, True, None), h, mean_pressure)
+    assert np.abs(dense.pressure - p_direct).max() < 1e-9 * p_direct.max()

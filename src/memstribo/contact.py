@@ -64,6 +64,10 @@ _COARSE_STEP_FRACTION = 0.1
 #: matrices in the CG (a BLAS matrix-vector product of this size takes a few microseconds and
 #: stays single-threaded; larger ones may go threaded, which is slow on a busy machine).
 _DENSE_MAX = 256
+#: ... or, for sets up to _DENSE_MAX, on grids of at most this FFT size, where the overhead of the
+#: FFT calls (~7 us each) dominates. The matrices are built on a working set of at most
+#: _DENSE_MAX elements that holds the contact set, and reused while later sets stay inside it.
+_DENSE_GRID = 1024
 #: Outer iterations (contact-set updates) of the active-set method before Polonsky-Keer takes over.
 _MAX_OUTER = 30
 #: Inner CG tolerance relative to the complementarity violation of the previous contact set.
@@ -210,9 +214,20 @@ class HalfPlane:
         """The preconditioner in real space [Pa/m], indexed like :attr:`green_kernel`."""
         return scipy.fft.irfft(self.stiffness, n=self.size, workers=FFT_WORKERS)
 
-    def matrix(self, indices, kernel):
-        """Dense matrix of a real-space ``kernel`` between the elements ``indices``."""
-        return kernel[(indices[:, None] - indices[None, :]) % self.size]
+    def offsets(self, indices):
+        """Distances |i - j| (in elements) between the elements ``indices``, as a square index array."""
+        differences = indices[:, None] - indices[None, :]
+        return np.abs(differences, out=differences)
+
+    def matrix(self, indices, kernel, offsets=None):
+        """Dense matrix of a real-space ``kernel`` between the elements ``indices``.
+
+        Both kernels are even (k[size - j] = k[j]) and offsets stay below n <= size, so the
+        matrix is gathered at |i - j| (exactly symmetric); ``offsets`` may be given precomputed.
+        """
+        if offsets is None:
+            offsets = self.offsets(indices)
+        return kernel.take(offsets)
 
     def displacement(self, pressure):
         """Combined elastic surface displacement [m] of an element pressure [Pa]."""
@@ -408,31 +423,46 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition):
     contact = p > 0.0
     iterations = 0
     violation = np.inf
+    space = member = influence = inverse = None  # dense path: working set and its matrices
     for outer in range(1, _MAX_OUTER + 1):
         n_contact = np.count_nonzero(contact)
         if n_contact == 0:
             return p, iterations, outer, False
         p_previous = p
         indices = np.flatnonzero(contact)
-        p = np.zeros(n)
-        p_c = p_previous[indices]
-        p_c += (total - p_c.sum()) / n_contact
-        p[indices] = p_c
         # inexact inner solve: no tighter than needed to tell the next contact set
         inner_tolerance = max(0.5 * tolerance, _INNER_FACTOR * violation)
-        # CG on the contact set only, on compressed vectors (FFTs on the full grid)
-        r = (h + operator.displacement(p))[indices]
-        r -= r.mean()
-        t = np.zeros(n_contact)
-        G_old = 1.0
-        if n_contact <= _DENSE_MAX and n_contact**2 <= 4 * operator.size:
-            # small sets on a larger grid (a tooth contact): dense products beat full-grid FFTs
-            # (building the matrices costs ~n_contact^2 per set, so only when that is cheap)
-            influence = operator.matrix(indices, operator.green_kernel)
-            inverse = operator.matrix(indices, operator.stiffness_kernel) if precondition else None
+        if n_contact <= _DENSE_MAX and (n_contact**2 <= 4 * operator.size or operator.size <= _DENSE_GRID):
+            # small sets on a larger grid (a tooth contact) or small grids: dense products beat
+            # full-grid FFTs. The matrices are built on a working set S that contains the contact
+            # set (~n_S^2 operations) and reused while the contact set stays inside S; vectors on
+            # S are zero outside the contact set (``mask``).
+            if space is None or not member[indices].all():
+                grown = np.union1d(space, indices) if space is not None else indices
+                space = grown if grown.size <= _DENSE_MAX else indices
+                member = np.zeros(n, dtype=bool)
+                member[space] = True
+                offsets = operator.offsets(space)
+                influence = operator.matrix(space, operator.green_kernel, offsets)
+                inverse = operator.matrix(space, operator.stiffness_kernel, offsets) if precondition else None
+                del offsets
+            mask = contact[space].astype(float) if space.size > n_contact else None
             apply = influence.__matmul__
             apply_inverse = inverse.__matmul__ if precondition else None
+            p_c = p_previous[space]
+            if mask is not None:
+                p_c *= mask
+            p_c += (total - p_c.sum()) / n_contact * (mask if mask is not None else 1.0)
+            r = h[space] + apply(p_c)
+            packed = space
         else:
+            # CG on the contact set only, on compressed vectors (FFTs on the full grid)
+            mask, packed = None, indices
+            p = np.zeros(n)
+            p_c = p_previous[indices]
+            p_c += (total - p_c.sum()) / n_contact
+            p[indices] = p_c
+            r = (h + operator.displacement(p))[indices]
             stiffness, green = operator.stiffness, operator.green
 
             def apply(values):
@@ -440,13 +470,24 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition):
 
             def apply_inverse(values):
                 return operator.restricted(values, indices, stiffness)
+        if mask is not None:
+            r *= mask
+            r -= (r.sum() / n_contact) * mask
+        else:
+            r -= r.sum() / n_contact
+        t = None
+        G_old = 1.0
         for inner in range(cap):
             if max(r.max(), -r.min()) <= inner_tolerance or iterations >= cap:
                 break
             iterations += 1
             if precondition:
                 z = apply_inverse(r)
-                z -= z.mean()
+                if mask is not None:
+                    z *= mask
+                    z -= (z.sum() / n_contact) * mask
+                else:
+                    z -= z.sum() / n_contact
             else:
                 z = r
             G = _dot(r, z)
@@ -457,14 +498,19 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition):
                 t = z.copy()
             G_old = G
             q = apply(t)
-            q -= q.mean()
+            if mask is not None:
+                q *= mask
+                q -= (q.sum() / n_contact) * mask
+            else:
+                q -= q.sum() / n_contact
             denominator = _dot(q, t)
             if denominator <= 0.0:
                 break
             tau = _dot(r, t) / denominator
             p_c -= tau * t
             r -= tau * q
-        p[indices] = p_c
+        p = np.zeros(n)
+        p[packed] = p_c
         g = h + operator.displacement(p)
         gap = g - g[contact].sum() / n_contact
         new = (contact & (p > 0.0)) | (~contact & (gap < 0.0))
