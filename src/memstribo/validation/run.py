@@ -31,7 +31,13 @@ def rows() -> list[ValidationRow]:
                                  80.0, None, "%", "abs 10", False, COMMAND,
                                  "no worn fraction of the sweep reaches stiction"))
     else:
-        out.append(compare("run", "worn fraction Omega at which stiction returns", "thesis 5.5.3 (F_f close to F_t "
-                           "at Omega = 80 %)", 80.0, critical * 100.0, "%", atol=10.0, command=COMMAND,
-                           note="the margin F_t - F_f of the sweep Omega = 0, 0.2, ..., 1 interpolated linearly to 0"))
+        how = "the margin F_t - F_f of the sweep Omega = 0, 0.2, ..., 1 interpolated linearly to 0"
+        row = compare("run", "worn fraction Omega at which stiction returns", "thesis 5.5.3 (F_f close to F_t "
+                      "at Omega = 80 %)", 80.0, critical * 100.0, "%", atol=10.0, command=COMMAND, note=how)
+        if not row.agrees:
+            row = compare("run", row.quantity, row.reference, 80.0, critical * 100.0, "%", atol=10.0, command=COMMAND,
+                          note=f"differs: {how}; the friction force of the vdW bonds inside the adhesive layer is "
+                               "already large at small Omega (F_f of about 1 mN at Omega = 0.2), so F_f reaches F_t "
+                               "earlier than in the thesis (docs/coating.md)")
+        out.append(row)
     return out
