@@ -371,9 +371,11 @@ def _direct_solution_with(A, h, mean_pressure, start):
     raise AssertionError("direct reference did not settle")
 
 
-def test_small_grid_dense_path_matches_fft_path(monkeypatch):
-    """Small periodic grids (FFT size <= _DENSE_GRID) run the CG on dense matrices of a working set
-    that contains the contact set (masked when larger): same solution as the FFT path."""
+@pytest.mark.parametrize("path", ["direct", "dense-cg"])
+def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
+    """Small periodic grids (FFT size <= _DENSE_GRID): contact sets up to _DIRECT_MAX are solved by
+    Cholesky ("direct"), or else by the CG on dense matrices of a working set that contains the
+    contact set, masked when larger ("dense-cg"): the same solution as the FFT path."""
     import memstribo.contact as contact_module
 
     n, length = 512, 1e-6
@@ -381,8 +383,9 @@ def test_small_grid_dense_path_matches_fft_path(monkeypatch):
     h = -_rough(n, length, 1e-9, seed=5)
     h -= h.min()
     mean_pressure = 0.08 * E * np.std(np.diff(h)) / dx
-    calls = {"matrix": 0, "restricted": 0}
+    calls = {"matrix": 0, "restricted": 0, "direct": 0}
     original_matrix, original_restricted = contact_module.HalfPlane.matrix, contact_module.HalfPlane.restricted
+    original_direct = contact_module._direct_solution
 
     def matrix(self, indices, kernel, offsets=None):
         calls["matrix"] += 1
@@ -392,13 +395,25 @@ def test_small_grid_dense_path_matches_fft_path(monkeypatch):
         calls["restricted"] += 1
         return original_restricted(self, values, indices, symbol)
 
+    def direct(*args):
+        calls["direct"] += 1
+        return original_direct(*args)
+
     monkeypatch.setattr(contact_module.HalfPlane, "matrix", matrix)
     monkeypatch.setattr(contact_module.HalfPlane, "restricted", restricted)
+    monkeypatch.setattr(contact_module, "_direct_solution", direct)
+    if path == "dense-cg":
+        monkeypatch.setattr(contact_module, "_DIRECT_MAX", 0)
     dense = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-12)
-    assert calls["matrix"] >= 2  # the dense path ran (influence + preconditioner matrices) ...
+    if path == "direct":
+        assert calls["direct"] >= 2  # the final contact set was solved directly
+        assert dense.residual < 1e-13  # exact solve: rounding only
+    else:
+        assert calls["direct"] == 0 and calls["matrix"] >= 2  # influence + preconditioner matrices ...
+        assert calls["restricted"] < 2 * dense.iterations  # ... for most CG iterations (not the first, full set)
     used_fft = calls["restricted"]
-    assert used_fft < 2 * dense.iterations  # ... for most CG iterations (the first, full set may use FFTs)
     monkeypatch.setattr(contact_module, "_DENSE_MAX", 0)
+    monkeypatch.setattr(contact_module, "_DIRECT_MAX", 0)
     fft = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-12)
     assert calls["restricted"] - used_fft >= 2 * fft.iterations  # FFT path only
     assert dense.converged and fft.converged
@@ -409,3 +424,21 @@ def test_small_grid_dense_path_matches_fft_path(monkeypatch):
     # the independent dense reference (explicit cosine sum, exact solves)
     p_direct, _ = _direct_solution(_dense_operator(n, dx, True, None), h, mean_pressure)
     assert np.abs(dense.pressure - p_direct).max() < 1e-9 * p_direct.max()
+
+
+def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
+    import memstribo.contact as contact_module
+
+    n, dx = 400, 1e-9
+    x = (np.arange(n) - n / 2 + 0.5) * dx
+    h = x**2 / (2 * R)
+    direct = solve_line_contact(h, dx, E, load=W, tolerance=1e-10)
+
+    def not_definite(*args, **kwargs):
+        raise np.linalg.LinAlgError("not positive definite")
+
+    monkeypatch.setattr(contact_module.scipy.linalg, "cho_factor", not_definite)
+    fallback = solve_line_contact(h, dx, E, load=W, tolerance=1e-10)
+    assert direct.converged and fallback.converged
+    assert np.array_equal(direct.contact, fallback.contact)
+    assert np.abs(direct.pressure - fallback.pressure).max() < 1e-8 * direct.max_pressure
