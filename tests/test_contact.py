@@ -442,3 +442,21 @@ def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
     assert direct.converged and fallback.converged
     assert np.array_equal(direct.contact, fallback.contact)
     assert np.abs(direct.pressure - fallback.pressure).max() < 1e-8 * direct.max_pressure
+
+
+@pytest.mark.parametrize("load_factor", [0.25, 1.0, 10.0])  # ~5 %, ~20 %, ~90 % contact
+def test_cold_start_on_the_lower_gap_same_answer_as_uniform_start(monkeypatch, load_factor):
+    import memstribo.contact as contact_module
+
+    n, length = 1024, 1e-6
+    dx = length / n
+    h = -_rough(n, length, 1e-9, seed=7)
+    mean_pressure = load_factor * 0.08 * E * np.std(np.diff(h)) / dx
+    solutions = []
+    for fraction in (contact_module._START_FRACTION, 1.0):
+        monkeypatch.setattr(contact_module, "_START_FRACTION", fraction)
+        solutions.append(solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-11))
+    lower, uniform = solutions
+    assert lower.converged and uniform.converged
+    assert np.array_equal(lower.contact, uniform.contact)
+    assert np.abs(lower.pressure - uniform.pressure).max() < 1e-8 * uniform.max_pressure
