@@ -170,7 +170,7 @@ def tooth_timings(sizes, repeat=5, calls=10):
     print(f"# tooth-like contact: R = 10 um, w = 12.5 N/m, E* = 85 GPa, Rq 1 nm over 1 um, free boundary; "
           f"best of {repeat} x {calls} solves")
     print(f"{'N':>6} {'path':>6} {'cold [ms]':>10} {'warm [ms]':>10} {'in contact':>11}")
-    default = contact._DENSE_MAX
+    default = contact._DENSE_MAX, contact._DIRECT_MAX
     for exponent in sizes:
         n = 2**exponent
         dx = length / n
@@ -179,8 +179,8 @@ def tooth_timings(sizes, repeat=5, calls=10):
         z *= 1e-9 / z.std()
         h = x**2 / (2 * radius) - z
         shifted = x**2 / (2 * radius) - np.roll(z, 1)  # one meshing step later
-        for path, dense_max in (("dense", default), ("fft", 0)):
-            contact._DENSE_MAX = dense_max
+        for path, dense_max in (("dense", default[0]), ("fft", 0)):
+            contact._DENSE_MAX = contact._DIRECT_MAX = dense_max
             try:
                 first = contact.solve_line_contact(h, dx, modulus, load=load)
                 timings = []
@@ -194,7 +194,7 @@ def tooth_timings(sizes, repeat=5, calls=10):
                         best = min(best, (time.perf_counter() - start) / calls)
                     timings.append(best)
             finally:
-                contact._DENSE_MAX = default
+                contact._DENSE_MAX, contact._DIRECT_MAX = default
             print(f"{n:>6} {path:>6} {timings[0] * 1e3:>10.2f} {timings[1] * 1e3:>10.2f} "
                   f"{int(first.contact.sum()):>11}", flush=True)
 

@@ -434,11 +434,15 @@ def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
     h = x**2 / (2 * R)
     direct = solve_line_contact(h, dx, E, load=W, tolerance=1e-10)
 
-    def not_definite(*args, **kwargs):
-        raise np.linalg.LinAlgError("not positive definite")
+    calls = []
 
-    monkeypatch.setattr(contact_module.scipy.linalg, "cho_factor", not_definite)
+    def not_definite(names, arrays):  # LAPACK potrf reporting "not positive definite" (info > 0)
+        calls.append(names)
+        return (lambda a, **kwargs: (a, 1)), (lambda c, b, **kwargs: (b, 0))
+
+    monkeypatch.setattr(contact_module.scipy.linalg, "get_lapack_funcs", not_definite)
     fallback = solve_line_contact(h, dx, E, load=W, tolerance=1e-10)
+    assert calls  # the direct path was tried
     assert direct.converged and fallback.converged
     assert np.array_equal(direct.contact, fallback.contact)
     assert np.abs(direct.pressure - fallback.pressure).max() < 1e-8 * direct.max_pressure
