@@ -613,6 +613,11 @@ def _nested_guess(h, dx, modulus, target, periodic, reference, cap):
     fine[0::2] = coarse_p
     following = np.roll(coarse_p, -1) if periodic else np.append(coarse_p[1:], 0.0)
     fine[1::2] = 0.5 * (coarse_p + following)
+    if _half_plane(n, dx, modulus, periodic, reference).size <= _DENSE_GRID:
+        # the fine grid is solved directly (exact solves, fewer set updates from a set close to
+        # the final one): in contact only between two coarse points in contact. (The CG levels
+        # of larger grids converge faster from the wider set of plain interpolation.)
+        fine[1::2] *= (coarse_p > 0) & (following > 0)
     return fine, iterations + used
 
 
