@@ -584,8 +584,9 @@ def _cold_start(h, target):
     """Initial pressure [Pa] without a guess: uniform on the lower part of the gap (``_START_FRACTION``)."""
     if _START_FRACTION >= 1.0:
         return np.full(h.size, target)
-    low = h <= np.quantile(h, _START_FRACTION)
-    return np.where(low, target / low.mean(), 0.0)
+    k = int(_START_FRACTION * (h.size - 1))
+    low = h <= np.partition(h, k)[k]
+    return np.where(low, target * h.size / np.count_nonzero(low), 0.0)
 
 
 def _nested_guess(h, dx, modulus, target, periodic, reference, cap):
