@@ -3,6 +3,7 @@
 Usage::
 
     python -m memstribo.validation                 # writes docs/validation.md of this checkout
+                                                   # (./validation.md when installed, not a checkout)
     python -m memstribo.validation --output FILE   # elsewhere ('-' for stdout)
     python -m memstribo.validation --check         # exit 1 if docs/validation.md is out of date
 
@@ -19,7 +20,15 @@ from pathlib import Path
 
 from . import ValidationRow, all_rows
 
-DEFAULT_OUTPUT = Path(__file__).resolve().parents[3] / "docs" / "validation.md"
+def _default_output() -> Path:
+    """docs/validation.md of the source checkout this module runs from, else ./validation.md."""
+    checkout = Path(__file__).resolve().parents[3]
+    if (checkout / "pyproject.toml").is_file() and (checkout / "docs").is_dir():
+        return checkout / "docs" / "validation.md"
+    return Path.cwd() / "validation.md"
+
+
+DEFAULT_OUTPUT = _default_output()
 
 HEADER = """\
 # Validation: memstribo against the thesis, closed forms and invariants
