@@ -464,3 +464,21 @@ def test_cold_start_on_the_lower_gap_same_answer_as_uniform_start(monkeypatch, l
     assert lower.converged and uniform.converged
     assert np.array_equal(lower.contact, uniform.contact)
     assert np.abs(lower.pressure - uniform.pressure).max() < 1e-8 * uniform.max_pressure
+
+
+def test_small_problem_measures_same_answer_as_large_problem_path(monkeypatch):
+    """Up to _SMALL_PROBLEM elements: direct solves, cold start, short coarse levels; above: the
+    plain nested CG levels. Both give the same solution."""
+    import memstribo.contact as contact_module
+
+    n, length = 2048, 1e-6
+    dx = length / n
+    h = -_rough(n, length, 1e-9, seed=11)
+    mean_pressure = 0.08 * E * np.std(np.diff(h)) / dx
+    small = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-11)
+    monkeypatch.setattr(contact_module, "_SMALL_PROBLEM", 0)
+    large = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-11)
+    assert small.converged and large.converged
+    assert (small.iterations, small.coarse_iterations) != (large.iterations, large.coarse_iterations)
+    assert np.array_equal(small.contact, large.contact)
+    assert np.abs(small.pressure - large.pressure).max() < 1e-8 * large.max_pressure

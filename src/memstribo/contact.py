@@ -78,6 +78,9 @@ _DIRECT_MAX = 256
 #: p < 0 leave more slowly, so an under-estimate is cheaper than full contact: 1.1-1.5x faster
 #: cold solves at 5-20 % contact, ~5 % slower at 45-90 % (bench/README-contact.md).
 _START_FRACTION = 0.3
+#: Problems up to this many elements use the measures for small problems: direct solves on small
+#: grids, the cold start above, short directly solved coarse levels and the narrower interpolation.
+_SMALL_PROBLEM = 2**14
 #: Coarse levels solved directly (exact solves) stop after this many set updates: only a guess
 #: is needed, and the fine grid settles the set (2^10: 2.15 -> 1.96 ms; 2^12-2^14 no slower).
 _COARSE_MAX_OUTER = 3
@@ -425,8 +428,8 @@ def _polonsky_keer(operator, h, p, target, tolerance, scale, cap, precondition, 
     return p, g, contact, g_mean, residual, iteration
 
 
-def _use_direct(operator, n_contact):
-    return n_contact <= _DIRECT_MAX and operator.size <= _DENSE_GRID
+def _use_direct(operator, n_contact, small):
+    return small and n_contact <= _DIRECT_MAX and operator.size <= _DENSE_GRID
 
 
 def _direct_solution(operator, h, indices, total):
@@ -458,7 +461,7 @@ def _direct_solution(operator, h, indices, total):
     return p
 
 
-def _active_set(operator, h, p, target, tolerance, cap, precondition, max_outer=None):
+def _active_set(operator, h, p, target, tolerance, cap, precondition, max_outer=None, small=True):
     """Primal-dual active set: PCG on a fixed contact set, then update the set; until it settles.
 
     Returns the pressure, the CG iterations used, the outer iterations and whether the set
@@ -478,11 +481,12 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition, max_outer=
         indices = np.flatnonzero(contact)
         # inexact inner solve: no tighter than needed to tell the next contact set
         inner_tolerance = max(0.5 * tolerance, _INNER_FACTOR * violation)
-        p = _direct_solution(operator, h, indices, total) if _use_direct(operator, n_contact) else None
+        p = _direct_solution(operator, h, indices, total) if _use_direct(operator, n_contact, small) else None
         if p is not None:
             iterations += 1  # one direct solve counted as one iteration
         else:
-            if n_contact <= _DENSE_MAX and (n_contact**2 <= 4 * operator.size or operator.size <= _DENSE_GRID):
+            if n_contact <= _DENSE_MAX and (n_contact**2 <= 4 * operator.size
+                                            or small and operator.size <= _DENSE_GRID):
                 # small sets on a larger grid (a tooth contact) or small grids: dense products beat
                 # full-grid FFTs. The matrices are built on a working set S that contains the contact
                 # set (~n_S^2 operations) and reused while the contact set stays inside S; vectors on
@@ -583,16 +587,16 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition, max_outer=
     return np.maximum(p, 0.0), iterations, outer, False
 
 
-def _cold_start(h, target):
+def _cold_start(h, target, small=True):
     """Initial pressure [Pa] without a guess: uniform on the lower part of the gap (``_START_FRACTION``)."""
-    if _START_FRACTION >= 1.0:
+    if _START_FRACTION >= 1.0 or not small:
         return np.full(h.size, target)
     k = int(_START_FRACTION * (h.size - 1))
     low = h <= np.partition(h, k)[k]
     return np.where(low, target * h.size / np.count_nonzero(low), 0.0)
 
 
-def _nested_guess(h, dx, modulus, target, periodic, reference, cap):
+def _nested_guess(h, dx, modulus, target, periodic, reference, cap, small=True):
     """Initial pressure from nested coarser grids (every other point), or (None, 0) if n is small or odd.
 
     Each level runs the active-set method to ``_COARSE_TOLERANCE`` from the level below; its
@@ -603,9 +607,9 @@ def _nested_guess(h, dx, modulus, target, periodic, reference, cap):
     if n % 2 or n < 2 * _COARSEST:
         return None, 0
     coarse_h = h[::2] - h[::2].min()
-    guess, iterations = _nested_guess(coarse_h, 2.0 * dx, modulus, target, periodic, reference, cap)
+    guess, iterations = _nested_guess(coarse_h, 2.0 * dx, modulus, target, periodic, reference, cap, small)
     if guess is None:
-        guess = _cold_start(coarse_h, target)
+        guess = _cold_start(coarse_h, target, small)
     operator = _half_plane(coarse_h.size, 2.0 * dx, modulus, periodic, reference)
     # gap tolerance: the smaller of 1e-3 of the peak-to-valley and 1/10 of the rms step between
     # neighbours (on long domains the first alone is too loose to predict the contact set)
@@ -613,12 +617,12 @@ def _nested_guess(h, dx, modulus, target, periodic, reference, cap):
     local = float(np.std(np.diff(coarse_h))) or scale
     coarse_p, used, _, _ = _active_set(operator, coarse_h, guess * (target / guess.mean()), target,
                                        min(_COARSE_TOLERANCE * scale, _COARSE_STEP_FRACTION * local), cap, True,
-                                       _COARSE_MAX_OUTER if operator.size <= _DENSE_GRID else None)
+                                       _COARSE_MAX_OUTER if small and operator.size <= _DENSE_GRID else None, small)
     fine = np.empty(n)
     fine[0::2] = coarse_p
     following = np.roll(coarse_p, -1) if periodic else np.append(coarse_p[1:], 0.0)
     fine[1::2] = 0.5 * (coarse_p + following)
-    if _half_plane(n, dx, modulus, periodic, reference).size <= _DENSE_GRID:
+    if small and _half_plane(n, dx, modulus, periodic, reference).size <= _DENSE_GRID:
         # the fine grid is solved directly (exact solves, fewer set updates from a set close to
         # the final one): in contact only between two coarse points in contact. (The CG levels
         # of larger grids converge faster from the wider set of plain interpolation.)
@@ -704,23 +708,27 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     reference = float(reference_distance) if reference_distance is not None else n * dx
     cap = int(max_iterations) if max_iterations is not None else max(1000, n // 4)
     operator = _half_plane(n, dx, modulus, bool(periodic), reference)
+    # the small-problem measures (direct solves, cold start, short coarse levels) pay off up to
+    # here; above, the coarse levels' guess matters more than their cost (2^18: 5-9 % slower)
+    small = n <= _SMALL_PROBLEM
 
     offset = float(h.min())
     h = h - offset
     # residual scale [m]: the peak-to-valley of the gap; for a flat gap the displacement scale w/E*
     scale = float(h.max()) if h.max() > 0 else target * n * dx / modulus
     if initial_pressure is None and continuation and precondition:
-        initial_pressure, coarse_iterations = _nested_guess(h, dx, modulus, target, periodic, reference, cap)
+        initial_pressure, coarse_iterations = _nested_guess(h, dx, modulus, target, periodic, reference, cap, small)
     if initial_pressure is not None and np.sum(initial_pressure) > 0:
         p = np.asarray(initial_pressure, dtype=float) * (target / np.mean(initial_pressure))
     else:
-        p = _cold_start(h, target)
+        p = _cold_start(h, target, small)
 
     iteration = 0
     outer = 0
     method_used = "polonsky-keer"
     if method == "active-set":
-        p, iteration, outer, settled = _active_set(operator, h, p, target, tolerance * scale, cap, precondition)
+        p, iteration, outer, settled = _active_set(operator, h, p, target, tolerance * scale, cap, precondition,
+                                                   small=small)
         method_used = "active-set" if settled else "active-set, then polonsky-keer"
     p, g, contact, g_mean, residual, iteration = _polonsky_keer(operator, h, p, target, tolerance, scale, cap,
                                                                 precondition, iteration)
