@@ -665,8 +665,9 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
         Use the Fourier preconditioner (default). ``False`` with ``method="polonsky-keer"``
         gives the plain Polonsky-Keer iteration (for comparison).
     continuation : bool, optional
-        Start from the solution on nested coarser grids (every other point, down to 256
-        elements, solved to 1e-4) when no ``initial_pressure`` is given (default).
+        Start from the solution on nested coarser grids (every other point, down to 512
+        elements, each solved loosely, docs/contact.md) when no ``initial_pressure`` is given
+        (default).
     method : {"active-set", "polonsky-keer"}, optional
         "active-set" (default): primal-dual active set, each contact set solved by the
         preconditioned CG, falling back to Polonsky-Keer should the set not settle within 30
