@@ -675,7 +675,7 @@ class RunChain:
 
     def gear(self):
         """Gear pair geometry, Hertz contact at the pitch point and F_t (4-27)."""
-        from .cli.gear import gear_summary
+        from .gear import gear_summary
 
         gear = _module("gear")
         values, units = gear_summary(self.params)

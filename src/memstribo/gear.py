@@ -38,6 +38,7 @@ from .references import cites
 
 __all__ = [
     "GearPair",
+    "gear_summary",
     "HertzLineContact",
     "contact_modulus",
     "module_from_outer_diameters",
@@ -569,3 +570,50 @@ class GearPair:
     def hertz(self, position, load, contact_modulus):
         """Hertz line contact at c under the pair's load [N] (not shared): Eqs. (4-22)-(4-26)."""
         return hertz_line_contact(load, self.face_width, self.effective_radius(position), contact_modulus)
+
+
+def gear_summary(params) -> tuple[dict, dict]:
+    """Geometry, kinematics and the pitch-point Hertz contact of the pair (what ``memstribo gear`` prints).
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters
+        Parameter set (gear geometry, material, normal_load, drive_torque).
+
+    Returns
+    -------
+    values : dict
+        SI values: radii as [pinion, gear] pairs [m], pressure angle [rad], contact ratio [-],
+        Hertz half-width [m] and peak pressure [Pa] at the pitch point under ``normal_load``,
+        tangential force F_t = T / r_1 [N] (4-27).
+    units : dict
+        SI unit of each key.
+    """
+    pair = GearPair.from_parameters(params)
+    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"],
+                              params["counter_youngs_modulus"], params["counter_poisson_ratio"])
+    zone = pair.single_tooth_zone
+    hertz = pair.hertz(0.0, params["normal_load"], modulus)
+    values = {
+        "module": pair.module,
+        "pressure_angle": pair.pressure_angle,
+        "pitch_radii": pair.pitch_radii.tolist(),
+        "base_radii": pair.base_radii.tolist(),
+        "tip_radii": pair.tip_radii.tolist(),
+        "base_pitch": pair.base_pitch,
+        "first_contact": pair.first_contact,
+        "last_contact": pair.last_contact,
+        "path_of_contact": pair.path_of_contact,
+        "contact_ratio": pair.contact_ratio,
+        "single_tooth_zone": None if zone is None else list(zone),
+        "effective_radius_pitch": float(pair.effective_radius(0.0)),
+        "contact_modulus": modulus,
+        "hertz_half_width": float(hertz.half_width),
+        "hertz_peak_pressure": float(hertz.peak_pressure),
+        "tangential_force": tangential_force(params["drive_torque"], pair.pitch_radii[0]),
+    }
+    units = {"module": "m", "pressure_angle": "rad", "pitch_radii": "m", "base_radii": "m", "tip_radii": "m",
+             "base_pitch": "m", "first_contact": "m", "last_contact": "m", "path_of_contact": "m",
+             "contact_ratio": "", "single_tooth_zone": "m", "effective_radius_pitch": "m", "contact_modulus": "Pa",
+             "hertz_half_width": "m", "hertz_peak_pressure": "Pa", "tangential_force": "N"}
+    return values, units

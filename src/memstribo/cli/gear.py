@@ -32,46 +32,14 @@ def _module_from_option(text, params):
                                        params["addendum_coefficient"])
 
 
-def gear_summary(params) -> tuple[dict, dict]:
-    """The values and units that ``memstribo gear`` prints (SI)."""
-    from ..gear import GearPair, contact_modulus, tangential_force
-
-    pair = GearPair.from_parameters(params)
-    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"],
-                              params["counter_youngs_modulus"], params["counter_poisson_ratio"])
-    zone = pair.single_tooth_zone
-    hertz = pair.hertz(0.0, params["normal_load"], modulus)
-    values = {
-        "module": pair.module,
-        "pressure_angle": pair.pressure_angle,
-        "pitch_radii": pair.pitch_radii.tolist(),
-        "base_radii": pair.base_radii.tolist(),
-        "tip_radii": pair.tip_radii.tolist(),
-        "base_pitch": pair.base_pitch,
-        "first_contact": pair.first_contact,
-        "last_contact": pair.last_contact,
-        "path_of_contact": pair.path_of_contact,
-        "contact_ratio": pair.contact_ratio,
-        "single_tooth_zone": None if zone is None else list(zone),
-        "effective_radius_pitch": float(pair.effective_radius(0.0)),
-        "contact_modulus": modulus,
-        "hertz_half_width": float(hertz.half_width),
-        "hertz_peak_pressure": float(hertz.peak_pressure),
-        "tangential_force": tangential_force(params["drive_torque"], pair.pitch_radii[0]),
-    }
-    units = {"module": "m", "pressure_angle": "rad", "pitch_radii": "m", "base_radii": "m", "tip_radii": "m",
-             "base_pitch": "m", "first_contact": "m", "last_contact": "m", "path_of_contact": "m",
-             "contact_ratio": "", "single_tooth_zone": "m", "effective_radius_pitch": "m", "contact_modulus": "Pa",
-             "hertz_half_width": "m", "hertz_peak_pressure": "Pa", "tangential_force": "N"}
-    return values, units
-
-
 def run(args, params):
     import math
 
     if args.outer_diameters:
         params = params.updated({"module": _module_from_option(args.outer_diameters, params)},
                                 origin="--outer-diameters")
+    from ..gear import gear_summary
+
     values, units = gear_summary(params)
     notes = [
         f"  pressure angle {math.degrees(values['pressure_angle']):.4g} deg; radii as [pinion, gear]; positions c on "

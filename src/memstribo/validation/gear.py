@@ -10,7 +10,7 @@ COMMAND = "memstribo gear --json"
 
 
 def rows() -> list[ValidationRow]:
-    from ..cli.gear import gear_summary
+    from ..gear import gear_summary
     from ..parameters import get_parameter_values
 
     params = get_parameter_values()
