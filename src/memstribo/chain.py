@@ -224,8 +224,7 @@ class StageRecord:
     name, title : str
         Stage name (see :data:`STAGES`) and heading.
     status : str
-        ``"done"``, ``"skipped"`` (not asked for, or an input stage did not finish), ``"unavailable"``
-        (the model module is not part of this installation) or ``"failed"``.
+        ``"done"``, ``"skipped"`` (not asked for, or an input stage did not finish) or ``"failed"``.
     seconds : float
         Wall time [s].
     files : list of str
@@ -293,41 +292,12 @@ class RunResult:
         return all(s.status == "done" for s in self.stages if s.name in self.options.stages)
 
 
-class _StageUnavailable(Exception):
-    """A model module this stage needs is not installed (yet)."""
-
-
 def _module(name: str):
+    """Import ``memstribo.<name>`` when its stage runs (keeps ``import memstribo.chain`` light)."""
     import importlib
 
-    try:
-        return importlib.import_module(f"memstribo.{name}")
-    except ModuleNotFoundError as exc:
-        if exc.name and exc.name.startswith("memstribo"):
-            raise _StageUnavailable(f"module memstribo.{name} is not part of this installation") from None
-        raise
+    return importlib.import_module(f"memstribo.{name}")
 
-
-def _missing_module(exc: ImportError) -> str | None:
-    """The memstribo module whose absence caused ``exc``, or None if ``exc`` is something else."""
-    import importlib.util
-    import re
-
-    candidates = [exc.name or ""]
-    match = re.search(r"cannot import name '(\w+)' from '([\w.]+)'", str(exc))
-    if match:
-        candidates.insert(0, f"{match.group(2)}.{match.group(1)}")
-    for name in candidates:
-        if name.startswith("memstribo.") or name == "memstribo":
-            try:
-                if importlib.util.find_spec(name) is None:
-                    return name
-            except ModuleNotFoundError:
-                return name
-    return None
-
-
-# --- summaries and figures usable alone ----------------------------------------------------------------------
 
 def cycle_summary(dataset) -> dict[str, Any]:
     """Scalars of one meshing cycle: :func:`memstribo.mesh.summarize` (the keys of ``memstribo mesh --json``).
@@ -773,10 +743,7 @@ class RunChain:
     def damage(self):
         """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
         damage = _module("damage")
-        run = getattr(damage, "run_damage", None)
-        if run is None:
-            raise _StageUnavailable("memstribo.damage has no run_damage(params, mesh_dataset, ...) yet")
-        outcome = run(self.params, self.results["coated"], wear_sweep=self.results.get("wear_sweep"),
+        outcome = damage.run_damage(self.params, self.results["coated"], wear_sweep=self.results.get("wear_sweep"),
                       cycles_observed=self.options.cycles_observed)
         self.summaries["damage"] = dict(outcome.summary)
         for stem, dataset in getattr(outcome, "datasets", {}).items():
@@ -808,17 +775,9 @@ class RunChain:
         try:
             getattr(self, name)()
             record.status = "done"
-        except _StageUnavailable as exc:
-            record.status, record.message = "unavailable", str(exc)
         except MemstriboError as exc:
             record.status, record.message = "failed", f"{type(exc).__name__}: {exc}"
-        except Exception as exc:  # a missing module, or a bug: keep the other stages, say so loudly
-            missing = _missing_module(exc) if isinstance(exc, ImportError) else None
-            if missing is not None:
-                record.status = "unavailable"
-                record.message = f"module {missing} is not part of this installation"
-                record.seconds = time.perf_counter() - start
-                return record
+        except Exception as exc:  # a bug: keep the other stages, say so loudly
             record.status = "failed"
             record.message = f"internal error {type(exc).__name__}: {exc}"
             (self.folder / f"error_{name}.txt").write_text(traceback.format_exc(), encoding="utf-8")
