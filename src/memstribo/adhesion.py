@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .checks import as_array
 from .errors import InputError
 from .references import cites
 
@@ -42,20 +43,6 @@ __all__ = [
     "NanoscaleConstants",
     "nanoscale_constants",
 ]
-
-
-def _array(value, name: str, unit: str, *, positive: bool = True, nonnegative: bool = False) -> np.ndarray:
-    try:
-        array = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} must be a number [{unit}], got {value!r}.") from None
-    if not np.all(np.isfinite(array)):
-        raise InputError(f"{name} must be finite [{unit}], got {value!r}.")
-    if positive and np.any(array <= 0.0):
-        raise InputError(f"{name} must be > 0 [{unit}], got {value!r}.")
-    if nonnegative and np.any(array < 0.0):
-        raise InputError(f"{name} must be >= 0 [{unit}], got {value!r}.")
-    return array
 
 
 def _poisson(value, name: str = "poisson_ratio") -> np.ndarray:
@@ -101,9 +88,10 @@ def contact_modulus(youngs_modulus, poisson_ratio, counter_youngs_modulus=None, 
     >>> print(f"{contact_modulus(161e9, 0.23) / 1e9:.1f}")
     85.0
     """
-    e1 = _array(youngs_modulus, "youngs_modulus", "Pa")
+    e1 = as_array(youngs_modulus, "youngs_modulus", "Pa", positive=True)
     nu1 = _poisson(poisson_ratio)
-    e2 = e1 if counter_youngs_modulus is None else _array(counter_youngs_modulus, "counter_youngs_modulus", "Pa")
+    e2 = e1 if counter_youngs_modulus is None else as_array(counter_youngs_modulus, "counter_youngs_modulus", "Pa",
+                                                            positive=True)
     nu2 = nu1 if counter_poisson_ratio is None else _poisson(counter_poisson_ratio, "counter_poisson_ratio")
     return _result(1.0 / ((1.0 - nu1**2) / e1 + (1.0 - nu2**2) / e2))
 
@@ -136,8 +124,8 @@ def work_of_adhesion(hamaker_constant, cutoff_distance):
     >>> print(f"{work_of_adhesion(1.1e-18, 2.56e-10):.3f}")
     0.445
     """
-    a12 = _array(hamaker_constant, "hamaker_constant", "J")
-    d0 = _array(cutoff_distance, "cutoff_distance", "m")
+    a12 = as_array(hamaker_constant, "hamaker_constant", "J", positive=True)
+    d0 = as_array(cutoff_distance, "cutoff_distance", "m", positive=True)
     return _result(a12 / (12.0 * np.pi * d0**2))
 
 
@@ -166,9 +154,9 @@ def lennard_jones_surface_stress(gap, work_of_adhesion, equilibrium_distance):
     float or ndarray
         Stress [Pa].
     """
-    h = _array(gap, "gap", "m")
-    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
-    z0 = _array(equilibrium_distance, "equilibrium_distance", "m")
+    h = as_array(gap, "gap", "m", positive=True)
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True)
+    z0 = as_array(equilibrium_distance, "equilibrium_distance", "m", positive=True)
     s3 = (z0 / h) ** 3
     return _result(8.0 * w / (3.0 * z0) * (s3**3 - s3))
 
@@ -195,8 +183,8 @@ def maugis_stress(work_of_adhesion, equilibrium_distance):
     float or ndarray
         sigma0 [Pa] (1.78 GPa for silicon with w = 0.445 J/m²).
     """
-    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
-    z0 = _array(equilibrium_distance, "equilibrium_distance", "m")
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True)
+    z0 = as_array(equilibrium_distance, "equilibrium_distance", "m", positive=True)
     return _result(16.0 * w / (9.0 * math.sqrt(3.0) * z0))
 
 
@@ -216,13 +204,13 @@ def maugis_range(work_of_adhesion, maugis_stress):
     float or ndarray
         h0 [m]; with :func:`maugis_stress` it is 9 sqrt(3)/16 z0 = 0.974 z0.
     """
-    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
-    s0 = _array(maugis_stress, "maugis_stress", "Pa")
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True)
+    s0 = as_array(maugis_stress, "maugis_stress", "Pa", positive=True)
     return _result(w / s0)
 
 
 def _threshold(threshold_strain):
-    eps = _array(threshold_strain, "threshold_strain", "")
+    eps = as_array(threshold_strain, "threshold_strain", "", positive=True)
     if np.any(eps > 1.0):
         raise InputError(f"threshold_strain must lie in (0, 1], got {threshold_strain!r}.")
     return eps
@@ -259,8 +247,8 @@ def bilinear_stress(strain, modulus, threshold_strain):
     --------
     bilinear_strain : the strain of a given stress (defined for every stress >= 0).
     """
-    e = _array(strain, "strain", "", positive=False, nonnegative=True)
-    modulus = _array(modulus, "modulus", "Pa")
+    e = as_array(strain, "strain", "", nonnegative=True)
+    modulus = as_array(modulus, "modulus", "Pa", positive=True)
     eth = _threshold(threshold_strain)
     if np.any(e > eth * (1.0 + 1e-12)):
         raise InputError(
@@ -291,8 +279,8 @@ def bilinear_strain(stress, modulus, threshold_strain):
     float or ndarray
         Strain [-].
     """
-    s = _array(stress, "stress", "Pa", positive=False, nonnegative=True)
-    modulus = _array(modulus, "modulus", "Pa")
+    s = as_array(stress, "stress", "Pa", nonnegative=True)
+    modulus = as_array(modulus, "modulus", "Pa", positive=True)
     eth = _threshold(threshold_strain)
     return _result(np.minimum(s / modulus, eth))
 
@@ -362,10 +350,10 @@ def pull_off_force(work_of_adhesion, contact_modulus, no_slip_coefficient, half_
     >>> print(f"{pull_off_force(0.4452, 85.0e9, 1.0440, 97.5e-9):.3e}")
     3.034e-05
     """
-    w = _array(work_of_adhesion, "work_of_adhesion", "J/m^2")
-    e_star = _array(contact_modulus, "contact_modulus", "Pa")
-    c_ns = _array(no_slip_coefficient, "no_slip_coefficient", "")
-    a = _array(half_width, "half_width", "m")
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True)
+    e_star = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    c_ns = as_array(no_slip_coefficient, "no_slip_coefficient", "", positive=True)
+    a = as_array(half_width, "half_width", "m", positive=True)
     return _result(np.sqrt(8.0 * np.pi * w * e_star * c_ns * a**3))
 
 
@@ -394,11 +382,9 @@ def total_adhesion_force(gap, adhesive_range, pull_off_force, axis=-1):
     float or ndarray
         F_adh [N] with ``axis`` summed out.
     """
-    gap = np.asarray(gap, dtype=float)
-    if not np.all(np.isfinite(gap)):
-        raise InputError("gap must be finite [m] (NaN or infinite values given).")
-    h = _array(adhesive_range, "adhesive_range", "m", positive=False, nonnegative=True)
-    force = _array(pull_off_force, "pull_off_force", "N", positive=False, nonnegative=True)
+    gap = as_array(gap, "gap", "m")
+    h = as_array(adhesive_range, "adhesive_range", "m", nonnegative=True)
+    force = as_array(pull_off_force, "pull_off_force", "N", nonnegative=True)
     inside = gap <= h
     return _result(np.sum(np.where(inside, force, 0.0), axis=axis))
 
@@ -475,7 +461,7 @@ def nanoscale_constants(params: Mapping) -> NanoscaleConstants:
         w = work_of_adhesion(params["hamaker_constant"], params["cutoff_distance"])
         w_source = "formula (3-34): A / (12 pi D0^2)"
     else:
-        w = float(_array(params["work_of_adhesion"], "work_of_adhesion", "J/m^2"))
+        w = float(as_array(params["work_of_adhesion"], "work_of_adhesion", "J/m^2", positive=True))
         w_source = "parameter work_of_adhesion"
     c_ns = no_slip_coefficient(params["poisson_ratio"])
     a = 0.5 * float(params["adhesive_width"])

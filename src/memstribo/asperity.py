@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .checks import as_array
 from .errors import ConvergenceError, InputError
 from .references import cites
 
@@ -50,13 +51,6 @@ __all__ = [
     "nanoblock_load_sharing",
     "position_classes",
 ]
-
-
-def _check_positive(name: str, value, allow_array: bool = True) -> np.ndarray:
-    array = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(array)) or np.any(array <= 0):
-        raise InputError(f"{name} must be a finite number > 0, got {value!r}.")
-    return array
 
 
 def _check_degree(degree) -> float:
@@ -108,8 +102,8 @@ def contact_modulus(youngs_modulus: float, poisson_ratio: float, counter_youngs_
     """
     e2 = youngs_modulus if counter_youngs_modulus is None else counter_youngs_modulus
     n2 = poisson_ratio if counter_poisson_ratio is None else counter_poisson_ratio
-    _check_positive("youngs_modulus", youngs_modulus)
-    _check_positive("counter_youngs_modulus", e2)
+    as_array(youngs_modulus, "youngs_modulus", "Pa", positive=True)
+    as_array(e2, "counter_youngs_modulus", "Pa", positive=True)
     return 1.0 / ((1 - poisson_ratio ** 2) / youngs_modulus + (1 - n2 ** 2) / e2)
 
 
@@ -193,9 +187,9 @@ def power_law_contact_radius(load, degree: float, shape_coefficient: float, cont
     .. [2] F. M. Borodich, Adv. Appl. Mech. 47 (2014) 225-366.
     """
     d = _check_degree(degree)
-    _check_positive("load", load)
-    _check_positive("shape_coefficient B", shape_coefficient)
-    _check_positive("contact_modulus", contact_modulus)
+    as_array(load, "load", "N", positive=True)
+    as_array(shape_coefficient, "shape_coefficient B", "m^(1-d)", positive=True)
+    as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
     factor = _load_factor(d, float(shape_coefficient), float(contact_modulus))
     return (np.asarray(load, dtype=float) / factor) ** (1.0 / (d + 1.0))
 
@@ -377,7 +371,7 @@ def asperity_positions(per_side: int, pitch: float) -> np.ndarray:
     """
     if int(per_side) != per_side or per_side < 1:
         raise InputError(f"atomic_per_side must be an integer >= 1, got {per_side!r}.")
-    _check_positive("atomic_pitch", pitch)
+    as_array(pitch, "atomic_pitch", "m", positive=True)
     m = int(per_side)
     coords = (np.arange(m) - (m - 1) / 2.0) * pitch
     yy, xx = np.meshgrid(coords, coords, indexing="ij")
@@ -497,11 +491,11 @@ def nanoblock_load_sharing(block_load, per_side: int, pitch: float, degree: floa
     .. [1] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985.
     """
     d = _check_degree(degree)
-    loads_total = np.atleast_1d(_check_positive("block_load", block_load)).astype(float)
+    loads_total = np.atleast_1d(as_array(block_load, "block_load", "N", positive=True)).astype(float)
     if loads_total.ndim != 1:
         raise InputError("block_load must be a number or a 1-D list of loads.")
-    _check_positive("shape_coefficient B", shape_coefficient)
-    _check_positive("contact_modulus", contact_modulus)
+    as_array(shape_coefficient, "shape_coefficient B", "m^(1-d)", positive=True)
+    as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
     positions = asperity_positions(per_side, pitch)
     n = positions.shape[0]
     distance = np.linalg.norm(positions[:, None, :] - positions[None, :, :], axis=-1)

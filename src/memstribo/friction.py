@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .checks import as_array
 from .errors import InputError
 from .references import cites
 
@@ -34,17 +35,6 @@ __all__ = [
     "THESIS_3_5_INPUTS",
     "THESIS_3_5_COUNTS",
 ]
-
-
-def _array(value, name, unit, *, positive=False, nonnegative=True):
-    array = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(array)):
-        raise InputError(f"{name} must be finite [{unit}], got {value!r}.")
-    if positive and np.any(array <= 0):
-        raise InputError(f"{name} must be positive [{unit}], got {value!r}.")
-    if nonnegative and np.any(array < 0):
-        raise InputError(f"{name} must be >= 0 [{unit}], got {value!r}.")
-    return array
 
 
 def _result(value):
@@ -79,9 +69,9 @@ def chemical_bond_count(atomic_width, chemical_length, bond_length):
     >>> round(chemical_bond_count(19.5e-9, 19.5e-9, 2.35e-10), 1)  # fully overlapped block
     6885.5
     """
-    w = _array(atomic_width, "atomic_width", "m")
-    length = _array(chemical_length, "chemical_length", "m")
-    d = _array(bond_length, "bond_length", "m", positive=True)
+    w = as_array(atomic_width, "atomic_width", "m", nonnegative=True)
+    length = as_array(chemical_length, "chemical_length", "m", nonnegative=True)
+    d = as_array(bond_length, "bond_length", "m", positive=True)
     return _result(w * length / d**2)
 
 
@@ -103,9 +93,9 @@ def vdw_bond_count(adhesive_width, vdw_length, bond_length):
     numeric
         Number of bonds [-].
     """
-    w = _array(adhesive_width, "adhesive_width", "m")
-    length = _array(vdw_length, "vdw_length", "m")
-    d = _array(bond_length, "bond_length", "m", positive=True)
+    w = as_array(adhesive_width, "adhesive_width", "m", nonnegative=True)
+    length = as_array(vdw_length, "vdw_length", "m", nonnegative=True)
+    d = as_array(bond_length, "bond_length", "m", positive=True)
     return _result(w * length / d**2)
 
 
@@ -158,10 +148,10 @@ def bond_breaking_energy(bond_count, bond_energy, distance, bond_length):
     Eqs. (3-2), (3-3), (3-11), (3-13) give the energy of one rupture of all bonds,
     ``N U``; 3.5 multiplies it by the number of ruptures ``x / D_chem``.
     """
-    n = _array(bond_count, "bond_count", "-")
-    u = _array(bond_energy, "bond_energy", "J")
-    x = _array(distance, "distance", "m")
-    d = _array(bond_length, "bond_length", "m", positive=True)
+    n = as_array(bond_count, "bond_count", "-", nonnegative=True)
+    u = as_array(bond_energy, "bond_energy", "J", nonnegative=True)
+    x = as_array(distance, "distance", "m", nonnegative=True)
+    d = as_array(bond_length, "bond_length", "m", positive=True)
     return _result(n * u * x / d)
 
 
@@ -181,8 +171,8 @@ def friction_force(dissipated_energy, distance):
     numeric
         Friction force [N].
     """
-    u = _array(dissipated_energy, "dissipated_energy", "J")
-    x = _array(distance, "distance", "m", positive=True)
+    u = as_array(dissipated_energy, "dissipated_energy", "J", nonnegative=True)
+    x = as_array(distance, "distance", "m", positive=True)
     return _result(u / x)
 
 
@@ -207,10 +197,10 @@ def friction_coefficient(dissipated_energy, normal_force, adhesion_force, distan
         ``mu`` [-]. Where ``F_N + F_adh = 0`` there is no contact: ``mu`` is 0 if nothing is
         dissipated, and an :class:`InputError` is raised otherwise.
     """
-    u = _array(dissipated_energy, "dissipated_energy", "J")
-    fn = _array(normal_force, "normal_force", "N")
-    fa = _array(adhesion_force, "adhesion_force", "N")
-    x = _array(distance, "distance", "m", positive=True)
+    u = as_array(dissipated_energy, "dissipated_energy", "J", nonnegative=True)
+    fn = as_array(normal_force, "normal_force", "N", nonnegative=True)
+    fa = as_array(adhesion_force, "adhesion_force", "N", nonnegative=True)
+    x = as_array(distance, "distance", "m", positive=True)
     pressing = fn + fa
     if np.any((pressing == 0) & (u > 0)):
         raise InputError("energy is dissipated where the normal force plus the adhesion force is zero: "
@@ -264,7 +254,7 @@ def adhesion_force(pull_off_forces, axis=-1):
     --------
     memstribo.adhesion.pull_off_force : (3-32) for one block.
     """
-    f = _array(pull_off_forces, "pull_off_forces", "N")
+    f = as_array(pull_off_forces, "pull_off_forces", "N", nonnegative=True)
     return _result(f.sum(axis=axis))
 
 
@@ -365,7 +355,7 @@ def thesis_estimate(blocks, chemical_energy_per_block, vdw_energy_per_block, adh
     """
     if int(blocks) != blocks or blocks < 1:
         raise InputError(f"blocks must be a positive integer, got {blocks!r}.")
-    _array(load, "load", "N", positive=True)
+    as_array(load, "load", "N", positive=True)
     per_distance_chem = bond_breaking_energy(blocks, chemical_energy_per_block, 1.0, bond_length)
     per_distance_vdw = bond_breaking_energy(blocks, vdw_energy_per_block, 1.0, bond_length)
     mu_chem, mu_vdw = (friction_coefficient(u, load, adhesion_force, 1.0)

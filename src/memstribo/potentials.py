@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .checks import as_array
 from .errors import InputError
 from .references import cites
 
@@ -52,13 +53,6 @@ EQUILIBRIUM_FACTORS: dict[str, float] = {
 }
 
 
-def _positive(value, name: str, unit: str) -> np.ndarray:
-    array = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(array)) or np.any(array <= 0.0):
-        raise InputError(f"{name} must be a finite number > 0 [{unit}], got {value!r}.")
-    return array
-
-
 def _result(value):
     return float(value) if np.ndim(value) == 0 else value
 
@@ -76,7 +70,7 @@ def areal_density(bond_length):
     float or ndarray
         Areal density N1 [1/m²] (1.8108e19 m⁻² for silicon, thesis 3.3.4).
     """
-    bond_length = _positive(bond_length, "bond_length", "m")
+    bond_length = as_array(bond_length, "bond_length", "m", positive=True)
     return _result(1.0 / bond_length**2)
 
 
@@ -102,7 +96,7 @@ def lennard_jones_sigma(bond_length):
     >>> round(lennard_jones_sigma(2.35e-10) * 1e10, 3)
     2.094
     """
-    bond_length = _positive(bond_length, "bond_length", "m")
+    bond_length = as_array(bond_length, "bond_length", "m", positive=True)
     return _result(bond_length * 2.0 ** (-1.0 / 6.0))
 
 
@@ -133,8 +127,8 @@ def lennard_jones_epsilon(youngs_modulus, bond_length):
     >>> print(f"{lennard_jones_epsilon(161e9, 2.35e-10):.4g}")
     2.902e-20
     """
-    youngs_modulus = _positive(youngs_modulus, "youngs_modulus", "Pa")
-    bond_length = _positive(bond_length, "bond_length", "m")
+    youngs_modulus = as_array(youngs_modulus, "youngs_modulus", "Pa", positive=True)
+    bond_length = as_array(bond_length, "bond_length", "m", positive=True)
     return _result(bond_length * youngs_modulus / (72.0 * (1.0 / bond_length**2)))
 
 
@@ -156,8 +150,8 @@ def lennard_jones_modulus(epsilon, bond_length):
     float or ndarray
         Young's modulus [Pa].
     """
-    epsilon = _positive(epsilon, "epsilon", "J")
-    bond_length = _positive(bond_length, "bond_length", "m")
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    bond_length = as_array(bond_length, "bond_length", "m", positive=True)
     return _result(72.0 * epsilon / bond_length**3)
 
 
@@ -181,9 +175,9 @@ def lennard_jones_potential(separation, epsilon, sigma):
     float or ndarray
         Potential energy [J]; minimum -epsilon at r = 2^(1/6) sigma.
     """
-    r = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
+    r = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
     s6 = (sigma / r) ** 6
     return _result(4.0 * epsilon * (s6 * s6 - s6))
 
@@ -208,9 +202,9 @@ def lennard_jones_force(separation, epsilon, sigma):
     float or ndarray
         Force [N].
     """
-    r = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
+    r = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
     s6 = (sigma / r) ** 6
     return _result(24.0 * epsilon * (2.0 * s6 * s6 - s6) / r)
 
@@ -240,10 +234,10 @@ def particle_monolayer_potential(separation, epsilon, sigma, areal_density):
     float or ndarray
         Potential energy [J].
     """
-    z = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
-    n1 = _positive(areal_density, "areal_density", "1/m^2")
+    z = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
+    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**2 * (s**10 / 5.0 - s**4 / 2.0))
 
@@ -256,10 +250,10 @@ def particle_monolayer_force(separation, epsilon, sigma, areal_density):
 
     Zero at z = sigma. Parameters as :func:`particle_monolayer_potential`; returns [N].
     """
-    z = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
-    n1 = _positive(areal_density, "areal_density", "1/m^2")
+    z = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
+    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
     s = sigma / z
     return _result(8.0 * np.pi * epsilon * n1 * sigma * (s**11 - s**5))
 
@@ -288,11 +282,11 @@ def particle_half_space_potential(separation, epsilon, sigma, areal_density, lay
     float or ndarray
         Potential energy [J].
     """
-    z = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
-    n1 = _positive(areal_density, "areal_density", "1/m^2")
-    lz = _positive(layer_spacing, "layer_spacing", "m")
+    z = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
+    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
+    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**3 / lz * (s**9 / 45.0 - s**3 / 6.0))
 
@@ -306,11 +300,11 @@ def particle_half_space_force(separation, epsilon, sigma, areal_density, layer_s
     Zero at z = (2/5)^(1/6) sigma. Parameters as :func:`particle_half_space_potential`;
     returns [N].
     """
-    z = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
-    n1 = _positive(areal_density, "areal_density", "1/m^2")
-    lz = _positive(layer_spacing, "layer_spacing", "m")
+    z = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
+    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
+    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**2 / lz * (s**10 / 5.0 - s**4 / 2.0))
 
@@ -342,11 +336,11 @@ def chain_half_space_potential(separation, epsilon, sigma, areal_density, layer_
     float or ndarray
         Potential energy [J].
     """
-    z = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
-    n1 = _positive(areal_density, "areal_density", "1/m^2")
-    lz = _positive(layer_spacing, "layer_spacing", "m")
+    z = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
+    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
+    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**4 / lz**2 * (s**8 / 360.0 - s**2 / 12.0))
 
@@ -361,11 +355,11 @@ def chain_half_space_force(separation, epsilon, sigma, areal_density, layer_spac
     normal stress between two half-spaces a gap z apart. Parameters as
     :func:`chain_half_space_potential`; returns [N].
     """
-    z = _positive(separation, "separation", "m")
-    epsilon = _positive(epsilon, "epsilon", "J")
-    sigma = _positive(sigma, "sigma", "m")
-    n1 = _positive(areal_density, "areal_density", "1/m^2")
-    lz = _positive(layer_spacing, "layer_spacing", "m")
+    z = as_array(separation, "separation", "m", positive=True)
+    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
+    sigma = as_array(sigma, "sigma", "m", positive=True)
+    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
+    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
     s = sigma / z
     return _result(2.0 * np.pi * epsilon * n1 * sigma**3 / (3.0 * lz**2) * (2.0 / 15.0 * s**9 - s**3))
 
@@ -391,7 +385,7 @@ def equilibrium_distance(sigma, form: str = "12-6"):
     its modulus with the pair value rho = 2^(1/6) sigma; memstribo returns each form's own
     equilibrium distance.
     """
-    sigma = _positive(sigma, "sigma", "m")
+    sigma = as_array(sigma, "sigma", "m", positive=True)
     if form not in EQUILIBRIUM_FACTORS:
         raise InputError(f"form must be one of {', '.join(repr(f) for f in EQUILIBRIUM_FACTORS)}, got {form!r}.")
     return _result(EQUILIBRIUM_FACTORS[form] * sigma)

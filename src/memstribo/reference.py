@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from memstribo.checks import as_array
 from memstribo.errors import InputError
 from memstribo.references import cites
 
@@ -45,13 +46,6 @@ __all__ = [
     "westergaard_contact_half_width",
     "westergaard_pressure",
 ]
-
-
-def _positive(name, value):
-    array = np.asanyarray(value, dtype=float)
-    if not np.all(np.isfinite(array)) or np.any(array <= 0):
-        raise InputError(f"{name} must be positive and finite, got {value!r}")
-    return array
 
 
 # --------------------------------------------------------------------------- Hertz line contact
@@ -86,8 +80,10 @@ def hertz_line_half_width(load, radius, contact_modulus):
     >>> round(float(hertz_line_half_width(12.5, 20e-6, 100e9)) * 1e9, 2)
     56.42
     """
-    w = _positive("load", load)
-    return np.sqrt(4.0 * w * _positive("radius", radius) / (np.pi * _positive("contact_modulus", contact_modulus)))
+    w = as_array(load, "load", "N/m", positive=True)
+    radius = as_array(radius, "radius", "m", positive=True)
+    contact_modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    return np.sqrt(4.0 * w * radius / (np.pi * contact_modulus))
 
 
 @cites("johnson_1985", "thesis")
@@ -114,7 +110,8 @@ def hertz_line_peak_pressure(load, radius, contact_modulus):
 
     Eq. (4.44) in [1]_, Eq. (4-23) in [2]_.
     """
-    return 2.0 * _positive("load", load) / (np.pi * hertz_line_half_width(load, radius, contact_modulus))
+    w = as_array(load, "load", "N/m", positive=True)
+    return 2.0 * w / (np.pi * hertz_line_half_width(load, radius, contact_modulus))
 
 
 @cites("johnson_1985")
@@ -181,10 +178,11 @@ def hertz_line_approach(load, radius, contact_modulus, reference_distance):
     docs/contact.md). A 2D approach needs such a reference length; it is not a property of
     the contact alone.
     """
-    w = _positive("load", load)
-    L = _positive("reference_distance", reference_distance)
+    w = as_array(load, "load", "N/m", positive=True)
+    L = as_array(reference_distance, "reference_distance", "m", positive=True)
     a = hertz_line_half_width(load, radius, contact_modulus)
-    return w / (np.pi * _positive("contact_modulus", contact_modulus)) * (1.0 + 2.0 * np.log(2.0 * L / a))
+    contact_modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    return w / (np.pi * contact_modulus) * (1.0 + 2.0 * np.log(2.0 * L / a))
 
 
 @cites("johnson_1985")
@@ -216,12 +214,12 @@ def hertz_line_approach_to_point(load, radius, contact_modulus, distance):
     which gives a²/(2R) at D = 1 (the contact edge) and tends to
     :func:`hertz_line_approach` with L = d for D >> 1 (docs/contact.md).
     """
-    w = _positive("load", load)
+    w = as_array(load, "load", "N/m", positive=True)
     a = hertz_line_half_width(load, radius, contact_modulus)
-    D = _positive("distance", distance) / a
+    D = as_array(distance, "distance", "m", positive=True) / a
     if np.any(D < 1.0):
         raise InputError("distance must be at least the Hertz half-width a (the point must lie outside the contact)")
-    return 2.0 * w / (np.pi * _positive("contact_modulus", contact_modulus)) * (
+    return 2.0 * w / (np.pi * as_array(contact_modulus, "contact_modulus", "Pa", positive=True)) * (
         D**2 - D * np.sqrt(D**2 - 1.0) + np.arccosh(D))
 
 
@@ -252,8 +250,8 @@ def hertz_sphere_radius(force, radius, contact_modulus):
 
     Eq. (4.22) in [1]_.
     """
-    return np.cbrt(3.0 * _positive("force", force) * _positive("radius", radius)
-                   / (4.0 * _positive("contact_modulus", contact_modulus)))
+    return np.cbrt(3.0 * as_array(force, "force", "N", positive=True) * as_array(radius, "radius", "m", positive=True)
+                   / (4.0 * as_array(contact_modulus, "contact_modulus", "Pa", positive=True)))
 
 
 @cites("johnson_1985")
@@ -278,7 +276,7 @@ def hertz_sphere_approach(force, radius, contact_modulus):
     -----
     Eq. (4.23) in [1]_.
     """
-    return hertz_sphere_radius(force, radius, contact_modulus) ** 2 / _positive("radius", radius)
+    return hertz_sphere_radius(force, radius, contact_modulus) ** 2 / as_array(radius, "radius", "m", positive=True)
 
 
 @cites("johnson_1985")
@@ -304,7 +302,7 @@ def hertz_sphere_peak_pressure(force, radius, contact_modulus):
     Eq. (4.21) in [1]_.
     """
     a = hertz_sphere_radius(force, radius, contact_modulus)
-    return 3.0 * _positive("force", force) / (2.0 * np.pi * a**2)
+    return 3.0 * as_array(force, "force", "N", positive=True) / (2.0 * np.pi * a**2)
 
 
 @cites("johnson_1985")
@@ -361,19 +359,20 @@ def flat_punch_line_pressure(x, load, half_width):
     -----
     Eq. (2.64) in [1]_ (section 2.8).
     """
-    b = _positive("half_width", half_width)
+    b = as_array(half_width, "half_width", "m", positive=True)
     x = np.asanyarray(x, dtype=float)
     inside = np.abs(x) < b
     squared = np.where(inside, b**2 - x**2, 1.0)
-    return np.where(inside, _positive("load", load) / (np.pi * np.sqrt(squared)), 0.0)
+    return np.where(inside, as_array(load, "load", "N/m", positive=True) / (np.pi * np.sqrt(squared)), 0.0)
 
 
 # ----------------------------------------------------- Westergaard periodic wavy contact (2D)
 
 
 def _westergaard_full_contact_pressure(amplitude, wavelength, contact_modulus):
-    return np.pi * _positive("contact_modulus", contact_modulus) * _positive("amplitude", amplitude) / _positive(
-        "wavelength", wavelength)
+    contact_modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    amplitude = as_array(amplitude, "amplitude", "m", positive=True)
+    return np.pi * contact_modulus * amplitude / as_array(wavelength, "wavelength", "m", positive=True)
 
 
 @cites("johnson_1985")
@@ -432,7 +431,7 @@ def westergaard_contact_half_width(mean_pressure, amplitude, wavelength, contact
     Inverse of Eq. (13.6) in [1]_.
     """
     p_star = _westergaard_full_contact_pressure(amplitude, wavelength, contact_modulus)
-    ratio = np.clip(_positive("mean_pressure", mean_pressure) / p_star, 0.0, 1.0)
+    ratio = np.clip(as_array(mean_pressure, "mean_pressure", "Pa", positive=True) / p_star, 0.0, 1.0)
     return wavelength / np.pi * np.arcsin(np.sqrt(ratio))
 
 
@@ -467,7 +466,7 @@ def westergaard_pressure(x, mean_pressure, amplitude, wavelength, contact_modulu
 
     Full contact (p̄ >= p*): :math:`p(x) = \bar p + p^* \cos(2\pi x/\lambda)`.
     """
-    p_bar = _positive("mean_pressure", mean_pressure)
+    p_bar = as_array(mean_pressure, "mean_pressure", "Pa", positive=True)
     p_star = _westergaard_full_contact_pressure(amplitude, wavelength, contact_modulus)
     x = np.asanyarray(x, dtype=float)
     if np.all(p_bar >= p_star):

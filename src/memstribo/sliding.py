@@ -45,6 +45,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from .checks import as_positive_scalar
 from . import friction
 from .errors import InputError
 from .nanoblock import mechanics
@@ -83,17 +84,11 @@ def _constants(params):
     return nanoscale_constants(params)
 
 
-def _check_positive(name, value, unit):
-    if value is None or not np.isfinite(value) or value <= 0:
-        raise InputError(f"{name} must be a positive number [{unit}], got {value!r}.")
-    return float(value)
-
-
 def _positions(distance, step):
     distance = float(distance)
     if not math.isfinite(distance) or distance < 0:
         raise InputError(f"distance must be >= 0 [m], got {distance!r}.")
-    step = _check_positive("step", step, "m")
+    step = as_positive_scalar(step, "step", "m")
     n = int(round(distance / step))
     if abs(n * step - distance) > 1e-9 * max(step, distance):
         n = int(math.ceil(distance / step))
@@ -262,7 +257,7 @@ def slide_single(params, *, load=None, distance=None, step=None):
     ----------
     .. [1] N. S. T. Almuramady, PhD thesis, Cardiff University, section 2.6.2.
     """
-    load = _check_positive("load", params["normal_load"] if load is None else load, "N")
+    load = as_positive_scalar(params["normal_load"] if load is None else load, "load", "N")
     d = params["bond_length"]
     step = params["sliding_step"] or d if step is None else step
     positions = _positions(100 * d if distance is None else distance, step)
@@ -361,7 +356,7 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
         if not math.isfinite(tips):
             raise InputError(f"gap must be finite [m], got {gap!r}.")
     else:
-        load = _check_positive("load", params["normal_load"] if load is None else load, "N")
+        load = as_positive_scalar(params["normal_load"] if load is None else load, "load", "N")
         tips = float(z.max())  # reference: tips level with the highest point of the profile
 
     # The m rows of atomic blocks across the sliding direction see the same line profile: solve

@@ -48,6 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .checks import as_array, as_positive_scalar
 from .errors import InputError
 from .references import cites
 
@@ -110,39 +111,22 @@ class StressField:
 
 # --- input checks ------------------------------------------------------------------------------
 
-def _finite(value, name: str, unit: str) -> np.ndarray:
-    try:
-        array = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} must be numeric [{unit}], got {value!r}.") from None
-    if not np.all(np.isfinite(array)):
-        raise InputError(f"{name} must be finite [{unit}] (NaN or infinite values given).")
-    return array
-
-
-def _positive_scalar(value, name: str, unit: str) -> float:
-    array = _finite(value, name, unit)
-    if array.ndim != 0 or array <= 0:
-        raise InputError(f"{name} must be one number > 0 [{unit}], got {value!r}.")
-    return float(array)
-
-
 def _poisson(value) -> float:
-    array = _finite(value, "poisson_ratio", "-")
+    array = as_array(value, "poisson_ratio", "-")
     if array.ndim != 0 or not -1.0 < array <= 0.5:
         raise InputError(f"poisson_ratio must be one number in (-1, 0.5], got {value!r}.")
     return float(array)
 
 
 def _friction(value) -> float:
-    array = _finite(value, "friction_coefficient", "-")
+    array = as_array(value, "friction_coefficient", "-")
     if array.ndim != 0:
         raise InputError(f"friction_coefficient must be one number, got {value!r}.")
     return float(array)
 
 
 def _points(x, y, z):
-    x, y, z = (_finite(v, n, "m") for v, n in ((x, "x"), (y, "y"), (z, "z")))
+    x, y, z = (as_array(v, n, "m") for v, n in ((x, "x"), (y, "y"), (z, "z")))
     if np.any(z < 0):
         raise InputError("z is the depth below the surface and must be >= 0 [m].")
     try:
@@ -181,7 +165,7 @@ def boussinesq(x, y, z, load, poisson_ratio):
     if np.any(z <= 0):
         raise InputError("z must be > 0 [m] for a point load (the surface point itself is singular).")
     nu = _poisson(poisson_ratio)
-    load = float(_finite(load, "load", "N"))
+    load = float(as_array(load, "load", "N"))
     r = np.sqrt(x**2 + y**2 + z**2)
     k = _boussinesq_kernels(x, y, z, r, nu)
     return _field_from([k[i] + z * k[i + 6] for i in range(6)], load)
@@ -211,7 +195,7 @@ def cerruti(x, y, z, load, poisson_ratio):
     if np.any(z <= 0):
         raise InputError("z must be > 0 [m] for a point load (the surface point itself is singular).")
     nu = _poisson(poisson_ratio)
-    load = float(_finite(load, "load", "N"))
+    load = float(as_array(load, "load", "N"))
     r = np.sqrt(x**2 + y**2 + z**2)
     k = _cerruti_kernels(x, y, z, r, nu)
     return _field_from([k[i] + z * k[i + 6] for i in range(6)], load)
@@ -231,9 +215,9 @@ def hertz_pressure(r, contact_radius, max_pressure):
     max_pressure : float
         p0 [Pa], > 0.
     """
-    a = _positive_scalar(contact_radius, "contact_radius", "m")
-    p0 = _positive_scalar(max_pressure, "max_pressure", "Pa")
-    r = _finite(r, "r", "m")
+    a = as_positive_scalar(contact_radius, "contact_radius", "m")
+    p0 = as_positive_scalar(max_pressure, "max_pressure", "Pa")
+    r = as_array(r, "r", "m")
     return p0 * np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
 
 
@@ -280,7 +264,7 @@ def flat_punch_weight(pressure, contact_radius, *, degree: int = 96, nodes: int 
     InputError
         If the pressure is negative, not finite, or not a callable / pair of arrays.
     """
-    a = _positive_scalar(contact_radius, "contact_radius", "m")
+    a = as_positive_scalar(contact_radius, "contact_radius", "m")
     p = _pressure_callable(pressure)
     theta, theta_w = np.polynomial.legendre.leggauss(nodes)
     theta = 0.25 * np.pi * (theta + 1.0)
@@ -392,7 +376,7 @@ def stress_field(x, y, z, pressure, contact_radius, friction_coefficient=0.0, po
     -0.8000
     """
     x, y, z = _points(x, y, z)
-    a = _positive_scalar(contact_radius, "contact_radius", "m")
+    a = as_positive_scalar(contact_radius, "contact_radius", "m")
     mu = _friction(friction_coefficient)
     nu = _poisson(poisson_ratio)
     if int(nodes) != nodes or nodes < 4:
@@ -502,8 +486,8 @@ def hamilton_sliding_sphere(x, y, z, contact_radius, max_pressure, friction_coef
     0.1333
     """
     x, y, z = _points(x, y, z)
-    a = _positive_scalar(contact_radius, "contact_radius", "m")
-    p0 = _positive_scalar(max_pressure, "max_pressure", "Pa")
+    a = as_positive_scalar(contact_radius, "contact_radius", "m")
+    p0 = as_positive_scalar(max_pressure, "max_pressure", "Pa")
     mu = _friction(friction_coefficient)
     nu = _poisson(poisson_ratio)
     shape = x.shape
@@ -622,8 +606,8 @@ def principal_shear_profile(x, depth, pressure, contact_radius, friction_coeffic
     ndarray
         tau_1 [Pa] of shape (len(depth), len(x)) (or (len(x),) for a scalar depth).
     """
-    x = _finite(x, "x", "m")
-    depth = _finite(depth, "depth", "m")
+    x = as_array(x, "x", "m")
+    depth = as_array(depth, "depth", "m")
     if x.ndim != 1 or depth.ndim > 1:
         raise InputError("x must be 1-D and depth a number or a 1-D array [m].")
     field = stress_field(x[None, :], 0.0, np.atleast_1d(depth)[:, None], pressure, contact_radius,

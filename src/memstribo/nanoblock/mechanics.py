@@ -35,6 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import as_array
 from ..errors import InputError
 from ..references import cites
 
@@ -50,15 +51,6 @@ __all__ = [
     "elastic_interlocking_energy",
     "structure_interlocking_energy",
 ]
-
-
-def _positive(name: str, value) -> np.ndarray:
-    array = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(array)):
-        raise InputError(f"{name} must be finite, got {value!r}.")
-    if np.any(array <= 0):
-        raise InputError(f"{name} must be positive, got {value!r}.")
-    return array
 
 
 @cites("thesis")
@@ -92,7 +84,9 @@ def axial_stiffness(youngs_modulus, area, height):
     >>> round(float(axial_stiffness(85e9, (19.5e-9) ** 2, 0.82e-9)), 1)  # one atomic block, Si/Si [N/m]
     39416.2
     """
-    return _positive("youngs_modulus", youngs_modulus) * _positive("area", area) / _positive("height", height)
+    youngs_modulus = as_array(youngs_modulus, "youngs_modulus", "Pa", positive=True)
+    area = as_array(area, "area", "m^2", positive=True)
+    return youngs_modulus * area / as_array(height, "height", "m", positive=True)
 
 
 @dataclass(frozen=True)
@@ -167,9 +161,10 @@ class BlockStiffness:
             raise InputError(f"geometry lacks a nanoblock dimension: {exc}.") from None
         h_bulk = w_adh if h_bulk is None else float(h_bulk)
         for name, value in [("atomic_width", w_at), ("atomic_height", h_at), ("adhesive_width", w_adh),
-                            ("adhesive_height", h_adh), ("bulk_height", h_bulk),
-                            ("youngs_modulus", youngs_modulus), ("contact_modulus", contact_modulus)]:
-            _positive(name, value)
+                            ("adhesive_height", h_adh), ("bulk_height", h_bulk)]:
+            as_array(value, name, "m", positive=True)
+        for name, value in [("youngs_modulus", youngs_modulus), ("contact_modulus", contact_modulus)]:
+            as_array(value, name, "Pa", positive=True)
         if m < 1:
             raise InputError(f"atomic_per_side must be >= 1, got {m}.")
         if not 0 < threshold_strain <= 1:
@@ -213,14 +208,12 @@ class ColumnState:
 
 
 def _column_inputs(counter_height, heights, moduli, areas):
-    heights = _positive("heights", heights)
-    moduli = _positive("moduli", moduli)
-    areas = _positive("areas", areas)
+    heights = as_array(heights, "heights", "m", positive=True)
+    moduli = as_array(moduli, "moduli", "Pa", positive=True)
+    areas = as_array(areas, "areas", "m^2", positive=True)
     if heights.shape[-1:] != (3,) or moduli.shape[-1:] != (3,) or areas.shape[-1:] != (3,):
         raise InputError("heights, moduli and areas must each give 3 values: atomic, adhesive, bulk.")
-    h = np.asarray(counter_height, dtype=float)
-    if not np.all(np.isfinite(h)):
-        raise InputError("counter_height must be finite.")
+    h = as_array(counter_height, "counter_height", "m")
     return h, heights, moduli * areas / heights
 
 
@@ -263,9 +256,7 @@ def column_fixed_gap(gap, counter_height, heights, moduli, areas) -> ColumnState
     .. [2] F. M. Borodich, O. Savencu (2017), doi:10.1007/978-3-319-59114-8_10
     """
     h, heights, k = _column_inputs(counter_height, heights, moduli, areas)
-    g = np.asarray(gap, dtype=float)
-    if not np.all(np.isfinite(g)):
-        raise InputError("gap must be finite.")
+    g = as_array(gap, "gap", "m")
     interference = np.maximum(h + heights.sum(-1) - g, 0.0)
     ratio2 = k[..., 0] / k[..., 1]
     ratio3 = k[..., 0] / k[..., 2]
@@ -572,9 +563,7 @@ def elastic_interlocking_energy(stiffness, delta_compression):
     >>> print(f"{float(elastic_interlocking_energy(40.0, 0.1e-9)):.3g}")  # [J]
     2e-19
     """
-    k = np.asarray(stiffness, dtype=float)
-    if np.any(~np.isfinite(k)) or np.any(k < 0):
-        raise InputError(f"stiffness must be finite and >= 0 [N/m], got {stiffness!r}.")
+    k = as_array(stiffness, "stiffness", "N/m", nonnegative=True)
     de = np.asarray(delta_compression, dtype=float)
     if np.any(np.isnan(de)):
         raise InputError("delta_compression contains NaN.")
