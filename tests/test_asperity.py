@@ -20,20 +20,7 @@ from memstribo.errors import InputError
 E_STAR = 84.996e9  # silicon/silicon, E = 161 GPa, nu = 0.23 (thesis 5.5.2 prints 8.4996e10 Pa)
 B4 = 4e22
 
-# Thesis Table 5-1: nanoblock load and the corner / side / central asperity loads [uN]
-TABLE_5_1 = np.array([
-    [0.8166, 0.0963, 0.0884, 0.0782],
-    [0.99, 0.1167, 0.1071, 0.0947],
-    [1.7944, 0.2115, 0.1941, 0.1717],
-    [3.4279, 0.4041, 0.3709, 0.3281],
-    [4.4055, 0.5193, 0.4766, 0.4216],
-    [7.0165, 0.8275, 0.7595, 0.6719],
-]) * 1e-6
-# Thesis Table 5-2: contact radii [nm] of the corner / side / central asperities at those loads
-TABLE_5_2 = np.array([
-    [5.82, 5.72, 5.59], [6.05, 5.94, 5.80], [6.82, 6.70, 6.52],
-    [7.76, 7.62, 7.44], [8.16, 8.02, 7.82], [8.95, 8.80, 8.59],
-]) * 1e-9
+from memstribo.thesis_tables import TABLE_5_1, TABLE_5_2  # thesis Tables 5-1 (loads [N]) and 5-2 (radii [m])
 
 
 def test_contact_modulus_of_silicon_pair():

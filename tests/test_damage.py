@@ -22,11 +22,8 @@ from memstribo.damage import (
 )
 from memstribo.errors import InputError
 
-TABLE_5_1_LOADS = np.array([0.8166, 0.99, 1.7944, 3.4279, 4.4055, 7.0165]) * 1e-6
-# Thesis Table 5-3 (m = 1, Pa) and Table 5-4 (m = 2, Pa^2): max omega/c1 and its location x [m]
-TABLE_5_3 = {"corner": (0.248e11, -0.823e-8), "side": (0.243e11, -0.801e-8), "central": (0.226e11, -0.7791e-8)}
-TABLE_5_4 = {"corner": (0.1706082e20, -0.81801e-8), "side": (0.1607712e20, -0.79900e-8),
-             "central": (0.1387791e20, -0.77999e-8)}
+# thesis Table 5-1 (nanoblock loads [N]), Table 5-3 (m = 1, Pa) and Table 5-4 (m = 2, Pa^2): max omega/c1, location x [m]
+from memstribo.thesis_tables import TABLE_5_1_LOADS, TABLE_5_3, TABLE_5_4
 
 
 # --- surface stresses ---------------------------------------------------------------------------------------

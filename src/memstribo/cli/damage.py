@@ -9,7 +9,6 @@ HELP = "damage accumulation in the coating (5-10): omega/c1 per cycle, relative 
 ORDER = 72
 
 #: Thesis Table 5-1: loads of one nanoblock (adhesive asperity) [N].
-TABLE_5_1_LOADS = (0.8166e-6, 0.99e-6, 1.7944e-6, 3.4279e-6, 4.4055e-6, 7.0165e-6)
 
 
 def register(subparsers, parents):
@@ -39,7 +38,9 @@ def parse_loads(text) -> list[float]:
     from ..units import to_si
 
     if str(text).strip().lower().replace(" ", "") in ("table5-1", "thesis"):
-        return list(TABLE_5_1_LOADS)
+        from ..thesis_tables import TABLE_5_1_LOADS
+
+        return TABLE_5_1_LOADS.tolist()
     items = [item.strip() for item in str(text).split(",")]
     if any(item == "" for item in items):
         raise InputError(f"--loads must be a comma-separated list of loads > 0 N, got {text!r}.")

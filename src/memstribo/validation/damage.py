@@ -7,21 +7,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..thesis_tables import TABLE_5_1, TABLE_5_2, TABLE_5_3, TABLE_5_4
 from . import ValidationRow, compare
 
-TABLE_5_1 = np.array([
-    [0.8166, 0.0963, 0.0884, 0.0782],
-    [0.99, 0.1167, 0.1071, 0.0947],
-    [1.7944, 0.2115, 0.1941, 0.1717],
-    [3.4279, 0.4041, 0.3709, 0.3281],
-    [4.4055, 0.5193, 0.4766, 0.4216],
-    [7.0165, 0.8275, 0.7595, 0.6719],
-]) * 1e-6
-TABLE_5_2_NM = np.array([[5.82, 5.72, 5.59], [6.05, 5.94, 5.80], [6.82, 6.70, 6.52],
-                         [7.76, 7.62, 7.44], [8.16, 8.02, 7.82], [8.95, 8.80, 8.59]])
-TABLE_5_3 = {"corner": (0.248e11, -0.823e-8), "side": (0.243e11, -0.801e-8), "central": (0.226e11, -0.7791e-8)}
-TABLE_5_4 = {"corner": (0.1706082e20, -0.81801e-8), "side": (0.1607712e20, -0.79900e-8),
-             "central": (0.1387791e20, -0.77999e-8)}
+TABLE_5_2_NM = TABLE_5_2 * 1e9
 POSITIONS = ("corner", "side", "central")
 
 
