@@ -66,7 +66,7 @@ def _e(text: Any) -> str:
 
 
 def _quantity(value: Any, unit: str = "") -> str:
-    from .cli.common import format_value
+    from .output import format_value
 
     if value is None:
         return "-"
