@@ -130,3 +130,18 @@ def test_browser_check_detects_a_broken_figure(tmp_path, params):
     page = write_report(result, tmp_path / "report.html")
     dom = browser_dom(page, tmp_path / "chromium-profile")
     assert 'data-figures="broken 1 of 2"' in dom
+
+
+def test_validation_rows_without_a_checkout_keep_the_other_topics(monkeypatch, tmp_path):
+    # an installed wheel has no data/afm/: the measured-file rows are left out, with a note, not the whole table
+    import memstribo.validation.roughness as roughness_rows
+    from memstribo.report import validation_rows
+
+    with_files, note = validation_rows()
+    assert note is None
+    monkeypatch.setattr(roughness_rows, "AFM", tmp_path / "no-such-folder")
+    rows, note = validation_rows()
+    assert "data/afm" in note and "checkout" in note
+    assert 0 < len(rows) < len(with_files)
+    assert not any(row.command.startswith("memstribo roughness data/afm/") for row in rows)
+    assert {row.topic for row in rows} == {row.topic for row in with_files}

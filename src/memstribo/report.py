@@ -78,11 +78,16 @@ def _quantity(value: Any, unit: str = "") -> str:
 def validation_rows() -> tuple[list, str | None]:
     """All validation rows (:func:`memstribo.validation.all_rows`), or the error that stopped them."""
     from .validation import all_rows
+    from .validation.roughness import measured_files_available
 
     try:
-        return list(all_rows()), None
+        rows = list(all_rows())
     except Exception as exc:  # a topic's rows broke: say so in the page, keep the rest of the report
         return [], f"{type(exc).__name__}: {exc}"
+    if not measured_files_available():
+        return rows, ("the rows that read the measured AFM files of data/afm/ are not here: this installation "
+                      "has no checkout of the repository (see docs/validation.md for them)")
+    return rows, None
 
 
 def _verdict_html(result) -> str:

@@ -88,5 +88,11 @@ def _thesis_rows() -> list[ValidationRow]:
     ]
 
 
+def measured_files_available() -> bool:
+    """Whether the repository's data/afm/ folder is here (an installed wheel does not carry it)."""
+    return AFM.is_dir()
+
+
 def rows() -> list[ValidationRow]:
-    return _file_rows() + _thesis_rows()
+    """The rows of the measured files (from a checkout only) and of the thesis's roughness numbers."""
+    return (_file_rows() if measured_files_available() else []) + _thesis_rows()
