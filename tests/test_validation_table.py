@@ -67,3 +67,25 @@ def test_check_mode_and_writing(tmp_path, monkeypatch, capsys):
     assert target.read_text(encoding="utf-8") == render_markdown(rows)
     assert generator.main(["--check", "--output", str(target)]) == 0
     assert not list(tmp_path.glob("*.tmp"))
+
+
+def test_round_off_residuals_are_shown_as_bounds_not_digits():
+    from memstribo.validation.__main__ import format_value
+
+    residual = compare("alpha", "r", "invariant", 0.0, 9.75836e-08, "p0", atol=2e-6, command="python x")
+    assert residual.shown_as_bound and format_value(residual) == "< 2e-06"
+    assert "9.758" not in render_markdown([residual])
+    # an exact zero, a failing residual and a relative comparison keep their digits
+    assert format_value(compare("a", "z", "invariant", 0.0, 0.0, atol=1e-10, command="python x")) == "0"
+    failing = compare("a", "f", "invariant", 0.0, 3e-3, atol=1e-6, command="python x")
+    assert not failing.shown_as_bound and format_value(failing) == "0.003"
+    assert format_value(compare("a", "q", "thesis", 1.0, 1.0000001, rtol=1e-6, command="python x")) == "1"
+
+
+def test_committed_table_holds_no_round_off_digits(rows):
+    """Rows of round-off residuals are bounds in the committed doc: the same on every platform."""
+    from memstribo.validation.__main__ import format_value
+
+    for row in rows:
+        if row.reference_value == 0 and row.agrees and row.value not in (0, None) and "abs" in row.tolerance:
+            assert format_value(row).startswith("< "), row

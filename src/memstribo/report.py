@@ -220,7 +220,7 @@ def _validation_html(validation) -> str:
     if error:
         parts.append(f"<p class='bad'>The validation rows could not all be computed: {_e(error)}</p>")
     if rows:
-        from .validation.__main__ import format_number, summary
+        from .validation.__main__ import format_number, format_value, summary
 
         counts = summary(rows)
         parts.append(f"<p><b>{counts['rows']} comparisons: {counts['agree']} agree, {counts['differ']} differ</b> "
@@ -228,7 +228,7 @@ def _validation_html(validation) -> str:
 
         body = "".join(
             f"<tr><td>{_e(r.topic)}</td><td>{_e(r.quantity)}</td><td>{_e(r.reference)}</td>"
-            f"<td class='num'>{_e(format_number(r.reference_value))}</td><td class='num'>{_e(format_number(r.value))}</td>"
+            f"<td class='num'>{_e(format_number(r.reference_value))}</td><td class='num'>{_e(format_value(r))}</td>"
             f"<td>{_e(r.unit)}</td><td>{_e(r.tolerance)}</td>"
             f"<td class='{'good' if r.agrees else 'bad'}'>{'yes' if r.agrees else 'no'}</td>"
             f"<td><code>{_e(r.command)}</code></td><td>{_e(r.note)}</td></tr>" for r in rows)

@@ -40,6 +40,10 @@ class ValidationRow:
         The command that prints memstribo's value (e.g. "memstribo constants --json").
     note : str
         Why the values differ, or how the comparison is made.
+    shown_as_bound : bool
+        The value is a residual at round-off level (reference 0, absolute tolerance): the
+        table shows it as the bound it meets ("< 2e-07"), never as digits, because its
+        digits depend on the platform and library versions.
     """
 
     topic: str
@@ -52,6 +56,7 @@ class ValidationRow:
     agrees: bool
     command: str
     note: str = ""
+    shown_as_bound: bool = False
 
 
 def compare(topic, quantity, reference, reference_value, value, unit="", *, rtol=None, atol=None,
@@ -63,8 +68,10 @@ def compare(topic, quantity, reference, reference_value, value, unit="", *, rtol
     atol_ = 0.0 if atol is None else atol
     agrees = math.isclose(value, reference_value, rel_tol=rtol_, abs_tol=atol_)
     parts = ([f"rel {rtol:g}"] if rtol is not None else []) + ([f"abs {atol:g}"] if atol is not None else [])
+    # A residual (reference 0) that meets a non-zero absolute tolerance is round-off: show the bound.
+    residual = reference_value == 0 and rtol is None and atol_ > 0 and agrees and value != 0
     return ValidationRow(topic, quantity, reference, float(reference_value), float(value), unit,
-                         " or ".join(parts) or "exact", agrees, command, note)
+                         " or ".join(parts) or "exact", agrees, command, note, shown_as_bound=residual)
 
 
 def all_rows() -> list[ValidationRow]:

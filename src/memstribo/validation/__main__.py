@@ -43,7 +43,9 @@ numbers here are the code's. "Reference" is where the compared number comes from
 (thesis section and equation, a closed form, or an invariant); "agrees" says whether
 memstribo's value lies within the stated tolerance. Where memstribo differs from a printed
 thesis number on purpose (docs/model.md decides), the tolerance says so and the note gives
-the reason.
+the reason. A residual at round-off level (reference 0) is shown as the bound it meets
+("< 2e-07"), not as digits: its digits depend on the platform and library versions, and
+this file must be identical on every machine.
 """
 
 
@@ -52,6 +54,13 @@ def format_number(value: float | None) -> str:
     if value is None:
         return "-"
     return f"{value:.6g}"
+
+
+def format_value(row: ValidationRow) -> str:
+    """memstribo's value as shown: a round-off residual as the bound it meets ("< 2e-07")."""
+    if row.shown_as_bound:
+        return f"< {row.tolerance.removeprefix('abs ')}"
+    return format_number(row.value)
 
 
 def _cell(text: str) -> str:
@@ -79,7 +88,7 @@ def render_markdown(rows: list[ValidationRow]) -> str:
         for row in (r for r in rows if r.topic == topic):
             lines.append("| " + " | ".join([
                 _cell(row.quantity), _cell(row.reference), format_number(row.reference_value),
-                format_number(row.value), _cell(row.unit), _cell(row.tolerance),
+                format_value(row), _cell(row.unit), _cell(row.tolerance),
                 "yes" if row.agrees else "**no**", f"`{_cell(row.command)}`" if row.command else "",
                 _cell(row.note)]) + " |")
         lines.append("")
