@@ -75,7 +75,9 @@ from .gear import GearPair, hertz_line_contact, tangential_force
 from .references import cites
 
 __all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "SUMMARY_UNITS", "BLOCK_LOAD_VARIANT",
-           "dundurs_beta", "roll_coordinate"]
+           "dundurs_beta", "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
+           "lattice_overlap_across", "sliding_average", "resisting_force", "step_convergence",
+           "simulate_ensemble", "ensemble_summary"]
 
 BLOCK_LOAD_VARIANT = ("decoupled: rough contact solved without the block springs, block loads = pressure over "
                       "each nanoblock's footprint, shared among its atomic blocks by the fixed-load model (3.4.2)")
@@ -87,7 +89,13 @@ SUMMARY_UNITS = {
     "tangential_force": "N", "stiction": "", "stiction_margin": "N", "steps": "", "sliding_distance": "m",
     "energy_dissipated": "J", "energy_chemical": "J", "energy_vdw": "J", "energy_elastic": "J",
     "unconverged_steps": "", "window_exceeded_steps": "", "max_contact_pressure": "Pa",
-    "steps_above_elastic_limit": "",
+    "steps_above_elastic_limit": "", "resisting_force_max": "N", "normal_force_total": "N", "mesh_efficiency": "",
+    "mesh_efficiency_min": "", "max_shear_stress": "Pa", "load_case": "", "interface_model": "",
+    "contact_adhesion": "", "roughness_rows": "", "warnings": "", "step_converged": "", "step_change_margin": "",
+    "step_change_cof": "", "steps_checked": "", "realisations": "", "stiction_probability": "",
+    "stiction_margin_median": "N", "stiction_margin_p05": "N", "stiction_margin_p95": "N", "cof_mean_median": "",
+    "cof_mean_p05": "", "cof_mean_p95": "", "mesh_efficiency_median": "", "mesh_efficiency_p05": "",
+    "mesh_efficiency_p95": "", "per_realisation": "",
 }
 
 _GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
@@ -172,6 +180,13 @@ class MeshSetup:
         Levelled roughness of each row of each flank, x = roll coordinate [m].
     roughness_name : str
     roughness_synthetic : bool
+    roughness_source : str
+    grid_spacing : float
+        Element width of the contact solves [m].
+    row_roughness : memstribo.roughness.RowRoughness
+        How the rows' lines were made (measured, synthesised), and the lattice offsets.
+    realisation : int
+        Index of the roughness realisation.
     """
 
     pair: GearPair
@@ -186,6 +201,9 @@ class MeshSetup:
     roughness_name: str
     roughness_synthetic: bool
     roughness_source: str
+    grid_spacing: float
+    row_roughness: object
+    realisation: int
 
 
 def _positions(pair: GearPair, steps: int) -> np.ndarray:
@@ -206,28 +224,39 @@ def _flank_ranges(pair, positions, window):
     return s1, s2, (s1.min() - half, s1.max() + half), (s2.min() - half, s2.max() + half)
 
 
-def _load_roughness(roughness, params, needed):
-    """A list of Profiles (one per line scan) and a name, from whatever the user gave."""
+def _read_roughness(roughness):
+    """A Profile, a map, or None (the synthetic default) from whatever the user gave."""
     from . import roughness as rough
 
     if roughness is None or (isinstance(roughness, str) and roughness == "thesis"):
-        length = max(float(params["roughness_length"]), 1.05 * needed + 4 * params["roughness_sample_spacing"])
-        profile = rough.default_profile(params, length=length)
-        return [profile], profile.name, True, profile.source
+        return None
     if isinstance(roughness, (str, Path)):
         from .readers import read_topography
 
-        roughness = read_topography(roughness)
-    if isinstance(roughness, rough.Profile):
-        return [roughness], roughness.name, bool(roughness.synthetic), roughness.source
-    if hasattr(roughness, "line_scans"):
-        scans = list(roughness.line_scans())
-        return scans, getattr(roughness, "name", "surface map"), False, getattr(roughness, "source", "")
+        return read_topography(roughness)
+    if isinstance(roughness, rough.Profile) or hasattr(roughness, "line_scans"):
+        return roughness
     raise InputError(f"roughness must be None, 'thesis', a file path, a Profile or a SurfaceMap; got "
                      f"{type(roughness).__name__}.")
 
 
-def _prepare(params, roughness, steps) -> MeshSetup:
+def normal_force_of_load_case(params, pair: GearPair) -> float:
+    """Total tooth normal force of the load case [N] (MODEL 7b).
+
+    ``torque``: F_n = F_t / cos alpha_w with F_t = T / r_w1 (4-27), the force that the drive
+    torque implies on the line of action; ``thesis``: ``normal_load`` as given (F_ext of 4.9).
+    """
+    if params["load_case"] == "thesis":
+        return float(params["normal_load"])
+    f_t = float(tangential_force(params["drive_torque"], pair.pitch_radii[0]))
+    return f_t / math.cos(pair.pressure_angle)
+
+
+#: Largest number of contact elements times steps of one row that the simulation allocates (memory guard).
+MAX_ELEMENT_STEPS = 60_000_000
+
+
+def _prepare(params, roughness, steps, realisation=0) -> MeshSetup:
     from . import roughness as rough
 
     pair = GearPair.from_parameters(params)
@@ -238,45 +267,48 @@ def _prepare(params, roughness, steps) -> MeshSetup:
     t = pair.time(positions)
     step_time = np.concatenate([[0.5 * (t[1] - t[0])], 0.5 * (t[2:] - t[:-2]), [0.5 * (t[-1] - t[-2])]])
     share = pair.load_share(positions, params["load_sharing"])
-    load = share * params["normal_load"]
+    load = share * normal_force_of_load_case(params, pair)
     w_adh = params["adhesive_width"]
     rows = int(params["face_width"] // w_adh)
     if rows < 1:
         raise InputError(f"face_width ({params['face_width']:.4g} m) is narrower than one nanoblock "
                          f"(adhesive_width {w_adh:.4g} m).")
-    dx, window = params["mesh_grid_spacing"], params["mesh_window"]
+    # grid and window from the largest Hertz contact of the load case, unless given
+    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
+                              params["counter_poisson_ratio"])
+    hertz = hertz_line_contact(load, rows * w_adh, pair.effective_radius(positions), modulus)
+    a_max = float(np.max(hertz.half_width))
+    dx = params["mesh_grid_spacing"]
+    if dx is None:
+        dx = 2 * a_max / int(params["mesh_elements_across_contact"])
+    window = params["mesh_window"]
+    if window is None:
+        window = 2.4 * a_max + 6 * w_adh
     n = int(round(window / dx))
     if n < 64:
         raise InputError(f"mesh_window / mesh_grid_spacing = {n}: at least 64 contact elements are needed.")
+    if n * steps > MAX_ELEMENT_STEPS:
+        raise InputError(f"the meshing cycle would solve {steps} steps of {n} contact elements "
+                         f"({n * steps * 8 * 12 / 1e9:.3g} GB of working arrays): at most {MAX_ELEMENT_STEPS:.3g} "
+                         "element-steps; use fewer mesh_steps or a coarser mesh_grid_spacing.")
     grid = (np.arange(n) - 0.5 * (n - 1)) * dx
     _, _, (lo1, hi1), (lo2, hi2) = _flank_ranges(pair, positions, n * dx + 2 * w_adh)
     needed = max(hi1 - lo1, hi2 - lo2)
-    scans, name, synthetic, source = _load_roughness(roughness, params, needed)
-    if len(scans) > 1 and len(scans) < rows:
-        raise InputError(f"the surface map '{name}' has {len(scans)} line scans but the face width holds {rows} rows "
-                         f"of nanoblocks (face_width / adhesive_width); a map needs at least {rows} rows "
-                         f"(or give a single profile for all rows).")
+    lines = rough.row_roughness(_read_roughness(roughness), params, rows, needed, realisation)
     pinion, gear = [], []
-    for k in range(rows if len(scans) > 1 else 1):
-        p_scan = scans[k]
-        g_scan = scans[k + rows] if len(scans) >= 2 * rows else None
-        for scan in (p_scan,) + ((g_scan,) if g_scan is not None else ()):
+    for scan_p, scan_g in zip(lines.pinion, lines.gear):
+        for scan in (scan_p, scan_g):
             span = float(scan.x[-1] - scan.x[0])
-            if span < needed:
-                raise InputError(f"roughness '{name}' is {span * 1e6:.4g} um long, but the flank travel over the path of "
-                                 f"contact plus the contact window needs {needed * 1e6:.4g} um on each flank; give a "
-                                 f"longer scan (memstribo does not wrap a profile around).")
-        # the scan's middle sits at the middle of the flank travel (independent of the window)
-        zp = rough.level_profile(p_scan)
-        mid_p = 0.5 * (zp.x[0] + zp.x[-1])
-        pinion.append((zp.x - mid_p + 0.5 * (lo1 + hi1), zp.z))
-        if g_scan is not None:
-            zg = rough.level_profile(g_scan)
-            gear.append((zg.x - 0.5 * (zg.x[0] + zg.x[-1]) + 0.5 * (lo2 + hi2), zg.z))
-        else:  # the same scan read backwards: for a long scan, an independent stretch meets the pinion's
-            gear.append((mid_p - zp.x[::-1] + 0.5 * (lo2 + hi2), zp.z[::-1]))
-    return MeshSetup(pair, positions, step_time, load, rows, rows * w_adh, grid, pinion, gear, name, synthetic,
-                     source)
+            if span < needed:  # pragma: no cover - row_roughness synthesises long enough lines
+                raise InputError(f"roughness line '{scan.name}' is {span * 1e6:.4g} um long, but the flank travel "
+                                 f"needs {needed * 1e6:.4g} um.")
+        # each line's middle sits at the middle of its flank's travel (independent of the window)
+        zp = rough.level_profile(scan_p)
+        pinion.append((zp.x - 0.5 * (zp.x[0] + zp.x[-1]) + 0.5 * (lo1 + hi1), zp.z))
+        zg = rough.level_profile(scan_g)
+        gear.append((zg.x - 0.5 * (zg.x[0] + zg.x[-1]) + 0.5 * (lo2 + hi2), zg.z))
+    return MeshSetup(pair, positions, step_time, load, rows, rows * w_adh, grid, pinion, gear, lines.name,
+                     lines.synthetic, lines.source, float(dx), lines, realisation)
 
 
 def _heights(profile, coordinate):
@@ -289,12 +321,22 @@ def _heights(profile, coordinate):
 # --------------------------------------------------------------------------------------------
 # the cycle
 # --------------------------------------------------------------------------------------------
+def _cohesive_zone(params):
+    """(sigma0 [Pa], h0 [m]) of the Maugis-Dugdale zone of the contact solve, or (None, None) without it."""
+    if params["contact_adhesion"] != "maugis":
+        return None, None
+    from .adhesion import nanoscale_constants
+
+    constants = nanoscale_constants(params)
+    return float(constants.maugis_stress), float(constants.maugis_range)
+
+
 def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar):
-    """Rough contact of every step of one row: pressure, deformed gap and solver info."""
+    """Rough contact of every step of one row: pressure, deformed gap, solver info, cohesive line load."""
     from .contact import solve_line_contact
 
     grid = setup.grid
-    dx = params["mesh_grid_spacing"]
+    dx = setup.grid_spacing
     z1 = _heights(setup.pinion_profiles[row], s1[:, None] - grid[None, :])
     z2 = _heights(setup.gear_profiles[row], s2[:, None] + grid[None, :])
     separation = grid[None, :] ** 2 / (2 * r_ef[:, None]) - z1 - z2
@@ -304,17 +346,62 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar)
     n_steps = separation.shape[0]
     pressure = np.zeros_like(separation)
     gap = np.zeros_like(separation)
-    info = np.zeros((n_steps, 4))  # converged, residual, iterations, approach
+    info = np.zeros((n_steps, 5))  # converged, residual, iterations, approach, cohesive line load
+    sigma0, h0 = _cohesive_zone(params)
+    adhesive = {} if sigma0 is None else {"cohesive_stress": sigma0, "cohesive_range": h0}
     previous = None
     for i in range(n_steps):
         solution = solve_line_contact(separation[i], dx, modulus, load=line_load[i],
-                                      tolerance=params["mesh_contact_tolerance"], initial_pressure=previous)
+                                      tolerance=params["mesh_contact_tolerance"], initial_pressure=previous,
+                                      **adhesive)
         pressure[i], gap[i] = solution.pressure, solution.gap
-        info[i] = (solution.converged, solution.residual, solution.iterations, solution.approach)
+        info[i] = (solution.converged, solution.residual, solution.iterations, solution.approach,
+                   getattr(solution, "adhesive_load", 0.0))
         previous = solution.pressure
         if pbar is not None:
             pbar.update(1)
     return pressure, gap, info
+
+
+def vdw_gap_factor(gap, cutoff_distance, vdw_cutoff):
+    """Share of a block's contact vdW energy at local gap D: (D0 / max(D, D0))^2, 0 beyond the cut-off.
+
+    The flat-flat Hamaker law: the interaction energy per area at separation D is
+    A / (12 pi D^2) (Israelachvili 2011, Table 13.1), which at contact (D <= D0) is the work of
+    adhesion w12 = A / (12 pi D0^2) (3-34); the ratio is the factor (MODEL 7c).
+
+    Parameters
+    ----------
+    gap : array_like
+        Local gap D between the surfaces [m] (0 in contact).
+    cutoff_distance : float
+        D0 [m].
+    vdw_cutoff : float
+        Gap beyond which vdW is neglected (a numerical cut-off) [m].
+
+    Returns
+    -------
+    ndarray
+        Factor in [0, 1] [-].
+    """
+    d = np.maximum(np.asarray(gap, dtype=float), cutoff_distance)
+    return np.where(d < vdw_cutoff, (cutoff_distance / d) ** 2, 0.0)
+
+
+def lattice_overlap_across(atomic_width, atomic_pitch, atomic_per_side, adhesive_width, offset):
+    """Summed overlap width across the face width of two facing rows of atomic blocks [m].
+
+    Each nanoblock carries ``m`` rows of atomic blocks (width ``w_at``, pitch ``atomic_pitch``)
+    across the face width; the gear's lattice is shifted by ``offset`` relative to the
+    pinion's, and repeats with the nanoblock width. The result is
+    sum_i sum_j max(0, w_at - |y_i - y_j - offset|) over the pinion's rows i and the gear's rows
+    j (with their periodic images): ``m w_at`` when the lattices are aligned, less when not.
+    """
+    m = int(atomic_per_side)
+    y = (np.arange(m) - 0.5 * (m - 1)) * atomic_pitch
+    images = np.array([-adhesive_width, 0.0, adhesive_width])
+    gear = (y[:, None] + offset + images[None, :]).ravel()
+    return float(np.clip(atomic_width - np.abs(y[:, None] - gear[None, :]), 0.0, None).sum())
 
 
 def _lattice(roll, w_adh, grid_half):
@@ -345,7 +432,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     w_adh, w_at, m = params["adhesive_width"], params["atomic_width"], int(params["atomic_per_side"])
     pitch = params["atomic_pitch"]
     bond = params["bond_length"]
-    dx = params["mesh_grid_spacing"]
+    dx = setup.grid_spacing
     grid = setup.grid
     half = 0.5 * grid.size * dx
     geometry = _geometry(params)
@@ -356,13 +443,14 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     from .friction import chemical_bond_count, vdw_bond_count
 
     w_si = _work_of_adhesion(params)
-    # one rule with the sliding models (thesis 3.5), for bare and coated blocks alike
+    # thesis interface: one rule with the sliding models (3.5), for bare and coated blocks alike
     layer = adhesive_layer_thickness(params, geometry)
+    gap_model = params["interface_model"] == "gap"
+    with_cohesive_zone = params["contact_adhesion"] == "maugis"
     if coating is not None:
         w_coat, u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
     c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
-    n_rows_solved = len(setup.pinion_profiles)
-    row_weight = setup.rows / n_rows_solved
+    n_rows_solved = len(setup.pinion_profiles)  # every row, each with its own roughness (MODEL 7b)
 
     pbar = None
     if progress:
@@ -372,7 +460,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
 
     out = {key: np.zeros(n_steps) for key in ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh",
                                               "contact_width", "max_pressure", "unconverged", "residual",
-                                              "iterations", "window_exceeded", "approach")}
+                                              "iterations", "window_exceeded", "approach", "rigid_atomic_blocks",
+                                              "vdw_edge")}
     block_loads = []
     for row in range(n_rows_solved):
         if beta != 0.0 and mu_previous is not None:
@@ -387,6 +476,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         out["residual"] = np.maximum(out["residual"], info[:, 1])
         out["iterations"] += info[:, 2] / n_rows_solved
         out["approach"] += info[:, 3] / n_rows_solved
+        # vdW reach: with the gap model the attraction must have faded inside the window
+        out["vdw_edge"] += (np.minimum(gap[:, 0], gap[:, -1]) < params["vdw_cutoff"]) if gap_model else 0
         out["contact_width"] += (pressure > 0).sum(axis=1) * dx / n_rows_solved
         out["max_pressure"] = np.maximum(out["max_pressure"], pressure.max(axis=1))
         cumulative = np.concatenate([np.zeros((n_steps, 1)), np.cumsum(pressure, axis=1) * dx], axis=1)
@@ -426,6 +517,9 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                 atomic_force[loaded] = state.atomic_force[:, 0, :]
                 atomic_comp[loaded] = state.atomic_compression[:, 0, :]
                 adhesive_comp[loaded] = state.adhesive_compression[:, 0]
+                rigid = np.zeros(loads.shape)
+                rigid[loaded] = np.asarray(state.rigid).reshape(int(loaded.sum()), -1).sum(axis=1)
+                out["rigid_atomic_blocks"] += rigid.sum(axis=1)
             flank_states.append((x_blocks, x_atoms, loads, atomic_force, atomic_comp, adhesive_comp))
         block_loads.append((k1, flank_states[0][2], k2, flank_states[1][2]))
 
@@ -436,7 +530,9 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
             return np.mod(k * _GOLDEN + row * _SILVER, 1.0) < wear
 
         bare2 = gear_bare(k2)
-        # chemical bonds: overlaps of touching opposing atomic blocks (along x), m rows across
+        # chemical bonds: overlaps of touching opposing atomic blocks along x (sliding) times their
+        # overlap across the face width, where the gear's lattice sits at a random offset (not aligned)
+        across = lattice_overlap_across(w_at, pitch, m, w_adh, setup.row_roughness.lattice_offsets[row])
         touch1 = flank_states[0][3][..., :m] > 0  # first row of the m x m array (rows alike)
         touch2 = (flank_states[1][3][..., :m] > 0) & bare2[..., None]
         xa1 = flank_states[0][1].reshape(n_steps, -1)
@@ -445,21 +541,30 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         t2 = touch2.reshape(n_steps, -1)
         overlap_len = np.clip(w_at - np.abs(xa1[:, :, None] - xa2[:, None, :]), 0.0, None)
         overlap_len = overlap_len * (t1[:, :, None] & t2[:, None, :])
-        chem = m * chemical_bond_count(w_at, overlap_len.sum(axis=(1, 2)), bond)  # (3-10), m rows across
-        out["chem_bonds"] += row_weight * chem
-        out["f_chem"] += row_weight * chem * params["bond_energy"] / bond
+        chem = chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)  # (3-10), overlap area / D^2
+        out["chem_bonds"] += chem
+        out["f_chem"] += chem * params["bond_energy"] / bond
 
         # vdW bonds: pinion block footprint inside the adhesive layer (3-12), pull-off (3-32)
         k1_at_x = np.floor((s1[:, None] - grid[None, :]) / w_adh).astype(int)  # pinion block at each element
         k2_at_x = np.floor((s2[:, None] + grid[None, :]) / w_adh).astype(int)
         bare_x = gear_bare(k2_at_x)
-        inside = gap <= layer
+        # vdW: the share of a block's contact energy at the local gap (MODEL 7c), or the thesis's band
+        inside = vdw_gap_factor(gap, params["cutoff_distance"], params["vdw_cutoff"]) if gap_model \
+            else (gap <= layer).astype(float)
         u_vdw_x = np.where(bare_x, params["vdw_bond_energy"], u_vdw_coat) if coating is not None \
             else params["vdw_bond_energy"]
         w_x = np.where(bare_x, w_si, w_coat) if coating is not None else w_si
         n_vdw = vdw_bond_count(w_adh, dx, bond) * inside  # (3-12), bonds per element
-        out["vdw_bonds"] += row_weight * n_vdw.sum(axis=1)
-        out["f_vdw"] += row_weight * (n_vdw * u_vdw_x).sum(axis=1) / bond
+        out["vdw_bonds"] += n_vdw.sum(axis=1)
+        out["f_vdw"] += (n_vdw * u_vdw_x).sum(axis=1) / bond
+        if with_cohesive_zone:  # the attraction is the contact solve's cohesive line load over the row
+            out["f_adh"] += info[:, 4] * w_adh
+            e_el = np.zeros(n_steps)
+            for (k, (_, _, _, _, comp_at, comp_adh)) in zip((k1, k2), flank_states):
+                e_el += _interlocking(k, comp_at, comp_adh, stiffness)
+            out["e_el"] += e_el * sliding_fraction
+            continue
         # pull-off per pinion block: a = half its engaged length, w12 averaged over it
         key = k1_at_x - k1_at_x.min(axis=1, keepdims=True)
         n_keys = int(key.max()) + 1
@@ -473,13 +578,13 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         pull_off = np.zeros_like(a)
         if engaged.any():
             pull_off[engaged] = pull_off_force(work[engaged], modulus, c_ns, a[engaged])  # (3-32)
-        out["f_adh"] += row_weight * pull_off.sum(axis=1)  # (3-31)
+        out["f_adh"] += pull_off.sum(axis=1)  # (3-31)
 
         # elastic interlocking (3-25) on material blocks, both flanks, times the sliding fraction
         e_el = np.zeros(n_steps)
         for (k, (_, _, _, _, comp_at, comp_adh)) in zip((k1, k2), flank_states):
             e_el += _interlocking(k, comp_at, comp_adh, stiffness)
-        out["e_el"] += row_weight * e_el * sliding_fraction
+        out["e_el"] += e_el * sliding_fraction
 
     if pbar is not None:
         pbar.close()
@@ -506,7 +611,7 @@ def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip,
     """Contacts with the normal gap change of the friction traction mu p (dissimilar materials)."""
     # first the frictionless solution gives p; the traction term uses it (one fixed-point sweep per pass)
     pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None)
-    dx = params["mesh_grid_spacing"]
+    dx = setup.grid_spacing
     integral = np.cumsum(pressure, axis=1) * dx
     integral -= integral.mean(axis=1, keepdims=True)
     shear = (2 * beta / modulus) * (mu * np.sign(slip))[:, None] * integral
@@ -514,31 +619,79 @@ def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip,
 
 
 def _geometry(params):
-    try:
-        from .nanoblock.geometry import NanoblockGeometry
+    from .nanoblock.geometry import NanoblockGeometry
 
-        return NanoblockGeometry.from_parameters(params)
-    except ImportError:  # pragma: no cover - until the geometry module lands
-        from types import SimpleNamespace
+    return NanoblockGeometry.from_parameters(params)
 
-        return SimpleNamespace(atomic_width=params["atomic_width"], atomic_height=params["atomic_height"],
-                               adhesive_width=params["adhesive_width"], adhesive_height=params["adhesive_height"],
-                               atomic_per_side=params["atomic_per_side"], bulk_height=params["bulk_height"])
+
+def sliding_average(values, sliding, distance):
+    """Energy-per-distance average of a force over a window of sliding distance (MODEL 7b).
+
+    Step ``i`` slides ``sliding[i]`` and dissipates ``values[i] * sliding[i]`` uniformly over it;
+    the result at step ``i`` is the energy dissipated within ``distance / 2`` of sliding on either
+    side of the step's midpoint, divided by the sliding distance that window covers (shorter at
+    the ends of the path). Steps that do not slide (the pitch point) get the average of their
+    neighbourhood. This makes the friction force a property of a physical sliding distance,
+    not of the step size.
+
+    Parameters
+    ----------
+    values : array_like
+        Force at each step [N] (e.g. the friction force of the bond population).
+    sliding : array_like
+        Sliding distance of each step [m], >= 0.
+    distance : float
+        Averaging distance [m], > 0.
+
+    Returns
+    -------
+    ndarray
+        Averaged force [N].
+    """
+    values = np.asarray(values, dtype=float)
+    sliding = np.asarray(sliding, dtype=float)
+    edges = np.concatenate([[0.0], np.cumsum(sliding)])
+    energy = np.concatenate([[0.0], np.cumsum(values * sliding)])
+    centre = 0.5 * (edges[:-1] + edges[1:])
+    lo = np.clip(centre - 0.5 * distance, edges[0], edges[-1])
+    hi = np.clip(centre + 0.5 * distance, edges[0], edges[-1])
+    covered = hi - lo
+    # cumulative energy is piecewise linear in the cumulative sliding distance
+    e_hi = np.interp(hi, edges, energy)
+    e_lo = np.interp(lo, edges, energy)
+    return np.divide(e_hi - e_lo, covered, out=values.copy(), where=covered > 0)
+
+
+def resisting_force(positions, friction_force, first_contact, last_contact, base_pitch):
+    """R(c): the friction forces of every tooth pair in mesh when one pair is at c [N] (MODEL 7b).
+
+    The other pairs sit whole base pitches away on the path of contact, at ``c + k p_b`` for
+    every integer k with ``c_f <= c + k p_b <= c_l``; each resists the drive with its friction
+    force at its own position (taken from the same cycle, interpolated in c).
+    """
+    c = np.asarray(positions, dtype=float)
+    total = np.zeros_like(c)
+    k_max = int(math.ceil((last_contact - first_contact) / base_pitch)) + 1
+    for k in range(-k_max, k_max + 1):
+        other = c + k * base_pitch
+        on_path = (other >= first_contact - 1e-15) & (other <= last_contact + 1e-15)
+        total += np.where(on_path, np.interp(other, c, friction_force), 0.0)
+    return total
 
 
 @cites("thesis", "model", "johnson_1985", "polonsky_keer_1999", "hu_1986")
-def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False):
-    """Friction, adhesion and COF of two rough silicon teeth over one meshing cycle (thesis 4.6, 4.9).
+def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False, realisation=0):
+    """Friction, adhesion, COF and the stiction margin of rough teeth over one meshing cycle (thesis 4.6, 4.9).
 
     Parameters
     ----------
     params : memstribo.parameters.Parameters
-        Parameter set (gear, load, material, nanoblock and ``mesh_*`` parameters).
+        Parameter set (gear, load case, material, nanoblock, interface and ``mesh_*`` parameters).
     roughness : None, "thesis", str or Path, Profile or SurfaceMap
         Roughness of the teeth: ``None``/"thesis" is the seeded synthetic default (labelled
-        synthetic); a path is read with :func:`memstribo.readers.read_topography`; a SurfaceMap
-        gives one line scan per row of nanoblocks (the next rows, if there are enough, for the
-        gear; else the same scans read backwards).
+        synthetic); a path is read with :func:`memstribo.readers.read_topography`. Every row of
+        nanoblocks on each flank gets its own line (:func:`memstribo.roughness.row_roughness`):
+        map rows one nanoblock apart, or independent lines with the statistics of a profile.
     steps : int, optional
         Number of positions c from c_f to c_l (default ``mesh_steps``).
     coating : memstribo.coating.Coating, optional
@@ -548,24 +701,28 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         a coating. ``wear=1`` equals the bare result.
     progress : bool
         Show a tqdm progress bar on stderr.
+    realisation : int
+        Index of the roughness realisation (seeds of the synthesised lines).
 
     Returns
     -------
     xarray.Dataset
-        Over ``step`` with coordinate ``c`` [m]: ``friction_force``, ``adhesion_force``,
-        ``normal_force``, ``cof``, ``cof_chemical``, ``cof_vdw``, ``cof_elastic``,
-        ``energy_chemical``, ``energy_vdw``, ``energy_elastic``, ``sliding_distance``,
-        ``contact_width``, ``stiction_margin``, ``block_load`` (``step``, ``block``) and more;
-        each variable with ``units`` and ``long_name``. Attributes record the roughness, the
-        block-load variant, the Dundurs beta and the passes of the F_t/F_f iteration.
+        Over ``step`` with coordinate ``c`` [m]: ``friction_force`` (averaged over the sliding
+        distance ``friction_averaging_distance``), ``friction_force_instantaneous``,
+        ``resisting_force`` R(c) (all pairs in mesh), ``stiction_margin`` F_t - R(c),
+        ``mesh_efficiency``, ``adhesion_force``, ``normal_force``, ``cof`` and its split,
+        energies by mechanism, ``block_load`` (``step``, ``block``) and more; each variable with
+        ``units`` and ``long_name``. Attributes record the load case, interface model, contact
+        adhesion, roughness rows, the F_t/F_f iteration and ``warnings`` (JSON list of text).
 
     Raises
     ------
     InputError
         A pair that cannot mesh, a load beyond the elastic range (Hertz peak pressure above
-        ``elastic_limit_pressure``), roughness too short for the flank travel, a map with fewer
-        rows than nanoblock rows, a wear fraction outside [0, 1].
+        ``elastic_limit_pressure``), a wear fraction outside [0, 1], a problem too large for memory.
     """
+    import json
+
     import xarray as xr
 
     if not 0.0 <= float(wear) <= 1.0:
@@ -574,7 +731,7 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
                               params["counter_poisson_ratio"])
     beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
                         params["counter_poisson_ratio"])
-    setup = _prepare(params, roughness, steps)
+    setup = _prepare(params, roughness, steps, realisation)
     pair = setup.pair
     # smooth-teeth Hertz contact under the line load actually solved (load / L_eff), Eqs. (4-22)-(4-26)
     hertz = hertz_line_contact(setup.load, setup.effective_face_width, pair.effective_radius(setup.positions),
@@ -582,34 +739,53 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     hertz_peak = hertz.peak_pressure
     if hertz_peak.max() > params["elastic_limit_pressure"]:
         i = int(np.argmax(hertz_peak))
-        raise InputError(f"normal_load {params['normal_load'] * 1e6:.4g} uN is beyond the elastic range: the Hertz peak "
-                         f"pressure reaches {hertz_peak[i] / 1e9:.3g} GPa at c = {setup.positions[i] * 1e6:.3g} um, above "
-                         f"the elastic limit of silicon ({params['elastic_limit_pressure'] / 1e9:.3g} GPa, "
-                         f"elastic_limit_pressure); the elastic model of the thesis no longer holds.")
-    f_t = tangential_force(params["drive_torque"], pair.pitch_radii[0])
-    share = setup.load / params["normal_load"]
+        raise InputError(f"the tooth load ({setup.load[i] * 1e6:.4g} uN, load case '{params['load_case']}') is beyond "
+                         f"the elastic range: the Hertz peak pressure reaches {hertz_peak[i] / 1e9:.3g} GPa at c = "
+                         f"{setup.positions[i] * 1e6:.3g} um, above the elastic limit of silicon "
+                         f"({params['elastic_limit_pressure'] / 1e9:.3g} GPa, elastic_limit_pressure); the elastic "
+                         "model of the thesis no longer holds.")
+    f_t = float(tangential_force(params["drive_torque"], pair.pitch_radii[0]))
+    share = pair.load_share(setup.positions, params["load_sharing"])
 
+    # friction fixed point for dissimilar materials (thesis 4.6 step 7), under-relaxed so it cannot
+    # oscillate; identical materials (beta = 0) uncouple and one pass is exact
     mu = None
     passes = 0
     friction_old = None
+    fixed_point_converged = True
+    max_passes = 30
     while True:
         passes += 1
         out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress)
         sliding = kin["sliding"]
         f_el = np.divide(out["e_el"], sliding, out=np.zeros_like(sliding), where=sliding > 0)
         friction = out["f_chem"] + out["f_vdw"] + f_el
-        mu = friction / (setup.load + out["f_adh"])
+        mu_new = friction / (setup.load + out["f_adh"])
         if beta == 0.0:
             break
         if friction_old is not None and np.max(np.abs(friction - friction_old)) <= 1e-3 * max(friction.max(), 1e-300):
             break
-        if passes >= 10:
+        if passes >= max_passes:
+            fixed_point_converged = False
             break
+        mu = mu_new if mu is None else 0.5 * (mu + mu_new)
         friction_old = friction
 
     denominator = setup.load + out["f_adh"]
     e_chem, e_vdw = out["f_chem"] * sliding, out["f_vdw"] * sliding
     e_el = f_el * sliding
+    energy = e_chem + e_vdw + e_el
+    averaging = params["friction_averaging_distance"] or params["atomic_pitch"]
+    friction_avg = sliding_average(friction, sliding, averaging)
+    resisting = resisting_force(setup.positions, friction_avg, pair.first_contact, pair.last_contact, pair.base_pitch)
+    margin = f_t - resisting
+    # mesh efficiency: friction power of all pairs in mesh over the input power T omega1 (MODEL 7b)
+    power_pair = np.divide(energy, setup.step_time, out=np.zeros_like(energy), where=setup.step_time > 0)
+    power_loss = resisting_force(setup.positions, power_pair, pair.first_contact, pair.last_contact, pair.base_pitch)
+    input_power = float(params["drive_torque"]) * float(pair.pinion_speed)
+    efficiency = 1.0 - power_loss / input_power
+    period = pair.base_pitch / pair.contact_point_speed
+    efficiency_mean = 1.0 - float(energy.sum()) / (input_power * period)
     step = np.arange(setup.positions.size)
 
     def var(values, units, long_name, dims=("step",)):
@@ -633,9 +809,14 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     block_index = np.concatenate([np.tile(np.arange(max(widths)) + k_min[0], n_rows_solved),
                                   np.tile(np.arange(max(widths)) + k_min[1], n_rows_solved)])
 
+    # mean friction stress over the real contact area, against the ideal shear strength
+    contact_area = out["contact_width"] * setup.effective_face_width
+    shear_stress = np.divide(friction_avg, contact_area, out=np.zeros_like(friction_avg), where=contact_area > 0)
+    warnings = _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta)
+
     data = {
         "time": var(pair.time(setup.positions), "s", "time since the first point of contact (4-18)"),
-        "load_share": var(share, "", f"load share of the pair ({params['load_sharing']}, Figure 4-11)"),
+        "load_share": var(share, "1", f"load share of the pair ({params['load_sharing']}, Figure 4-11)"),
         "normal_force": var(setup.load, "N", "normal force on the tooth pair"),
         "effective_radius": var(kin["r_ef"], "m", "radius of relative curvature R_ef (4-11)"),
         "hertz_half_width": var(hertz.half_width, "m", "Hertz half-width a of smooth teeth under the step's load (4-24)"),
@@ -645,27 +826,35 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "contact_width": var(out["contact_width"], "m", "measure of the contact set of the rough contact (row mean)"),
         "max_contact_pressure": var(out["max_pressure"], "Pa", "largest element pressure of the rough contact"),
         "contact_approach": var(out["approach"], "m", "rigid approach of the rough contact solve (row mean)"),
-        "contact_converged": var(out["unconverged"] == 0, "", "whether the contact solve converged in every row"),
-        "contact_residual": var(out["residual"], "", "largest complementarity residual over the rows"),
-        "contact_iterations": var(out["iterations"], "", "mean conjugate-gradient iterations over the rows"),
-        "window_exceeded": var(out["window_exceeded"] > 0, "", "contact reached the ends of the contact window"),
-        "chemical_bonds": var(out["chem_bonds"], "", "chemical bonds between touching atomic blocks (3-10)"),
-        "vdw_bonds": var(out["vdw_bonds"], "", "van der Waals bonds inside the adhesive layer (3-12)"),
+        "contact_converged": var(out["unconverged"] == 0, "1", "whether the contact solve converged in every row"),
+        "contact_residual": var(out["residual"], "1", "largest complementarity residual over the rows"),
+        "contact_iterations": var(out["iterations"], "1", "mean conjugate-gradient iterations over the rows"),
+        "window_exceeded": var(out["window_exceeded"] > 0, "1", "contact reached the ends of the contact window"),
+        "chemical_bonds": var(out["chem_bonds"], "1", "chemical bonds between touching atomic blocks (3-10)"),
+        "vdw_bonds": var(out["vdw_bonds"], "1", "van der Waals bonds, weighted by the interface model (3-12)"),
         "friction_force_chemical": var(out["f_chem"], "N", "friction force of the chemical bonds"),
         "friction_force_vdw": var(out["f_vdw"], "N", "friction force of the vdW bonds"),
         "friction_force_elastic": var(f_el, "N", "friction force of elastic interlocking (3-25)"),
-        "friction_force": var(friction, "N", "friction force F_f (3-1)"),
-        "adhesion_force": var(out["f_adh"], "N", "adhesion (pull-off) force F_adh (3-31, 3-32)"),
-        "cof": var(friction / denominator, "", "apparent coefficient of friction (3-7)"),
-        "cof_chemical": var(out["f_chem"] / denominator, "", "COF from chemical bonds (3-8)"),
-        "cof_vdw": var(out["f_vdw"] / denominator, "", "COF from vdW bonds (3-8)"),
-        "cof_elastic": var(f_el / denominator, "", "COF from elastic interlocking (3-9)"),
+        "friction_force_instantaneous": var(friction, "N", "friction force of the step's bond population and "
+                                                           "interlocking (3-1)"),
+        "friction_force": var(friction_avg, "N", "friction force F_f of the pair: dissipated energy per sliding "
+                                                 "distance over friction_averaging_distance (3-1, MODEL 7b)"),
+        "resisting_force": var(resisting, "N", "resisting force R(c): friction of every pair in mesh (MODEL 7b)"),
+        "adhesion_force": var(out["f_adh"], "N", "adhesion force F_adh (3-31, 3-32, or the cohesive zone)"),
+        "cof": var(friction_avg / denominator, "1", "apparent coefficient of friction (3-7)"),
+        "cof_chemical": var(out["f_chem"] / denominator, "1", "COF from chemical bonds, instantaneous (3-8)"),
+        "cof_vdw": var(out["f_vdw"] / denominator, "1", "COF from vdW bonds, instantaneous (3-8)"),
+        "cof_elastic": var(f_el / denominator, "1", "COF from elastic interlocking, instantaneous (3-9)"),
         "energy_chemical": var(e_chem, "J", "energy dissipated by chemical bonds in the step"),
         "energy_vdw": var(e_vdw, "J", "energy dissipated by vdW bonds in the step"),
         "energy_elastic": var(e_el, "J", "energy dissipated by elastic interlocking in the step"),
-        "energy_dissipated": var(e_chem + e_vdw + e_el, "J", "energy dissipated in the step"),
-        "tangential_force": var(share * f_t, "N", "the pair's share of the tangential force F_t = T/r1 (4-27)"),
-        "stiction_margin": var(share * f_t - friction, "N", "stiction margin F_t - F_f (negative: stiction)"),
+        "energy_dissipated": var(energy, "J", "energy dissipated in the step"),
+        "tangential_force": var(np.full(step.size, f_t), "N", "tangential force F_t = T/r1 (4-27)"),
+        "stiction_margin": var(margin, "N", "stiction margin M(c) = F_t - R(c) (negative: stiction; MODEL 7b)"),
+        "mesh_efficiency": var(efficiency, "1", "instantaneous mesh efficiency 1 - sum F_f |u1 - u2| / (T omega1)"),
+        "friction_shear_stress": var(shear_stress, "Pa", "friction force over the real contact area"),
+        "rigid_atomic_blocks": var(out["rigid_atomic_blocks"], "1", "atomic blocks past the threshold strain "
+                                                                    "(rigid branch of the bilinear law)"),
         "block_load": var(block_load, "N", "normal load of each nanoblock (pinion and gear flanks, rows)",
                           dims=("step", "block")),
     }
@@ -676,36 +865,90 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "block_row": ("block", block_row, {"long_name": "row of nanoblocks across the face width"}),
         "block_index": ("block", block_index, {"long_name": "index of the nanoblock along its flank"}),
     }
+    rows_info = setup.row_roughness
     attrs = {
         "title": "memstribo meshing-cycle simulation (thesis 4.6, 4.9)",
+        "load_case": params["load_case"],
+        "interface_model": params["interface_model"],
+        "contact_adhesion": params["contact_adhesion"],
+        "vdw_cutoff": float(params["vdw_cutoff"]),
+        "friction_averaging_distance": float(averaging),
+        "realisation": int(realisation),
         "roughness": setup.roughness_name,
         "roughness_synthetic": int(setup.roughness_synthetic),
         "roughness_source": setup.roughness_source,
+        "roughness_rows": rows_info.method,
+        "roughness_lines_measured": int(rows_info.measured_lines),
+        "roughness_lines_synthesised": int(rows_info.synthesised_lines),
         "block_load_variant": BLOCK_LOAD_VARIANT,
         "rows": setup.rows,
         "rows_solved": n_rows_solved,
         "effective_face_width": setup.effective_face_width,
         "dundurs_beta": beta,
         "friction_passes": passes,
+        "friction_fixed_point_converged": int(fixed_point_converged),
         "contact_modulus": modulus,
         "coating": "none (bare silicon)" if coating is None else coating.name,
         "wear": float(wear) if coating is not None else 1.0,
-        "grid_spacing": params["mesh_grid_spacing"],
-        "window": setup.grid.size * params["mesh_grid_spacing"],
+        "grid_spacing": setup.grid_spacing,
+        "window": setup.grid.size * setup.grid_spacing,
         "tangential_force_total": f_t,
+        "normal_force_total": float(normal_force_of_load_case(params, pair)),
+        "input_power": input_power,
+        "mesh_efficiency_mean": efficiency_mean,
         "elastic_limit_pressure": params["elastic_limit_pressure"],
+        "ideal_shear_strength": params["ideal_shear_strength"],
+        "warnings": json.dumps(warnings),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta) -> list[str]:
+    """Physical limits and numerical trouble of a cycle, as sentences (MODEL 7c)."""
+    warnings = []
+    unconverged = int((out["unconverged"] > 0).sum())
+    if unconverged:
+        warnings.append(f"the contact solve did not converge in {unconverged} step(s) (flagged in contact_converged)")
+    exceeded = int((out["window_exceeded"] > 0).sum())
+    if exceeded:
+        warnings.append(f"the contact reached the ends of the {setup.grid.size * setup.grid_spacing * 1e6:.3g} um window "
+                        f"in {exceeded} step(s): raise mesh_window")
+    if params["interface_model"] == "gap" and (out["vdw_edge"] > 0).any():
+        warnings.append(f"the gap at the window's ends is below vdw_cutoff in {int((out['vdw_edge'] > 0).sum())} "
+                        "step(s): vdW beyond the window is missed; raise mesh_window")
+    above = int((out["max_pressure"] > params["elastic_limit_pressure"]).sum())
+    if above:
+        warnings.append(f"the rough contact's peak pressure exceeds the elastic limit of silicon "
+                        f"({params['elastic_limit_pressure'] / 1e9:.3g} GPa) in {above} step(s)")
+    rigid = int((out["rigid_atomic_blocks"] > 0).sum())
+    if rigid:
+        warnings.append(f"atomic blocks are past the threshold strain of the bilinear law "
+                        f"({params['threshold_strain']:g}) in {rigid} step(s): they carry load rigidly")
+    peak_shear = float(np.max(shear_stress)) if shear_stress.size else 0.0
+    if peak_shear > params["ideal_shear_strength"]:
+        warnings.append(f"the friction stress over the real contact reaches {peak_shear / 1e9:.3g} GPa, above the ideal "
+                        f"shear strength of silicon ({params['ideal_shear_strength'] / 1e9:.3g} GPa): the teeth "
+                        "would shear and wear rather than slide")
+    if not fixed_point_converged:
+        warnings.append(f"the F_t/F_f fixed point of dissimilar materials (Dundurs beta {beta:.3g}) did not converge "
+                        f"in {passes} passes: the friction is not reliable")
+    if (efficiency <= 0).any():
+        warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
+                        "step(s): friction takes more power than the drive supplies there")
+    return warnings
 
 
 def summarize(dataset) -> dict:
     """The summary of a meshing cycle: the keys of ``memstribo mesh --json`` (SI).
 
-    Means are time averages over the cycle (weighted by the step times); the COF split is the
-    ratio of the cycle's dissipated energies by mechanism to ``integral (F_N + F_adh) ds``, so
-    that ``cof_chemical + cof_vdw + cof_elastic`` equals ``cof_mean``'s energy form
-    (``energy / integral (F_N + F_adh) ds``); ``cof_mean`` itself is the time mean of the COF.
+    One COF per meaning: ``cof_mean`` is the cycle's dissipated energy over
+    ``integral (F_N + F_adh) ds`` (3-7 over the cycle), and its split by mechanism
+    (``cof_chemical``, ``cof_vdw``, ``cof_elastic``) is the same ratio per mechanism, so the
+    parts add up to ``cof_mean`` exactly. The stiction verdict: ``resisting_force_max`` is the
+    largest R(c), ``stiction_margin`` = ``tangential_force`` - ``resisting_force_max`` (MODEL 7b).
     """
+    import json
+
     time = np.asarray(dataset["time"])
     weights = np.gradient(time) if time.size > 1 else np.ones(1)
     weights = weights / weights.sum()
@@ -713,21 +956,28 @@ def summarize(dataset) -> dict:
     denominator = np.asarray(dataset["normal_force"] + dataset["adhesion_force"])
     work = float((denominator * sliding).sum())
     energy = {k: float(dataset[k].sum()) for k in ("energy_chemical", "energy_vdw", "energy_elastic")}
+    split = {f"cof_{k.split('_')[1]}": (v / work if work > 0 else 0.0) for k, v in energy.items()}
     friction = np.asarray(dataset["friction_force"])
-    margin = np.asarray(dataset["stiction_margin"])
+    resisting = np.asarray(dataset["resisting_force"])
+    f_t = float(dataset.attrs["tangential_force_total"])
+    margin = f_t - float(resisting.max())
+    efficiency = np.asarray(dataset["mesh_efficiency"])
     return {
-        "cof_mean": float((np.asarray(dataset["cof"]) * weights).sum()),
+        "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"],
         "cof_max": float(dataset["cof"].max()),
-        "cof_chemical": energy["energy_chemical"] / work if work > 0 else 0.0,
-        "cof_vdw": energy["energy_vdw"] / work if work > 0 else 0.0,
-        "cof_elastic": energy["energy_elastic"] / work if work > 0 else 0.0,
+        **split,
         "friction_force_mean": float((friction * weights).sum()),
         "friction_force_max": float(friction.max()),
+        "resisting_force_max": float(resisting.max()),
         "adhesion_force_mean": float((np.asarray(dataset["adhesion_force"]) * weights).sum()),
         "normal_force_max": float(dataset["normal_force"].max()),
-        "tangential_force": float(dataset.attrs["tangential_force_total"]),
-        "stiction": bool((margin < 0).any()),
-        "stiction_margin": float(margin.min()),
+        "normal_force_total": float(dataset.attrs["normal_force_total"]),
+        "tangential_force": f_t,
+        "stiction": bool(margin < 0),
+        "stiction_margin": margin,
+        "mesh_efficiency": float(dataset.attrs["mesh_efficiency_mean"]),
+        "mesh_efficiency_min": float(efficiency.min()),
+        "max_shear_stress": float(dataset["friction_shear_stress"].max()),
         "steps": int(time.size),
         "sliding_distance": float(sliding.sum()),
         "energy_dissipated": float(sum(energy.values())),
@@ -737,19 +987,126 @@ def summarize(dataset) -> dict:
         "max_contact_pressure": float(dataset["max_contact_pressure"].max()),
         "steps_above_elastic_limit": int((np.asarray(dataset["max_contact_pressure"])
                                           > dataset.attrs.get("elastic_limit_pressure", np.inf)).sum()),
+        "load_case": str(dataset.attrs["load_case"]),
+        "interface_model": str(dataset.attrs["interface_model"]),
+        "contact_adhesion": str(dataset.attrs["contact_adhesion"]),
+        "roughness_rows": str(dataset.attrs["roughness_rows"]),
+        "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
     }
 
 
+def step_convergence(params, roughness=None, *, steps=None, coating=None, wear=1.0, baseline=None, realisation=0):
+    """Relative change of the minimum margin and the mean COF at twice the steps (MODEL 7b).
+
+    Parameters
+    ----------
+    params, roughness, steps, coating, wear, realisation
+        As for :func:`simulate_mesh`.
+    baseline : dict, optional
+        The :func:`summarize` of the run at ``steps`` (computed when not given).
+
+    Returns
+    -------
+    dict
+        ``step_converged`` (both changes below 2 %), ``step_change_margin`` and
+        ``step_change_cof`` (relative, [-]; the margin's relative to F_t), ``steps_checked``.
+    """
+    steps = int(params["mesh_steps"] if steps is None else steps)
+    if baseline is None:
+        baseline = summarize(simulate_mesh(params, roughness, steps=steps, coating=coating, wear=wear,
+                                           realisation=realisation))
+    doubled = summarize(simulate_mesh(params, roughness, steps=2 * steps - 1, coating=coating, wear=wear,
+                                      realisation=realisation))
+    change_margin = abs(doubled["stiction_margin"] - baseline["stiction_margin"]) / max(baseline["tangential_force"],
+                                                                                      1e-300)
+    change_cof = abs(doubled["cof_mean"] - baseline["cof_mean"]) / max(abs(baseline["cof_mean"]), 1e-300)
+    return {"step_converged": bool(change_margin < 0.02 and change_cof < 0.02),
+            "step_change_margin": float(change_margin), "step_change_cof": float(change_cof),
+            "steps_checked": 2 * steps - 1}
+
+
+#: Keys of one realisation in ``per_realisation`` of an ensemble.
+REALISATION_KEYS = ("seed", "realisation", "stiction_margin", "cof_mean", "stiction", "mesh_efficiency")
+
+
+def _ensemble_point(params, roughness, steps, coating, wear, realisation):
+    summary = summarize(simulate_mesh(params, roughness, steps=steps, coating=coating, wear=wear,
+                                      realisation=realisation))
+    summary["realisation"] = realisation
+    summary["seed"] = [int(params["roughness_seed"]), int(realisation)]
+    return summary
+
+
+def simulate_ensemble(params, roughness=None, *, realisations=None, steps=None, coating=None, wear=1.0,
+                      client=None, progress=False):
+    """The stiction verdict over independent roughness realisations (MODEL 7b).
+
+    Each realisation is a meshing cycle (:func:`simulate_mesh`) with its own roughness lines
+    (seeds ``(roughness_seed, realisation)``; the measured lines, where there are any, in
+    realisation 0). With a ``dask.distributed`` ``client`` the realisations run as independent
+    tasks on its workers; the result does not depend on how they were scheduled.
+
+    Parameters
+    ----------
+    params, roughness, steps, coating, wear
+        As for :func:`simulate_mesh`.
+    realisations : int, optional
+        Number of realisations (default the parameter ``realisations``).
+    client : distributed.Client, optional
+    progress : bool
+
+    Returns
+    -------
+    dict
+        ``realisations``, ``stiction_probability`` (fraction that sticks), ``stiction_margin_median``,
+        ``_p05``, ``_p95`` [N], ``cof_mean_median``, ``_p05``, ``_p95``, ``mesh_efficiency_median``,
+        ``per_realisation`` (list of dicts with the keys of :data:`REALISATION_KEYS`), and
+        ``summaries`` (the full summary of every realisation, in order).
+    """
+    n = int(params["realisations"] if realisations is None else realisations)
+    if n < 1:
+        raise InputError(f"realisations must be at least 1, got {n}.")
+    if client is not None:
+        futures = client.map(_ensemble_point, [params] * n, [roughness] * n, [steps] * n, [coating] * n,
+                             [wear] * n, list(range(n)), pure=False)
+        summaries = client.gather(futures)
+    else:
+        iterator = range(n)
+        if progress:
+            from tqdm.auto import tqdm
+
+            iterator = tqdm(iterator, desc="roughness realisations", unit="cycle")
+        summaries = [_ensemble_point(params, roughness, steps, coating, wear, k) for k in iterator]
+    return ensemble_summary(summaries)
+
+
+def ensemble_summary(summaries) -> dict:
+    """Stiction probability and 5/50/95 % quantiles over realisation summaries (MODEL 7b)."""
+    margins = np.array([s["stiction_margin"] for s in summaries])
+    cofs = np.array([s["cof_mean"] for s in summaries])
+    efficiency = np.array([s["mesh_efficiency"] for s in summaries])
+    out = {"realisations": len(summaries),
+           "stiction_probability": float(np.mean(margins < 0))}
+    for name, values in (("stiction_margin", margins), ("cof_mean", cofs), ("mesh_efficiency", efficiency)):
+        out[f"{name}_median"] = float(np.median(values))
+        out[f"{name}_p05"] = float(np.quantile(values, 0.05))
+        out[f"{name}_p95"] = float(np.quantile(values, 0.95))
+    out["per_realisation"] = [{key: s[key] for key in REALISATION_KEYS} for s in summaries]
+    out["summaries"] = list(summaries)
+    return out
+
+
 def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False):
-    """Meshing cycles over a list of loads or nominal areas (thesis 4.9.3, 4.9.4).
+    """Meshing cycles over a list of loads, drive torques or nominal areas (thesis 4.9.3, 4.9.4).
 
     Parameters
     ----------
     params : Parameters
-    parameter : {"load", "area"}
-        ``"load"``: ``values`` are normal loads [N]. ``"area"``: ``values`` are nominal contact
-        areas in multiples of A_adh = w_adh^2 [-]; the face width is set to ``n w_adh`` so that
-        ``n`` rows of nanoblocks share the load (the thesis's "nominal area").
+    parameter : {"load", "torque", "area"}
+        ``"load"``: ``values`` are normal loads [N] (the ``thesis`` load case: the normal load is
+        given). ``"torque"``: drive torques [N m] (the ``torque`` load case). ``"area"``:
+        nominal contact areas in multiples of A_adh = w_adh^2 [-]; the face width is set to
+        ``n w_adh`` so that ``n`` rows of nanoblocks share the load (the thesis's "nominal area").
     values : sequence of float
     roughness, steps, coating, wear
         As for :func:`simulate_mesh`.
@@ -760,16 +1117,16 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
     -------
     list of dict
         One summary (:func:`summarize`) per value, with the swept value first under
-        ``"normal_load"`` or ``"area"`` (and ``"area_multiple"`` for areas).
+        ``"normal_load"``, ``"drive_torque"`` or ``"area"`` (and ``"area_multiple"`` for areas).
     """
     values = [float(v) for v in values]
     if not values:
         raise InputError("a sweep needs at least one value.")
-    if parameter not in ("load", "area"):
-        raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load' or 'area'.")
+    if parameter not in ("load", "torque", "area"):
+        raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load', 'torque' or 'area'.")
     iterator = values
     if progress:
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
         iterator = tqdm(values, desc=f"sweep {parameter}", unit="cycle")
     points = []
@@ -777,8 +1134,13 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
         if parameter == "load":
             if value <= 0:
                 raise InputError(f"sweep load values must be positive forces, got {value!r} N.")
-            point_params = params.updated({"normal_load": value}, origin="sweep")
+            point_params = params.updated({"normal_load": value, "load_case": "thesis"}, origin="sweep")
             head = {"normal_load": value}
+        elif parameter == "torque":
+            if value <= 0:
+                raise InputError(f"sweep torque values must be positive torques, got {value!r} N m.")
+            point_params = params.updated({"drive_torque": value, "load_case": "torque"}, origin="sweep")
+            head = {"drive_torque": value}
         else:
             if value < 1 or not float(value).is_integer():
                 raise InputError(f"sweep area values are whole multiples of A_adh (1, 2, 3, ...), got {value!r}.")

@@ -125,8 +125,10 @@ _SPECS = [
     # --- meshing simulation ---------------------------------------------------------------------
     ParameterSpec("mesh_steps", "", "Steps (positions c) of the meshing simulation from c_f to c_l", kind="int",
                   minimum=3),
-    _positive("mesh_grid_spacing", "m", "Element width of the rough line-contact solve at each step"),
-    _positive("mesh_window", "m", "Length of the contact window solved at each step, centred on the contact point"),
+    _positive("mesh_grid_spacing", "m", "Element width of the rough line-contact solve at each step; unset: the "
+              "largest Hertz width 2a of the load case / mesh_elements_across_contact", optional=True),
+    _positive("mesh_window", "m", "Length of the contact window solved at each step, centred on the contact point; "
+              "unset: 2.4 a + 6 w_adh of the largest Hertz half-width a of the load case", optional=True),
     _positive("mesh_contact_tolerance", "", "Tolerance of the rough line-contact solver (dimensionless residual)"),
     ParameterSpec("load_sharing", "", "Load-sharing function over the mesh (Figure 4-11): dry or lubricated",
                   kind="str", choices=("dry", "lubricated")),
@@ -155,6 +157,29 @@ _SPECS = [
               "forms vdW bonds and adheres, in the sliding models and the meshing cycle, for bare and coated "
               "blocks alike; unset: adhesive_height (thesis 3.5); the Maugis range h0 = w/sigma0 (MODEL §2, "
               "'memstribo constants') is the explicit alternative", optional=True),
+    # --- version 2: load case, adhesive interface, verdict (MODEL 7b, 7c) --------------------
+    ParameterSpec("load_case", "", "Normal load of the meshing cycle: 'torque' (F_n = F_t / cos alpha_w from the "
+                  "drive torque, shared by the pairs in mesh, over the whole face width; MODEL 7b) or 'thesis' "
+                  "(normal_load as given, 25 uN in 4.9; its normal force is not the one the torque implies)",
+                  kind="str", choices=("torque", "thesis")),
+    ParameterSpec("interface_model", "", "vdW bonds of the meshing cycle: 'gap' (energy and attraction scaled by "
+                  "(D0/max(D, D0))^2 at each block's local gap D, up to vdw_cutoff; MODEL 7c) or 'thesis' (full "
+                  "energy inside a band of adhesive_layer_thickness, thesis 3.5)", kind="str",
+                  choices=("gap", "thesis")),
+    _positive("vdw_cutoff", "m", "Local gap beyond which vdW bonds are neglected (interface_model 'gap'); a "
+              "numerical parameter: doubling it changes the mean COF by less than 1 %"),
+    ParameterSpec("contact_adhesion", "", "Adhesion inside the rough contact solve of the meshing cycle: 'maugis' "
+                  "(Maugis-Dugdale cohesive zone, sigma0 and h0 from the constants; MODEL 7c) or 'none'",
+                  kind="str", choices=("maugis", "none")),
+    ParameterSpec("mesh_elements_across_contact", "", "Contact elements across the largest Hertz width 2a when "
+                  "mesh_grid_spacing is unset", kind="int", minimum=8, maximum=4096),
+    _positive("friction_averaging_distance", "m", "Sliding distance over which the friction force of the verdict "
+              "averages the dissipated energy (MODEL 7b); unset: atomic_pitch, the distance over which the bond "
+              "population renews", optional=True),
+    ParameterSpec("realisations", "", "Independent roughness realisations of the stiction verdict (ensemble, "
+                  "MODEL 7b)", kind="int", minimum=1, maximum=10000),
+    _positive("ideal_shear_strength", "Pa", "Ideal shear strength of the tooth material: a friction stress above "
+              "it is flagged as a warning (silicon: about 6.8 GPa, Roundy and Cohen 2001)"),
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}
