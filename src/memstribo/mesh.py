@@ -776,7 +776,10 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     e_el = f_el * sliding
     energy = e_chem + e_vdw + e_el
     averaging = params["friction_averaging_distance"] or params["atomic_pitch"]
-    friction_avg = sliding_average(friction, sliding, averaging)
+    # every part averaged alike (the average is linear), so the parts add up to the friction force
+    f_chem_avg, f_vdw_avg, f_el_avg = (sliding_average(f, sliding, averaging) for f in (out["f_chem"], out["f_vdw"],
+                                                                                       f_el))
+    friction_avg = f_chem_avg + f_vdw_avg + f_el_avg
     resisting = resisting_force(setup.positions, friction_avg, pair.first_contact, pair.last_contact, pair.base_pitch)
     margin = f_t - resisting
     # mesh efficiency: friction power of all pairs in mesh over the input power T omega1 (MODEL 7b)
@@ -842,9 +845,9 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "resisting_force": var(resisting, "N", "resisting force R(c): friction of every pair in mesh (MODEL 7b)"),
         "adhesion_force": var(out["f_adh"], "N", "adhesion force F_adh (3-31, 3-32, or the cohesive zone)"),
         "cof": var(friction_avg / denominator, "1", "apparent coefficient of friction (3-7)"),
-        "cof_chemical": var(out["f_chem"] / denominator, "1", "COF from chemical bonds, instantaneous (3-8)"),
-        "cof_vdw": var(out["f_vdw"] / denominator, "1", "COF from vdW bonds, instantaneous (3-8)"),
-        "cof_elastic": var(f_el / denominator, "1", "COF from elastic interlocking, instantaneous (3-9)"),
+        "cof_chemical": var(f_chem_avg / denominator, "1", "COF from chemical bonds (3-8)"),
+        "cof_vdw": var(f_vdw_avg / denominator, "1", "COF from vdW bonds (3-8)"),
+        "cof_elastic": var(f_el_avg / denominator, "1", "COF from elastic interlocking (3-9)"),
         "energy_chemical": var(e_chem, "J", "energy dissipated by chemical bonds in the step"),
         "energy_vdw": var(e_vdw, "J", "energy dissipated by vdW bonds in the step"),
         "energy_elastic": var(e_el, "J", "energy dissipated by elastic interlocking in the step"),

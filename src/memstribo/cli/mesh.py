@@ -4,24 +4,39 @@ from __future__ import annotations
 
 import sys
 
+import argparse
+
 from .common import CommandResult
 
 NAME = "mesh"
 HELP = "meshing-cycle simulation: friction, adhesion, COF and its split, stiction margin (thesis 4.6-4.9)"
 ORDER = 50
 
-MESH_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic", "friction_force_mean",
-             "friction_force_max", "adhesion_force_mean", "normal_force_max", "tangential_force", "stiction",
-             "stiction_margin", "steps", "sliding_distance")
+MESH_KEYS = ("load_case", "interface_model", "contact_adhesion", "cof_mean", "cof_max", "cof_chemical", "cof_vdw",
+             "cof_elastic", "friction_force_mean", "friction_force_max", "resisting_force_max", "adhesion_force_mean",
+             "normal_force_max", "tangential_force", "stiction", "stiction_margin", "mesh_efficiency", "steps",
+             "sliding_distance", "roughness_rows", "max_shear_stress", "warnings")
+
+#: Keys of the ensemble verdict (``--realisations N``).
+ENSEMBLE_KEYS = ("realisations", "stiction_probability", "stiction_margin_median", "stiction_margin_p05",
+                 "stiction_margin_p95", "cof_mean_median", "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median",
+                 "mesh_efficiency_p05", "mesh_efficiency_p95", "per_realisation")
 
 
 def register(subparsers, parents):
     parser = subparsers.add_parser(
         NAME, parents=parents, help=HELP,
         description=HELP + ". The rough contact is solved at every step along the whole path of contact with the "
-        "load-sharing function; nanoblocks tile both flanks. Change the load with --set normal_load='50 uN', the "
-        "resolution with --set mesh_grid_spacing='1 nm'.")
+        "load-sharing function; nanoblocks tile both flanks, every row with its own roughness. The default load case "
+        "'torque' loads the teeth with F_n = F_t / cos(alpha) from the drive torque; '--load-case thesis' uses "
+        "normal_load (25 uN). The verdict compares F_t with R(c), the friction of all pairs in mesh.")
     add_common_arguments(parser)
+    parser.add_argument("--realisations", type=int, metavar="N",
+                        help="independent roughness realisations: the verdict as a stiction probability with "
+                             "5-95 %% bands (default: the parameter realisations, 1)")
+    parser.add_argument("--scheduler", metavar="ADDRESS", help="run the realisations on a dask.distributed scheduler")
+    parser.add_argument("--step-check", action=argparse.BooleanOptionalAction, default=True,
+                        help="rerun at twice the steps and report step_converged (default: on)")
     parser.add_argument("--out", metavar="DIR", help="write the time series (NetCDF + CSV) and the figures (PNG + SVG)")
     parser.set_defaults(handler=run)
 
@@ -34,6 +49,9 @@ def add_common_arguments(parser):
     parser.add_argument("--steps", type=int, metavar="N", help="positions along the path of contact (default: "
                                                                "the parameter mesh_steps)")
     parser.add_argument("--coating", metavar="NAME", help="SAM coating of the teeth (e.g. OTS); default: bare silicon")
+    parser.add_argument("--load-case", choices=("torque", "thesis"),
+                        help="normal load: 'torque' (F_t / cos alpha from the drive torque, default) or 'thesis' "
+                             "(normal_load as given, 25 uN); sets the parameter load_case")
     parser.add_argument("--wear", type=float, default=1.0, metavar="OMEGA",
                         help="worn fraction of the gear's coating, 0..1 (with --coating; default 1 = bare)")
     parser.add_argument("--progress", action="store_true", help="progress bar on stderr (default: when stderr is "
@@ -57,15 +75,52 @@ def simulation_options(args):
     return dict(steps=args.steps, coating=coating, wear=args.wear, progress=progress)
 
 
-def run(args, params):
-    from ..mesh import SUMMARY_UNITS, simulate_mesh, summarize
+def apply_load_case(args, params):
+    """The parameter set with ``--load-case`` applied (unchanged without it)."""
+    if getattr(args, "load_case", None):
+        return params.updated({"load_case": args.load_case}, origin="--load-case")
+    return params
 
+
+def run(args, params):
+    from ..errors import InputError
+    from ..mesh import SUMMARY_UNITS, simulate_ensemble, simulate_mesh, step_convergence, summarize
+
+    params = apply_load_case(args, params)
     options = simulation_options(args)
+    realisations = params["realisations"] if args.realisations is None else args.realisations
+    if realisations < 1:
+        raise InputError(f"--realisations must be at least 1, got {realisations}.")
     dataset = simulate_mesh(params, args.roughness, **options)
     summary = summarize(dataset)
     values = {key: summary[key] for key in MESH_KEYS}
     values.update({key: summary[key] for key in summary if key not in MESH_KEYS})
+    if args.step_check:
+        values.update(step_convergence(params, args.roughness, steps=options["steps"], coating=options["coating"],
+                                       wear=options["wear"], baseline=summary))
+    if realisations > 1:
+        client = None
+        if args.scheduler:
+            from distributed import Client
+
+            client = Client(args.scheduler)
+        try:
+            ensemble = simulate_ensemble(params, args.roughness, realisations=realisations, steps=options["steps"],
+                                         coating=options["coating"], wear=options["wear"], client=client,
+                                         progress=options["progress"])
+        finally:
+            if client is not None:
+                client.close()
+        values.update({key: ensemble[key] for key in ENSEMBLE_KEYS})
     notes = [
+        f"  load case '{summary['load_case']}': normal force {summary['normal_force_total'] * 1e3:.4g} mN on the "
+        f"teeth, F_t {summary['tangential_force'] * 1e3:.4g} mN"
+        + (" (the thesis's F_ext: not the normal force the torque implies)" if summary["load_case"] == "thesis" else ""),
+        f"  verdict: {'STICTION' if summary['stiction'] else 'no stiction'}: largest resisting force R(c) "
+        f"{summary['resisting_force_max'] * 1e3:.4g} mN (friction of every pair in mesh) against F_t "
+        f"{summary['tangential_force'] * 1e3:.4g} mN, margin {summary['stiction_margin'] * 1e3:+.4g} mN",
+        f"  interface: vdW '{summary['interface_model']}', contact adhesion '{summary['contact_adhesion']}'; "
+        f"rows: {summary['roughness_rows']}",
         f"  roughness: {dataset.attrs['roughness']}"
         + (" (synthetic: the thesis's scan is not published)" if dataset.attrs["roughness_synthetic"] else ""),
         f"  block loads: {dataset.attrs['block_load_variant']}",
@@ -75,19 +130,17 @@ def run(args, params):
         + ("identical materials, one pass is exact" if dataset.attrs["dundurs_beta"] == 0
            else f"F_t/F_f iteration, {dataset.attrs['friction_passes']} passes"),
     ]
-    if summary["unconverged_steps"]:
-        notes.append(f"  WARNING: the contact solve did not converge in {summary['unconverged_steps']} step(s); they are "
-                     "flagged in the dataset (contact_converged).")
-    if summary["window_exceeded_steps"]:
-        notes.append(f"  WARNING: the contact reached the ends of the window in {summary['window_exceeded_steps']} "
-                     f"step(s): raise mesh_window (now {dataset.attrs['window'] * 1e6:.3g} um), e.g. --set "
-                     f"mesh_window='{2 * dataset.attrs['window'] * 1e6:.3g} um'.")
-    if summary["steps_above_elastic_limit"]:
-        notes.append(f"  WARNING: the rough contact's peak pressure exceeds the elastic limit of silicon "
-                     f"({dataset.attrs['elastic_limit_pressure'] / 1e9:.3g} GPa) in {summary['steps_above_elastic_limit']} "
-                     "step(s): the elastic model is stretched there.")
-    if summary["stiction"]:
-        notes.append("  stiction: the friction force exceeds the pair's share of F_t in part of the cycle.")
+    if "step_converged" in values:
+        notes.append(f"  step check at {values['steps_checked']} steps: margin changes by "
+                     f"{values['step_change_margin'] * 100:.2g} % of F_t, mean COF by {values['step_change_cof'] * 100:.2g} %"
+                     + ("" if values["step_converged"] else " -- NOT converged (goal < 2 %): use more steps"))
+    if "stiction_probability" in values:
+        notes.append(f"  ensemble of {values['realisations']} roughness realisations: stiction probability "
+                     f"{values['stiction_probability'] * 100:.0f} %, margin {values['stiction_margin_p05'] * 1e3:+.3g} .. "
+                     f"{values['stiction_margin_p95'] * 1e3:+.3g} mN (5-95 %), mean COF {values['cof_mean_p05']:.3g} .. "
+                     f"{values['cof_mean_p95']:.3g}")
+    for text in summary["warnings"]:
+        notes.append(f"  WARNING: {text}.")
     if args.out:
         notes.extend(write_outputs(dataset, args.out))
     return CommandResult(values=values, units=dict(SUMMARY_UNITS), title="meshing cycle (thesis 4.6-4.9)",
@@ -122,10 +175,12 @@ def plot_cycle(dataset, folder) -> list:
         ax.axvline(0.0, color="0.6", lw=0.8, ls=":")
         return figure, ax
 
-    figure, ax = axes("Friction force over the meshing cycle", "force [uN]")
-    ax.plot(c, dataset["friction_force"] * 1e6, lw=0.9, label="friction force F_f")
-    ax.plot(c, dataset["tangential_force"] * 1e6, lw=0.9, ls="--", label="available F_t (pair's share)")
-    ax.legend(fontsize=8)
+    figure, ax = axes("Resisting force and drive over the meshing cycle", "force [uN]")
+    ax.plot(c, dataset["friction_force_instantaneous"] * 1e6, lw=0.5, color="0.7", label="F_f of the pair, per step")
+    ax.plot(c, dataset["friction_force"] * 1e6, lw=0.9, label="F_f of the pair (averaged over one atomic pitch)")
+    ax.plot(c, dataset["resisting_force"] * 1e6, lw=1.2, color="C3", label="R(c): friction of all pairs in mesh")
+    ax.plot(c, dataset["tangential_force"] * 1e6, lw=0.9, ls="--", color="k", label="F_t = T / r1 (stiction above)")
+    ax.legend(fontsize=7)
     written += save_figure(figure, folder, "mesh_friction_force")
 
     figure, ax = axes("Adhesion force over the meshing cycle", "force [uN]")

@@ -5,10 +5,13 @@ from __future__ import annotations
 from .common import CommandResult
 
 NAME = "sweep"
-HELP = "meshing cycles over loads (sweep load) or nominal contact areas (sweep area), thesis 4.9.3-4.9.4"
+HELP = ("meshing cycles over loads (sweep load), drive torques (sweep torque) or nominal contact areas (sweep area), "
+        "thesis 4.9.3-4.9.4")
 ORDER = 55
 
-_DEFAULTS = {"load": "25uN:300uN:25uN", "area": "1:10:1"}
+_DEFAULTS = {"load": "25uN:300uN:25uN", "torque": "0.2e-7Nm:2e-7Nm:0.2e-7Nm", "area": "1:10:1"}
+_UNITS = {"load": "N", "torque": "N*m", "area": ""}
+_HEAD = {"load": ["normal_load"], "torque": ["drive_torque"], "area": ["area_multiple", "area"]}
 
 
 def register(subparsers, parents):
@@ -19,8 +22,10 @@ def register(subparsers, parents):
         description=HELP + ". VALUES is START:STOP:STEP (STOP included) or a comma list; loads carry units "
         "('25uN:300uN:25uN'), areas are whole multiples of A_adh = w_adh^2 (the face width is set to that many "
         "nanoblock rows).")
-    parser.add_argument("parameter", choices=("load", "area"), help="what to sweep")
-    parser.add_argument("--values", metavar="VALUES", help="default: load 25uN:300uN:25uN, area 1:10:1")
+    parser.add_argument("parameter", choices=("load", "torque", "area"),
+                        help="what to sweep (load: the thesis load case; torque: the torque load case)")
+    parser.add_argument("--values", metavar="VALUES",
+                        help="default: load 25uN:300uN:25uN, torque 0.2e-7Nm:2e-7Nm:0.2e-7Nm, area 1:10:1")
     add_common_arguments(parser)
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and its figures (PNG + SVG)")
     parser.set_defaults(handler=run)
@@ -53,17 +58,17 @@ def parse_values(text: str, unit: str, name: str = "--values") -> list[float]:
 
 def run(args, params):
     from ..mesh import sweep
-    from .mesh import MESH_KEYS, simulation_options
+    from .mesh import MESH_KEYS, apply_load_case, simulation_options
 
-    unit = "N" if args.parameter == "load" else ""
-    values = parse_values(args.values or _DEFAULTS[args.parameter], unit)
+    params = apply_load_case(args, params)
+    values = parse_values(args.values or _DEFAULTS[args.parameter], _UNITS[args.parameter])
     options = simulation_options(args)
     progress = options.pop("progress")
     roughness = args.roughness
     if roughness == "thesis":
         roughness = None
     points = sweep(params, args.parameter, values, roughness, progress=progress, **options)
-    head = ["normal_load"] if args.parameter == "load" else ["area_multiple", "area"]
+    head = _HEAD[args.parameter]
     points = [{key: point[key] for key in head + list(MESH_KEYS) + ["energy_dissipated", "energy_chemical",
                                                                      "energy_vdw", "energy_elastic",
                                                                      "unconverged_steps"]}
@@ -76,7 +81,8 @@ def run(args, params):
     lines = [f"  {head[0]:>13} {'cof_mean':>9} {'chemical':>9} {'vdW':>9} {'elastic':>9} {'F_f mean':>10} "
              f"{'F_adh mean':>11} {'energy':>10}"]
     for p in points:
-        swept = f"{p['normal_load'] * 1e6:.4g} uN" if args.parameter == "load" else f"{p['area_multiple']} A_adh"
+        swept = (f"{p['normal_load'] * 1e6:.4g} uN" if args.parameter == "load" else
+                 f"{p['drive_torque']:.3g} N m" if args.parameter == "torque" else f"{p['area_multiple']} A_adh")
         lines.append(f"  {swept:>13} {p['cof_mean']:9.4g} {p['cof_chemical']:9.4g} {p['cof_vdw']:9.4g} "
                      f"{p['cof_elastic']:9.2g} {p['friction_force_mean'] * 1e6:7.4g} uN "
                      f"{p['adhesion_force_mean'] * 1e6:8.4g} uN {p['energy_dissipated'] * 1e12:7.4g} pJ")
@@ -91,17 +97,19 @@ def _write(parameter, points, folder) -> list[str]:
     from ..mesh import SUMMARY_UNITS
     from ..output import new_figure, save_figure, write_dataset
 
-    dim = "normal_load" if parameter == "load" else "area_multiple"
+    dim = _HEAD[parameter][0]
     coordinate = np.array([p[dim] for p in points], dtype=float)
-    keys = [k for k in points[0] if k not in ("normal_load", "area_multiple", "area", "stiction")]
+    keys = [k for k in points[0] if k not in ("normal_load", "drive_torque", "area_multiple", "area", "stiction")
+            and isinstance(points[0][k], (int, float)) and not isinstance(points[0][k], bool)]
     data = {k: (dim, np.array([p[k] for p in points], dtype=float), {"units": SUMMARY_UNITS.get(k, ""),
                                                                        "long_name": k.replace("_", " ")})
             for k in keys}
-    dataset = xr.Dataset(data, coords={dim: (dim, coordinate, {"units": "N" if parameter == "load" else "",
+    dataset = xr.Dataset(data, coords={dim: (dim, coordinate, {"units": _UNITS[parameter] or "1",
                                                               "long_name": dim.replace("_", " ")})})
     written = write_dataset(dataset, folder, f"sweep_{parameter}")
     x = coordinate * (1e6 if parameter == "load" else 1.0)
-    xlabel = "external load [uN]" if parameter == "load" else "nominal contact area [A_adh]"
+    xlabel = {"load": "external load [uN]", "torque": "drive torque [N m]",
+              "area": "nominal contact area [A_adh]"}[parameter]
     figure, ax = new_figure(figsize=(5.6, 3.6))
     ax.plot(x, dataset["cof_mean"], "o-", label="COF (cycle mean)")
     ax.plot(x, dataset["cof_chemical"], ".--", label="chemical")
