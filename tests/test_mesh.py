@@ -312,7 +312,7 @@ def test_unconverged_steps_are_flagged_and_counted(params, monkeypatch):
 
 
 def test_window_too_small_is_flagged(params):
-    ds = simulate_mesh(params.updated({"mesh_window": "1.3 um"}), steps=11)
+    ds = simulate_mesh(params.updated({"mesh_window": "1.3 um", "mesh_grid_spacing": "10 nm"}), steps=11)
     summary = summarize(ds)
     assert summary["window_exceeded_steps"] > 0
     assert any("window" in text for text in summary["warnings"])

@@ -284,6 +284,8 @@ def _prepare(params, roughness, steps, realisation=0) -> MeshSetup:
     window = params["mesh_window"]
     if window is None:
         window = 2.4 * a_max + 6 * w_adh
+    if params["mesh_grid_spacing"] is None:
+        dx = min(dx, window / 64)  # a sized grid always has the 64 elements the solver needs
     n = int(round(window / dx))
     if n < 64:
         raise InputError(f"mesh_window / mesh_grid_spacing = {n}: at least 64 contact elements are needed.")
