@@ -50,7 +50,7 @@ STAGES: dict[str, str] = {
     "sliding": "Sliding of nanoblocks on a flat and on the rough surface",
     "gear": "Gear pair and macroscopic contact",
     "mesh": "Bare silicon meshing cycle",
-    "load_sweep": "COF and dissipated energy versus external load",
+    "load_sweep": "COF and dissipated energy versus external load (thesis load case)",
     "area_sweep": "COF and dissipated energy versus nominal contact area",
     "coated": "Coated pair (functionalised surfaces)",
     "wear_sweep": "Wear of the coating: COF versus worn fraction",
@@ -76,6 +76,7 @@ _RUN_KEYS = {
     "validation": "put the validation table into report.html (default true; computed at the end of the run)",
     "sliding_distance": "sliding distance of the structure in the sliding stage (default: the model's)",
     "cycles_observed": "observed coating life [meshing cycles] to calibrate c1 (default: none)",
+    "realisations": "independent roughness realisations of the bare verdict (default 16: a 5-95 % band)",
 }
 
 
@@ -107,10 +108,12 @@ class RunOptions:
         Sliding distance [m] of the structure in the ``sliding`` stage (None: the model's default).
     validation : bool
         Put the validation table (every topic's rows, computed at the end) into the report.
+    realisations : int
+        Independent roughness realisations of the bare verdict (MODEL 7b).
     """
 
     steps: int | None = None
-    loads: tuple[float, ...] = tuple(float(v) for v in np.arange(1, 13) * 25e-6)
+    loads: tuple[float, ...] = (25e-6, 50e-6, 100e-6, 150e-6, 200e-6, 300e-6)
     areas: tuple[float, ...] = (1.0, 2.0, 4.0, 8.0, 16.0)
     wear: tuple[float, ...] = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)
     coating: str = "OTS"
@@ -120,6 +123,7 @@ class RunOptions:
     cycles_observed: float | None = None
     sliding_distance: float | None = None
     validation: bool = True
+    realisations: int = 16
 
     @classmethod
     def from_table(cls, table: Mapping[str, Any] | None, base_folder: str | Path | None = None) -> "RunOptions":
@@ -142,9 +146,14 @@ class RunOptions:
         options: dict[str, Any] = {}
         if "steps" in table:
             steps = table["steps"]
-            if not isinstance(steps, int) or isinstance(steps, bool) or steps < 2:
-                raise InputError(f"[run] steps = {steps!r}: give an integer >= 2.")
+            if not isinstance(steps, int) or isinstance(steps, bool) or steps < 3:
+                raise InputError(f"[run] steps = {steps!r}: give an integer >= 3 (a meshing cycle needs 3 positions).")
             options["steps"] = steps
+        if "realisations" in table:
+            count = table["realisations"]
+            if not isinstance(count, int) or isinstance(count, bool) or not 1 <= count <= 10000:
+                raise InputError(f"[run] realisations = {count!r}: give an integer from 1 to 10000.")
+            options["realisations"] = count
 
         def number_list(key, unit, minimum, maximum=None):
             values = table[key]
@@ -313,8 +322,11 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``tangential_force`` F_t [N]; ``bare_friction_force_max`` [N]; ``bare_stiction`` (F_f >= F_t
-        somewhere on the path of contact); ``bare_stiction_margin`` = min(F_t - F_f) [N]; ``bare_cof_mean``;
+        ``tangential_force`` F_t [N]; ``load_case``; ``bare_resisting_force_max`` (largest R(c), the friction
+        of all pairs in mesh) [N]; ``bare_stiction`` (R > F_t somewhere on the path of contact);
+        ``bare_stiction_margin`` = F_t - max R [N]; ``bare_cof_mean``; ``bare_mesh_efficiency``; ``bare_warnings``;
+        with an ensemble ``bare_stiction_probability`` and the 5/50/95 % quantiles of the margin and the mean
+        COF; ``bare_step_converged`` and the relative changes at twice the steps;
         the same with ``coated_`` for the intact coating; ``wear_at_stiction`` (the worn fraction Omega at
         which F_f reaches F_t, interpolated in the wear sweep, or None); ``cycles_to_stiction``,
         ``cycles_to_failure`` [meshing cycles] (None while the damage constant c1 is unknown) and
@@ -327,10 +339,18 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
     for label, stage in (("bare", "mesh"), ("coated", "coated")):
         summary = summaries.get(stage)
         if summary:
-            out[f"{label}_friction_force_max"] = summary["friction_force_max"]
+            out["load_case"] = summary.get("load_case")
+            out[f"{label}_resisting_force_max"] = summary["resisting_force_max"]
             out[f"{label}_stiction_margin"] = summary["stiction_margin"]
-            out[f"{label}_stiction"] = bool(summary["stiction_margin"] <= 0.0)
+            out[f"{label}_stiction"] = bool(summary["stiction_margin"] < 0.0)
             out[f"{label}_cof_mean"] = summary["cof_mean"]
+            out[f"{label}_mesh_efficiency"] = summary.get("mesh_efficiency")
+            out[f"{label}_warnings"] = list(summary.get("warnings", []))
+            for key in ("step_converged", "step_change_margin", "step_change_cof", "realisations",
+                        "stiction_probability", "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95",
+                        "cof_mean_median", "cof_mean_p05", "cof_mean_p95"):
+                if key in summary:
+                    out[f"{label}_{key}"] = summary[key]
     sweep = summaries.get("wear_sweep")
     if sweep:
         out["wear_at_stiction"] = sweep.get("critical_wear")
@@ -364,10 +384,13 @@ def plot_cycle(dataset, tangential_force=None, title=""):
 
     figure, (top, bottom) = new_figure(2, 1, figsize=(7, 6), sharex=True)
     c = np.asarray(dataset["c"].values) * 1e6 if "c" in dataset.coords else np.arange(dataset.sizes["step"])
+    if "resisting_force" in dataset:
+        top.plot(c, np.asarray(dataset["resisting_force"].values) * 1e6, "-", lw=1.3, color="C3",
+                 label="resisting force R(c), all pairs in mesh")
     for name, style in (("friction_force", "-"), ("adhesion_force", "--"), ("normal_force", ":")):
         top.plot(c, np.asarray(dataset[name].values) * 1e6, style, label=name.replace("_", " "))
     if tangential_force is not None:
-        top.axhline(tangential_force * 1e6, color="k", lw=0.8, label="available tangential force F_t")
+        top.axhline(tangential_force * 1e6, color="k", lw=0.8, label="tangential force F_t (stiction where R > F_t)")
     top.set_ylabel("force [µN]")
     top.legend(fontsize=8)
     top.set_title(title, fontsize=10)
@@ -376,6 +399,29 @@ def plot_cycle(dataset, tangential_force=None, title=""):
     bottom.set_ylabel("COF [-]")
     bottom.set_xlabel("position on the line of action c [µm]")
     bottom.legend(fontsize=8)
+    figure.tight_layout()
+    return figure
+
+
+def plot_ensemble(ensemble, tangential_force):
+    """Stiction margin and mean COF of every roughness realisation, with the 5-95 % band (MODEL 7b)."""
+    from .output import new_figure
+
+    rows = ensemble["per_realisation"]
+    index = np.arange(len(rows))
+    figure, (left, right) = new_figure(1, 2, figsize=(8, 3.4))
+    for ax, key, scale, label in ((left, "stiction_margin", 1e3, "minimum margin F_t - R [mN]"),
+                                  (right, "cof_mean", 1.0, "mean COF [-]")):
+        values = np.array([r[key] for r in rows]) * scale
+        ax.fill_between([-0.5, len(rows) - 0.5], ensemble[f"{key}_p05"] * scale, ensemble[f"{key}_p95"] * scale,
+                        color="C0", alpha=0.15, label="5-95 %")
+        ax.axhline(ensemble[f"{key}_median"] * scale, color="C0", ls="--", lw=0.9, label="median")
+        ax.plot(index, values, "o", ms=4, color="C0")
+        ax.set_xlabel("roughness realisation")
+        ax.set_ylabel(label)
+    left.axhline(0.0, color="C3", lw=0.9, label="stiction below")
+    left.legend(fontsize=7)
+    left.set_title(f"stiction probability {ensemble['stiction_probability'] * 100:.0f} %", fontsize=10)
     figure.tight_layout()
     return figure
 
@@ -670,14 +716,33 @@ class RunChain:
         return gear["tangential_force"] if gear else None
 
     def mesh(self):
-        """The bare-silicon meshing cycle (thesis 4.9): forces, COF and its split, energies."""
+        """The bare-silicon meshing cycle (thesis 4.9, MODEL 7b): forces, COF and its split, energies, the
+        stiction verdict over an ensemble of roughness realisations and its step convergence."""
+        mesh = _module("mesh")
         dataset = self._simulate(self.params)
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
-        self.summaries["mesh"] = cycle_summary(dataset)
+        summary = cycle_summary(dataset)
+        summary.update(mesh.step_convergence(self.params, self.results["mesh_profile"], steps=self.options.steps,
+                                             baseline=summary))
+        count = self.options.realisations
+        if count > 1:
+            first = dict(summary, realisation=0, seed=[int(self.params["roughness_seed"]), 0])
+            others = [mesh._ensemble_point(self.params, self.results["mesh_profile"], self.options.steps, None, 1.0, k)
+                      for k in self._tick(range(1, count), "roughness realisations")]
+            ensemble = mesh.ensemble_summary([first] + others)
+            self.results["ensemble"] = ensemble
+            summary.update({key: value for key, value in ensemble.items() if key != "summaries"})
+            self._json({key: value for key, value in ensemble.items() if key != "summaries"}, "mesh_bare_ensemble")
+        self.summaries["mesh"] = summary
         self._figure(plot_cycle(dataset, self._tangential_force(), "bare silicon"), "mesh_bare_forces_cof",
-                     "Bare silicon meshing cycle: friction, adhesion and normal force against the available "
-                     "tangential force F_t (top), COF and its chemical / vdW / elastic split (bottom).")
+                     "Bare silicon meshing cycle (first roughness realisation): the resisting force R(c) of all pairs "
+                     "in mesh against F_t, the friction of one pair, adhesion and normal force (top), COF and its "
+                     "chemical / vdW / elastic split (bottom).")
+        if "ensemble" in self.results:
+            self._figure(plot_ensemble(self.results["ensemble"], summary["tangential_force"]), "mesh_bare_ensemble",
+                         f"Stiction margin and mean COF of {count} independent roughness realisations (5-95 % band "
+                         "shaded, median dashed): the verdict's spread.")
         self._figure(plot_energy(dataset, "bare silicon"), "mesh_bare_energy",
                      "Energy dissipated per step by chemical bonds, vdW bonds and elastic interlocking.")
 

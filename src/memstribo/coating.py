@@ -33,10 +33,10 @@ SWEEP_VARIABLES = {
     "cof_chemical": ("", "COF from chemical bonds"),
     "cof_vdw": ("", "COF from van der Waals bonds"),
     "cof_elastic": ("", "COF from elastic interlocking"),
-    "friction_force": ("N", "friction force F_f"),
+    "friction_force": ("N", "largest resisting force R(c): friction of all pairs in mesh (MODEL 7b)"),
     "tangential_force": ("N", "available tangential force F_t = T / r (4-27)"),
-    "stiction": ("", "1 where F_f >= F_t (stiction), else 0"),
-    "stiction_margin": ("N", "stiction margin F_t - F_f"),
+    "stiction": ("", "1 where max R(c) > F_t (stiction), else 0"),
+    "stiction_margin": ("N", "stiction margin F_t - max R(c) (MODEL 7b)"),
 }
 
 
@@ -155,7 +155,7 @@ def check_wear(wear) -> np.ndarray:
 
 #: Which key of ``mesh.summarize`` gives each sweep quantity (the cycle's mean COF and its
 #: energy split, the largest friction force, the total F_t, the lowest stiction margin).
-_SUMMARY_KEYS = {"cof": "cof_mean", "friction_force": "friction_force_max"}
+_SUMMARY_KEYS = {"cof": "cof_mean", "friction_force": "resisting_force_max"}
 
 
 def _summary_value(summary: dict, dataset, key: str) -> float:
@@ -166,7 +166,7 @@ def _summary_value(summary: dict, dataset, key: str) -> float:
         value = summary[key]
         return float(value) if not isinstance(value, (bool, np.bool_)) else float(bool(value))
     if key == "stiction" and "stiction_margin" in summary:
-        return float(summary["stiction_margin"] <= 0)
+        return float(summary["stiction_margin"] < 0)
     if key in dataset:
         data = dataset[key]
         if key == "stiction_margin":

@@ -93,20 +93,41 @@ def validation_rows() -> tuple[list, str | None]:
 def _verdict_html(result) -> str:
     v = result.verdict
     items = []
+    case = v.get("load_case")
+    case_text = ("load case 'torque': the tooth normal force F<sub>t</sub>/cos &alpha; that the drive torque implies"
+                 if case == "torque" else "load case 'thesis': the normal load F<sub>ext</sub> as given, which is not "
+                 "the normal force the torque implies")
+    if "bare_stiction_probability" in v:
+        p = v["bare_stiction_probability"]
+        cls = "bad" if p >= 0.5 else ("warn" if p > 0 else "good")
+        items.append(f"<li><b>Bare silicon: <span class='{cls}'>stiction probability {p * 100:.0f} %</span></b> over "
+                     f"{v['bare_realisations']} independent roughness realisations; the smallest margin "
+                     f"F<sub>t</sub> &minus; R lies between {_quantity(v['bare_stiction_margin_p05'], 'N')} and "
+                     f"{_quantity(v['bare_stiction_margin_p95'], 'N')} (5&ndash;95 %, median "
+                     f"{_quantity(v['bare_stiction_margin_median'], 'N')}); mean COF "
+                     f"{_quantity(v['bare_cof_mean_p05'])} to {_quantity(v['bare_cof_mean_p95'])} ({case_text}).</li>")
     if "bare_stiction" in v:
         word = "STICTION" if v["bare_stiction"] else "no stiction"
         cls = "bad" if v["bare_stiction"] else "good"
-        items.append(f"<li>Bare silicon: <span class='{cls}'>{word}</span>: the largest friction force over the "
-                     f"meshing cycle is {_quantity(v['bare_friction_force_max'], 'N')} against an available tangential "
-                     f"force F<sub>t</sub> = {_quantity(v.get('tangential_force'), 'N')}; smallest margin "
-                     f"F<sub>t</sub> &minus; F<sub>f</sub> = {_quantity(v['bare_stiction_margin'], 'N')}; mean COF "
-                     f"{_quantity(v['bare_cof_mean'])}.</li>")
+        items.append(f"<li>Bare silicon, first realisation: <span class='{cls}'>{word}</span>: the largest resisting "
+                     f"force R(c) (friction of every pair in mesh) is {_quantity(v['bare_resisting_force_max'], 'N')} "
+                     f"against the tangential force F<sub>t</sub> = {_quantity(v.get('tangential_force'), 'N')}; margin "
+                     f"F<sub>t</sub> &minus; R = {_quantity(v['bare_stiction_margin'], 'N')}; mean COF "
+                     f"{_quantity(v['bare_cof_mean'])}; mesh efficiency {_quantity(v.get('bare_mesh_efficiency'))}.</li>")
+        if "bare_step_converged" in v:
+            items.append(f"<li>Numerics: at twice the steps the margin changes by "
+                         f"{v['bare_step_change_margin'] * 100:.2g} % of F<sub>t</sub> and the mean COF by "
+                         f"{v['bare_step_change_cof'] * 100:.2g} % "
+                         f"({'converged' if v['bare_step_converged'] else '<span class=bad>NOT converged</span>'}, "
+                         "goal &lt; 2 %).</li>")
+        for text in v.get("bare_warnings", []):
+            items.append(f"<li><span class='bad'>Warning</span>: {_e(text)}.</li>")
     if "coated_stiction" in v:
         word = "STICTION" if v["coated_stiction"] else "no stiction"
         cls = "bad" if v["coated_stiction"] else "good"
         coating = _e(result.options.coating)
-        items.append(f"<li>{coating}-coated pair, intact coating: <span class='{cls}'>{word}</span>: largest friction "
-                     f"force {_quantity(v['coated_friction_force_max'], 'N')}, smallest margin "
+        items.append(f"<li>{coating}-coated pair, intact coating: <span class='{cls}'>{word}</span>: largest resisting "
+                     f"force {_quantity(v['coated_resisting_force_max'], 'N')}, smallest margin "
                      f"{_quantity(v['coated_stiction_margin'], 'N')}; mean COF {_quantity(v['coated_cof_mean'])}.</li>")
     if "wear_at_stiction" in v:
         wear = v["wear_at_stiction"]

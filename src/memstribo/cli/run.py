@@ -69,8 +69,8 @@ def run(args, params):
             params = params.updated(dict(parse_assignment(t) for t in args.overrides), origin="--set")
     options = RunOptions.from_table(table, base)
     if args.steps is not None:
-        if args.steps < 2:
-            raise InputError(f"--steps {args.steps}: give an integer >= 2.")
+        if args.steps < 3:
+            raise InputError(f"--steps {args.steps}: give an integer >= 3 (a meshing cycle needs 3 positions).")
         options = replace(options, steps=args.steps)
     if args.roughness:
         extra = RunOptions.from_table({"roughness_files": args.roughness}, Path.cwd()).roughness_files
@@ -80,8 +80,9 @@ def run(args, params):
     values = {"folder": str(result.folder), "report": str(result.folder / "report.html"),
               "elapsed": result.elapsed, "complete": result.ok,
               "stages": {s.name: s.status for s in result.stages}, **result.verdict}
-    units = {"elapsed": "s", "tangential_force": "N", "bare_friction_force_max": "N", "bare_stiction_margin": "N",
-             "coated_friction_force_max": "N", "coated_stiction_margin": "N"}
+    units = {"elapsed": "s", "tangential_force": "N", "bare_resisting_force_max": "N", "bare_stiction_margin": "N",
+             "coated_resisting_force_max": "N", "coated_stiction_margin": "N", "bare_stiction_margin_median": "N",
+             "bare_stiction_margin_p05": "N", "bare_stiction_margin_p95": "N"}
     notes = [f"  {s.name}: {s.status}{' - ' + s.message if s.message else ''}" for s in result.stages
              if s.status != "done" or s.message]
     notes.append(f"  open {result.folder / 'report.html'} in a browser")
