@@ -70,10 +70,14 @@ def test_mesh_stages(small_run):
     summaries = small_run.summaries
     bare = summaries["mesh"]
     assert bare["energy_dissipated"] >= 0 and bare["friction_force_max"] > 0
+    # the verdict over the ensemble, its step check, one criterion
+    assert bare["realisations"] == 3 and 0.0 <= bare["stiction_probability"] <= 1.0
+    assert bare["stiction_margin"] == bare["tangential_force"] - bare["resisting_force_max"]
+    assert "step_converged" in bare and small_run.verdict["bare_realisations"] == 3
     # the energy split adds up (mesh.summarize: cof_x = energy_x / integral (F_N + F_adh) ds)
     assert bare["energy_dissipated"] == pytest.approx(bare["energy_chemical"] + bare["energy_vdw"]
                                                       + bare["energy_elastic"], rel=1e-12)
-    assert small_run.verdict["bare_stiction"] == (bare["stiction_margin"] <= 0)
+    assert small_run.verdict["bare_stiction"] == (bare["stiction_margin"] < 0)
     assert small_run.verdict["tangential_force"] == bare["tangential_force"]
     loads = summaries["load_sweep"]
     assert loads["normal_load"] == pytest.approx([25e-6, 150e-6])
@@ -94,13 +98,15 @@ def test_mesh_stages(small_run):
 
 
 def test_verdict_from_stage_summaries():
-    bare = {"friction_force_max": 3e-3, "stiction_margin": -0.18e-3, "cof_mean": 0.9}
-    coated = {"friction_force_max": 1e-4, "stiction_margin": 2.72e-3, "cof_mean": 0.19}
+    bare = {"resisting_force_max": 3e-3, "stiction_margin": -0.18e-3, "cof_mean": 0.9, "load_case": "torque",
+            "stiction_probability": 0.75, "realisations": 16, "warnings": ["w"]}
+    coated = {"resisting_force_max": 1e-4, "stiction_margin": 2.72e-3, "cof_mean": 0.19, "load_case": "torque"}
     v = verdict({"gear": {"tangential_force": 2.82e-3}, "mesh": bare, "coated": coated,
                  "wear_sweep": {"critical_wear": 0.5}, "damage": {"cycles_to_stiction": None,
                                                                  "damage_per_cycle_over_c1": 2e10}})
     assert v["bare_stiction"] is True and v["coated_stiction"] is False
     assert v["bare_stiction_margin"] == -0.18e-3 and v["wear_at_stiction"] == 0.5
+    assert v["bare_stiction_probability"] == 0.75 and v["load_case"] == "torque" and v["bare_warnings"] == ["w"]
     assert v["cycles_to_stiction"] is None and v["damage_per_cycle_over_c1"] == 2e10
     assert verdict({}) == {}
 
@@ -112,12 +118,14 @@ def test_run_options_from_a_config_table(tmp_path):
     assert options.steps == 10 and options.loads == pytest.approx((25e-6, 1e-4))
     assert options.roughness_files == (str((tmp_path / "scan.txt").resolve()),)
     assert options.stages == ("roughness", "mesh")  # always in chain order
-    assert RunOptions().loads == pytest.approx(tuple(np.arange(25, 301, 25) * 1e-6))  # thesis 4.9.3
+    assert RunOptions().loads == pytest.approx((25e-6, 50e-6, 100e-6, 150e-6, 200e-6, 300e-6))  # thesis 4.9.3
+    assert RunOptions().realisations == 16
 
 
 @pytest.mark.parametrize("table, match", [
     ({"step": 3}, "unknown key 'step'.*steps"),
-    ({"steps": 1}, "integer >= 2"),
+    ({"steps": 2}, "integer >= 3"),
+    ({"realisations": 0}, "from 1 to 10000"),
     ({"loads": []}, "non-empty list"),
     ({"loads": ["-1 uN"]}, "outside its range"),
     ({"loads": ["25 m"]}, "25 m"),

@@ -33,8 +33,8 @@ def make_result(folder: Path, params, n_figures=2, verdict=None) -> RunResult:
               {"name": "synthetic profile", "source": "synthetic: seed 1", "synthetic": True, "Rq": 1.6e-9,
                "rms_slope": 0.024, "n_points": 100, "meshing": True}]
     verdict = verdict if verdict is not None else {
-        "tangential_force": 2.82e-3, "bare_friction_force_max": 4e-3, "bare_stiction_margin": -1.18e-3,
-        "bare_stiction": True, "bare_cof_mean": 0.8, "coated_friction_force_max": 1e-3,
+        "tangential_force": 2.82e-3, "bare_resisting_force_max": 4e-3, "bare_stiction_margin": -1.18e-3,
+        "bare_stiction": True, "bare_cof_mean": 0.8, "coated_resisting_force_max": 1e-3,
         "coated_stiction_margin": 1.82e-3, "coated_stiction": False, "coated_cof_mean": 0.19,
         "wear_at_stiction": 0.8, "damage_per_cycle_over_c1": 8.5e8, "damage_exponent": 1.0,
         "life_ratio_corner_to_central": 0.92}

@@ -544,7 +544,7 @@ def _sweep_dataset(dimension, values, unit, long_name, summaries):
     units = _module("mesh").SUMMARY_UNITS
     data = {key: (dimension, np.array([float(s[key]) for s in summaries], dtype=float),
                   {"units": units.get(key, ""), "long_name": key.replace("_", " ")}) for key in units
-            if all(key in s for s in summaries)}
+            if all(key in s and isinstance(s[key], (int, float, np.number)) for s in summaries)}
     return xr.Dataset(data, coords={dimension: (dimension, np.asarray(values, dtype=float),
                                                 {"units": unit, "long_name": long_name})})
 
@@ -897,4 +897,4 @@ class RunChain:
 def options_for_test(**changes) -> RunOptions:
     """Small, fast options (few steps and sweep points) exercising every stage."""
     return replace(RunOptions(steps=8, loads=(25e-6, 150e-6), areas=(1.0, 4.0), wear=(0.0, 1.0),
-                              sliding_distance=0.5e-6, validation=False), **changes)
+                              sliding_distance=0.5e-6, validation=False, realisations=3), **changes)
