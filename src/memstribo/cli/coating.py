@@ -17,6 +17,8 @@ def register(subparsers, parents):
     parser.add_argument("--wear", default=None, metavar="W",
                         help="worn fraction Omega from 0 to 1, or a comma-separated list '0,0.2,0.4' for a table "
                              "(default: the parameter coating_wear)")
+    parser.add_argument("--load-case", choices=("torque", "thesis"),
+                        help="normal load of the meshing cycles: 'torque' (default) or 'thesis' (normal_load, 25 uN)")
     parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and figures (COF vs Omega, "
                                                      "friction vs tangential force) to DIR")
@@ -48,6 +50,9 @@ def run(args, params):
     from ..coating import SWEEP_VARIABLES, get_coating, wear_sweep
     from ..errors import InputError
 
+    from .mesh import apply_load_case
+
+    params = apply_load_case(args, params)
     coating = get_coating(args.coating)
     if args.calibrate is not None:
         return _calibrate(args, params, coating)

@@ -25,6 +25,8 @@ def register(subparsers, parents):
                         help="calibrate c1 from an observed coating life of N meshing cycles")
     parser.add_argument("--wear-points", type=int, default=6,
                         help="wear states Omega in the COF sweep that decides stiction (default 6: 0, 0.2, ... 1)")
+    parser.add_argument("--load-case", choices=("torque", "thesis"),
+                        help="normal load of the meshing cycles: 'torque' (default) or 'thesis' (normal_load, 25 uN)")
     parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
     parser.add_argument("--out", metavar="DIR", help="write datasets (NetCDF + CSV) and figures to DIR")
     parser.add_argument("--progress", action="store_true",
@@ -57,6 +59,9 @@ def run(args, params):
     from ..damage import run_damage
     from ..errors import InputError
 
+    from .mesh import apply_load_case
+
+    params = apply_load_case(args, params)
     loads = parse_loads(args.loads) if args.loads is not None else None
     if args.observed_life is not None and not (np.isfinite(args.observed_life) and args.observed_life > 0):
         raise InputError(f"--observed-life must be a number of cycles > 0, got {args.observed_life!r}.")
