@@ -67,8 +67,9 @@ def rows() -> list[ValidationRow]:
                      "atomic lattices carry fewer chemical bonds than one aligned line (docs/interface.md)"),
         compare("mesh", "[thesis case] COF, cycle mean, 300 uN", "thesis 4.9.3, Figure 4-46 (about 0.45)", 0.45,
                 high["cof_mean"], "", rtol=0.2, command=SWEEP,
-                note="differs: the COF hardly falls with load (the pull-off force F_adh of the 5 nm band dominates "
-                     "the denominator F_N + F_adh; docs/mesh.md)"),
+                note=("" if abs(high["cof_mean"] - 0.45) <= 0.09 else "differs: ")
+                + "the COF falls less with load than in the thesis (the pull-off force F_adh of the 5 nm band "
+                  "dominates the denominator F_N + F_adh; docs/mesh.md)"),
         ValidationRow("mesh", "[thesis case] COF ratio 25 uN / 300 uN",
                       "thesis 4.9.3 (about 0.9 / 0.45 = 2: COF falls with load)", 2.0, low["cof_mean"] / high["cof_mean"],
                       "", "trend: > 1", low["cof_mean"] > high["cof_mean"], SWEEP,
