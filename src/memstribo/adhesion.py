@@ -300,7 +300,7 @@ def no_slip_coefficient(poisson_ratio):
     .. math:: C_{NS} = \\frac{(1-\\nu)\\ln(3-4\\nu)}{1-2\\nu}
 
     With t = 1 - 2 nu this is (1 - nu) 2 ln(1 + 2t) / (2t); the ratio ln(1+x)/x is
-    evaluated by its series for |x| < 1e-3, so C_NS is smooth through nu = 0.5, where it
+    evaluated by its series for ``|x| < 1e-3``, so C_NS is smooth through nu = 0.5, where it
     is exactly 1 (the frictionless value).
 
     Parameters

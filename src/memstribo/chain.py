@@ -588,8 +588,20 @@ class RunChain:
         for path in paths:
             self._current.files.append(str(Path(path).relative_to(self.folder)))
 
-    def _dataset(self, dataset, stem):
-        self._files(write_dataset(dataset, self.folder / "data", stem))
+    def _dataset(self, dataset, stem, roughness="mesh"):
+        roughness = self.results.get("mesh_profile") if isinstance(roughness, str) else roughness
+        self._files(write_dataset(dataset, self.folder / "data", stem, provenance=self._provenance(roughness)))
+
+    def _provenance(self, roughness=None, **extra):
+        """Global attributes of a file of the current stage (:func:`memstribo.output.provenance_attributes`)."""
+        from .output import provenance_attributes
+
+        stage = self._current.name if self._current is not None else ""
+        doc = (getattr(type(self), stage, None).__doc__ or "") if stage else ""
+        extra = {"title": f"memstribo run: {STAGES.get(stage, stage)}", "stage": stage,
+                 "models": " ".join(doc.split("\n\n")[0].split()), "run_options": to_jsonable(self.options.__dict__),
+                 **extra}
+        return provenance_attributes(self.params, roughness=roughness, extra=extra)
 
     def _figure(self, figure, stem, caption):
         self._files(save_figure(figure, self.folder / "figures", stem))
@@ -626,13 +638,13 @@ class RunChain:
         table = xr.Dataset({k: ("profile", np.array([s.to_dict()[k] for s in statistics], dtype=float),
                                 {"units": units.get(k, ""), "long_name": k}) for k in keys},
                            coords={"profile": ("profile", np.array([p.name for p in profiles], dtype=object))})
-        self._dataset(table, "roughness_statistics")
+        self._dataset(table, "roughness_statistics", roughness=profiles)
         for i, profile in enumerate(profiles):
             ds = xr.Dataset({"z": ("x", np.asarray(profile.z), {"units": "m", "long_name": "height"})},
                             coords={"x": ("x", np.asarray(profile.x), {"units": "m", "long_name": "position"})},
                             attrs={"name": profile.name, "source": profile.source,
                                    "synthetic": int(bool(profile.synthetic))})
-            self._dataset(ds, f"profile_{i}")
+            self._dataset(ds, f"profile_{i}", roughness=profile)
         self.inputs = [{"name": p.name, "source": p.source, "synthetic": bool(p.synthetic),
                         "Rq": s.Rq, "Ra": s.Ra, "rms_slope": s.rms_slope, "n_points": s.n_points,
                         "sample_spacing": s.sample_spacing} for p, s in zip(profiles, statistics)]
@@ -677,7 +689,10 @@ class RunChain:
             stored = dataset
             if dataset.sizes["step"] > 20000:  # long slides: keep the per-step series (not per block), NetCDF only
                 stored = dataset.drop_vars([n for n, v in dataset.data_vars.items() if v.dims != ("step",)])
-            self._files(write_dataset(stored, self.folder / "data", stem, csv=stored.sizes["step"] <= 20000))
+            provenance = self._provenance(profile, **({} if profile is not None else
+                                                      {"roughness_provenance": "none: one nanoblock on a flat"}))
+            self._files(write_dataset(stored, self.folder / "data", stem, csv=stored.sizes["step"] <= 20000,
+                                      provenance=provenance))
             summary = sliding.summarize(dataset)
             summaries[model] = dict(summary.__dict__)
             title = ("one nanoblock on a flat" if model == "single" else

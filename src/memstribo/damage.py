@@ -266,7 +266,7 @@ def normalised_principal_shear(xi, degree: float, friction_coefficient: float, p
 
     Notes
     -----
-    The table (1 240 points on |x/a| <= 2.5, refined to 1e-5 a at the contact edges, where
+    The table (1 240 points on ``|x/a| <= 2.5``, refined to 1e-5 a at the contact edges, where
     tau_1 has a cusp) comes from :func:`memstribo.stresses.principal_shear_profile` at z = 0+
     (Boussinesq and Cerruti solutions integrated exactly over the contact circle); it is
     interpolated linearly. :func:`surface_stresses` is an independent FFT solution of the

@@ -2,14 +2,21 @@
 
 Results are :class:`xarray.Dataset` objects whose variables carry ``units`` and
 ``long_name`` attributes. These helpers write them so that nothing already computed is
-lost: each file is written to a temporary name and renamed into place.
+lost: each file is written to a temporary name and renamed into place. Every NetCDF and
+CSV file says what made it (:func:`provenance_attributes`: memstribo version, creation
+time, parameters and overrides, load case, roughness source with its SHA-256) and follows
+the CF conventions for its variables (``units`` in UDUNITS form, ``long_name``).
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import math
 import os
+import re
+from collections.abc import Mapping
+from datetime import datetime, timezone
 from pathlib import Path
 from typing import Any
 
@@ -37,22 +44,287 @@ def _atomic_write(path: Path, write) -> Path:
     return path
 
 
-def write_dataset(dataset, folder: str | Path, stem: str, csv: bool = True) -> list[Path]:
+def write_dataset(dataset, folder: str | Path, stem: str, csv: bool = True, *,
+                  provenance: Mapping[str, Any] | None = None) -> list[Path]:
     """Write ``dataset`` to ``folder/stem.nc`` (NetCDF) and, if ``csv``, ``folder/stem.csv``.
 
-    Units stay as variable attributes in NetCDF; CSV column headers read ``name [unit]``.
+    Every variable gets CF-style attributes: ``units`` in UDUNITS form (see
+    :func:`udunits`; ``'1'`` for dimensionless) and a ``long_name`` (derived from the
+    variable's name when missing). The global attributes are ``provenance`` (see
+    :func:`provenance_attributes`; without it, the version, creation time and conventions
+    only) merged with the dataset's own attributes. The dataset passed in is not changed.
+
+    CSV column headers read ``name [unit]``; the file starts with a block of ``#`` lines
+    holding the same provenance as the NetCDF file, so read it with
+    ``pandas.read_csv(path, comment="#", index_col=0)`` or
+    ``numpy.loadtxt(path, delimiter=",", comments="#", skiprows=...)``.
     The CSV holds the variables along the dataset's main dimension (see :func:`_table`);
     the NetCDF file holds everything.
-    Returns the paths written.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        Variables with ``units`` (and ideally ``long_name``) attributes.
+    folder : str or pathlib.Path
+        Output folder (created).
+    stem : str
+        File name without suffix.
+    csv : bool
+        Also write the CSV table.
+    provenance : mapping, optional
+        Global attributes from :func:`provenance_attributes`.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The paths written.
     """
     folder = ensure_directory(folder)
+    dataset = cf_dataset(dataset, provenance)
     written = [_atomic_write(folder / f"{stem}.nc", lambda tmp: dataset.to_netcdf(tmp, format="NETCDF4"))]
     if csv:
         frame = _table(dataset).to_dataframe()
         frame.columns = [_column_label(dataset, name) for name in frame.columns]
         frame.index.names = [_column_label(dataset, name) for name in frame.index.names]
-        written.append(_atomic_write(folder / f"{stem}.csv", lambda tmp: frame.to_csv(tmp)))
+        header = _csv_header(dataset, f"{stem}.csv", f"{stem}.nc")
+
+        def write_csv(tmp):
+            with open(tmp, "w", encoding="utf-8", newline="") as handle:
+                handle.write(header)
+                frame.to_csv(handle, lineterminator="\n")
+
+        written.append(_atomic_write(folder / f"{stem}.csv", write_csv))
     return written
+
+
+# --- provenance and CF attributes --------------------------------------------------------------
+CONVENTIONS = "CF-1.8"
+
+#: Parameters that define the load case of a meshing cycle (also in ``load_case``).
+LOAD_CASE_PARAMETERS = ("normal_load", "drive_torque", "pinion_speed", "load_sharing", "face_width",
+                        "coating_wear", "mesh_steps")
+
+_DIMENSIONLESS = {"", "-", "1", "none", "dimensionless", "unitless", "[]", "[-]"}
+
+
+def udunits(unit: str | None) -> str:
+    """A unit string in the form UDUNITS-2 (and so CF) reads: ``'' -> '1'``, ``'Pa^1' -> 'Pa'``.
+
+    Dimensionless units (``''``, ``'-'``, ``'dimensionless'``) become ``'1'``; pint's ``**``
+    becomes ``^``; an exponent 1 is dropped; ``'m/s'``, ``'J/m^2'``, ``'N*m'`` and ``'rad/s'``
+    are already UDUNITS and stay as they are.
+
+    >>> [udunits(u) for u in ("", "Pa^1", "J/m**2", "N*m", "m")]
+    ['1', 'Pa', 'J/m^2', 'N*m', 'm']
+    """
+    text = "" if unit is None else " ".join(str(unit).split())
+    if text.lower() in _DIMENSIONLESS:
+        return "1"
+    text = text.replace("**", "^").replace(" ^", "^").replace("^ ", "^")
+    text = re.sub(r"\^\+?1(?![0-9.])", "", text)
+    return text or "1"
+
+
+def _utc_now() -> str:
+    return datetime.now(timezone.utc).replace(microsecond=0).isoformat().replace("+00:00", "Z")
+
+
+def _version() -> str:
+    from . import __version__
+
+    return __version__
+
+
+def file_sha256(path: str | Path) -> str:
+    """SHA-256 (hex) of a file's bytes."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as handle:
+        for block in iter(lambda: handle.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def roughness_provenance(roughness) -> dict[str, str]:
+    """Where a roughness profile came from: the file and its SHA-256, or "synthetic: seed N".
+
+    Parameters
+    ----------
+    roughness : Profile, SurfaceMap, str or pathlib.Path
+        A profile or map (its ``source`` names the file it was read from, or says
+        "synthetic: ... seed N"), or the path of a measured file.
+
+    Returns
+    -------
+    dict
+        ``roughness_provenance`` (one line), ``roughness_source`` (the profile's own
+        provenance text) and, for a file that exists, ``roughness_file`` and
+        ``roughness_file_sha256``.
+    """
+    if isinstance(roughness, (str, Path)) and Path(roughness).is_file():
+        path = Path(roughness)
+        digest = file_sha256(path)
+        return {"roughness_provenance": f"file {path}, sha256 {digest}", "roughness_source": str(path),
+                "roughness_file": str(path), "roughness_file_sha256": digest}
+    source = str(getattr(roughness, "source", roughness) or "")
+    out = {"roughness_source": source}
+    if getattr(roughness, "synthetic", False) or "synthetic" in source:
+        seed = re.search(r"seed (\d+)", source)
+        out["roughness_provenance"] = f"synthetic: seed {seed.group(1)}" if seed else "synthetic: seed not recorded"
+        return out
+    path = _leading_file(source)
+    if path is not None:
+        digest = file_sha256(path)
+        out.update(roughness_provenance=f"file {path}, sha256 {digest}", roughness_file=str(path),
+                   roughness_file_sha256=digest)
+    else:
+        out["roughness_provenance"] = f"measured, file not found from here: {source}"
+    return out
+
+
+def _leading_file(source: str) -> Path | None:
+    """The longest start of ``source`` that names an existing file (readers write "PATH, channel ...")."""
+    ends = [m.start() for m in re.finditer(r"[ ,;(]", source)] + [len(source)]
+    for end in sorted(ends, reverse=True):
+        candidate = source[:end].rstrip(" ,;")
+        if candidate and Path(candidate).is_file():
+            return Path(candidate)
+    return None
+
+
+def provenance_attributes(params=None, *, roughness=None, extra: Mapping[str, Any] | None = None) -> dict[str, Any]:
+    """Global attributes saying what made a file: version, time, parameters, load case, roughness.
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters, optional
+        The parameters used. Every value goes into ``parameters`` (JSON text: name ->
+        value [SI], UDUNITS unit, source); those that differ from the named parameter set,
+        or were set by the user, into ``parameter_overrides`` with their origin (``--set``,
+        ``config file ...``); the load case (:data:`LOAD_CASE_PARAMETERS`) into ``load_case``.
+    roughness : Profile, SurfaceMap, path, or a list of them, optional
+        The roughness used (see :func:`roughness_provenance`); a list gives JSON lists.
+    extra : mapping, optional
+        Further attributes (``stage``, ``models``, ``coating``, ...); dicts and lists are
+        stored as JSON text.
+
+    Returns
+    -------
+    dict
+        Attribute name -> str, int or float, ready for NetCDF: ``Conventions``
+        (``"CF-1.8"``), ``title``, ``source``, ``history``, ``date_created`` (ISO 8601,
+        UTC), ``memstribo_version``, ``references``, ``models_cited``, and the above.
+    """
+    from .references import used_references
+
+    version = _version()
+    created = _utc_now()
+    attrs: dict[str, Any] = {
+        "Conventions": CONVENTIONS,
+        "title": "memstribo results",
+        "source": f"memstribo {version}",
+        "history": f"{created} written by memstribo {version}",
+        "date_created": created,
+        "memstribo_version": version,
+        "references": "N. S. T. Almuramady, 'Dry friction between rough surfaces of silicon and functionalized "
+                      "gear microelectromechanical systems', PhD thesis, Cardiff University; see models_cited "
+                      "and memstribo.references.REFERENCES",
+        "models_cited": ", ".join(key for key, _ in used_references()) or "none recorded",
+    }
+    if params is not None:
+        attrs.update(_parameter_attributes(params))
+    if roughness is not None:
+        if isinstance(roughness, (list, tuple)):
+            items = [roughness_provenance(r) for r in roughness]
+            for key in ("roughness_provenance", "roughness_source", "roughness_file", "roughness_file_sha256"):
+                attrs[key] = json.dumps([item.get(key) for item in items], ensure_ascii=False)
+        else:
+            attrs.update(roughness_provenance(roughness))
+    for key, value in (extra or {}).items():
+        attrs[str(key)] = value
+    return _netcdf_attributes(attrs)
+
+
+def _parameter_attributes(params) -> dict[str, Any]:
+    from .errors import MemstriboError
+    from .parameters import SPECS, get_parameter_values
+
+    def unit(name):
+        spec = SPECS.get(name)
+        return udunits(spec.unit) if spec is not None and spec.kind in ("float", "int") else ""
+
+    def entry(name, key="source"):
+        return {"value": to_jsonable(params[name]), "unit": unit(name), key: params.source(name)}
+
+    try:
+        base = get_parameter_values(params.name)
+    except MemstriboError:
+        base = None
+    overrides = {name: entry(name, "origin") for name in params
+                 if base is None or name not in base or base[name] != params[name]
+                 or base.source(name) != params.source(name)}
+    return {
+        "parameter_set": str(params.name),
+        "parameters": json.dumps({name: entry(name) for name in params}, allow_nan=False, ensure_ascii=False),
+        "parameter_overrides": json.dumps(overrides, allow_nan=False, ensure_ascii=False),
+        "load_case": json.dumps({name: {"value": to_jsonable(params[name]), "unit": unit(name)}
+                                 for name in LOAD_CASE_PARAMETERS if name in params}, allow_nan=False,
+                                ensure_ascii=False),
+    }
+
+
+def _netcdf_attributes(attrs: Mapping[str, Any]) -> dict[str, Any]:
+    """Attribute values NetCDF can store: str, int, float (bool -> int, None -> "none", containers -> JSON)."""
+    out = {}
+    for key, value in attrs.items():
+        if isinstance(value, (bool, np.bool_)):
+            value = int(value)
+        elif value is None:
+            value = "none"
+        elif isinstance(value, (dict, list, tuple)):
+            value = json.dumps(to_jsonable(value), ensure_ascii=False)
+        elif isinstance(value, Path):
+            value = str(value)
+        elif isinstance(value, np.generic):
+            value = value.item()
+        out[str(key)] = value
+    return out
+
+
+#: Attributes that always say when and by what the file was written (never the dataset's own).
+_FIXED = ("Conventions", "date_created", "history", "memstribo_version")
+
+
+def cf_dataset(dataset, provenance: Mapping[str, Any] | None = None):
+    """A copy of ``dataset`` with CF attributes: UDUNITS ``units``, a ``long_name`` on every
+    variable, and ``provenance`` (or the minimal :func:`provenance_attributes`) as global attributes."""
+    dataset = dataset.copy(deep=False)
+    for name in list(dataset.variables):
+        variable = dataset.variables[name]
+        attrs = dict(variable.attrs)
+        if variable.dtype.kind in "fiucb":
+            attrs["units"] = udunits(attrs.get("units"))
+        elif "units" in attrs:
+            attrs.pop("units")
+        if not str(attrs.get("long_name", "")).strip():
+            attrs["long_name"] = str(name).replace("_", " ")
+        variable.attrs = attrs
+    provenance = dict(provenance) if provenance is not None else provenance_attributes()
+    own = _netcdf_attributes(dataset.attrs)
+    dataset.attrs = {**provenance, **{k: v for k, v in own.items() if k not in _FIXED}}
+    return dataset
+
+
+def _csv_header(dataset, name: str, twin: str) -> str:
+    """``#`` lines before the CSV table: the provenance of the NetCDF twin, then the columns."""
+    attrs = dataset.attrs
+    lines = [f"memstribo {attrs.get('memstribo_version', _version())}: {name} "
+             f"(the same data with every attribute, and any per-block arrays: {twin})"]
+    lines += [f"{key}: {value}" for key, value in attrs.items()]
+    table = _table(dataset)
+    for var in list(table.coords) + list(table.data_vars):
+        v = table[var]
+        lines.append(f"column {_column_label(dataset, var)}: {v.attrs.get('long_name', var)}")
+    return "".join("# " + " ".join(str(line).splitlines()) + "\n" for line in lines)
 
 
 def _table(dataset):

@@ -353,7 +353,7 @@ def flat_punch_line_pressure(x, load, half_width):
     Returns
     -------
     numeric
-        p(x) = w / (pi sqrt(b² - x²)) for |x| < b, 0 outside [Pa] (singular at the edges).
+        p(x) = w / (pi sqrt(b² - x²)) for ``|x| < b``, 0 outside [Pa] (singular at the edges).
 
     Notes
     -----

@@ -71,7 +71,13 @@ def run(args, params):
     notes = [f"  coating {coating.name}: U_vdW = {coating.vdw_bond_energy:.4g} J, A = {coating.hamaker_constant:.3g} J, "
              f"w = {coating.work_of_adhesion:.4g} J/m^2; the pinion's coating fully worn (thesis 5.5.3)"]
     if args.out:
-        notes.extend(_write_outputs(sweep, coating, args.out))
+        from ..output import provenance_attributes
+        from ..roughness import default_profile
+
+        provenance = provenance_attributes(params, roughness=default_profile(params), extra={
+            "command": "memstribo coating", "coating": coating.name,
+            "models": "memstribo.coating.wear_sweep (thesis 5.4, 5.5.3)"})
+        notes.extend(_write_outputs(sweep, coating, args.out, provenance))
     if len(points) == 1:
         return CommandResult(values={"coating": coating.name, **points[0]}, units={"wear": "", **units},
                              title=f"{coating.name}-coated teeth at wear Omega = {wears[0]:g}", notes=notes)
@@ -86,10 +92,10 @@ def run(args, params):
                          notes=lines + notes)
 
 
-def _write_outputs(sweep, coating, folder) -> list[str]:
+def _write_outputs(sweep, coating, folder, provenance=None) -> list[str]:
     from ..output import new_figure, save_figure, write_dataset
 
-    written = write_dataset(sweep, folder, "coating_wear")
+    written = write_dataset(sweep, folder, "coating_wear", provenance=provenance)
     wear = sweep["wear"].values * 100
     fig, ax = new_figure(figsize=(5, 3.5))
     ax.plot(wear, sweep["cof"].values, "o-", label="total")

@@ -135,13 +135,19 @@ def run(args, params):
         notes.append(f"  corner life / central life = {ratio:.4g} "
                      f"(the corner's coating wears through {100 * (1 - ratio):.3g} % sooner)")
     if args.out:
-        from ..output import save_figure, write_dataset
+        from ..output import provenance_attributes, save_figure, write_dataset
+        from ..roughness import default_profile
 
+        uses_mesh = loads is None or sweep is not None
+        provenance = provenance_attributes(params, roughness=default_profile(params) if uses_mesh else None, extra={
+            "command": "memstribo damage", "coating": coating.name,
+            "models": "memstribo.damage.run_damage (thesis 5.5)",
+            **({} if uses_mesh else {"roughness_provenance": "none: nanoblock loads given (--loads)"})})
         written = []
         for stem, dataset in outcome.datasets.items():
-            written += write_dataset(dataset, args.out, stem)
+            written += write_dataset(dataset, args.out, stem, provenance=provenance)
         if sweep is not None:
-            written += write_dataset(sweep, args.out, "coating_wear")
+            written += write_dataset(sweep, args.out, "coating_wear", provenance=provenance)
         for stem, (figure, _caption) in outcome.figures.items():
             written += save_figure(figure, args.out, stem)
         written += _stress_figures(params, outcome, args.out)

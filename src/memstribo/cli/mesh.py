@@ -142,18 +142,25 @@ def run(args, params):
     for text in summary["warnings"]:
         notes.append(f"  WARNING: {text}.")
     if args.out:
-        notes.extend(write_outputs(dataset, args.out))
+        from pathlib import Path
+
+        from ..output import provenance_attributes
+
+        roughness = args.roughness if Path(str(args.roughness)).is_file() else dataset.attrs.get("roughness_source")
+        notes.extend(write_outputs(dataset, args.out, provenance_attributes(
+            params, roughness=roughness, extra={"command": "memstribo mesh",
+                                                "models": "memstribo.mesh.simulate_mesh (thesis 4.6-4.9)"})))
     return CommandResult(values=values, units=dict(SUMMARY_UNITS), title="meshing cycle (thesis 4.6-4.9)",
                          notes=notes)
 
 
-def write_outputs(dataset, folder) -> list[str]:
+def write_outputs(dataset, folder, provenance=None) -> list[str]:
     """NetCDF (everything), NetCDF + CSV of the per-step series, and the chapter-4 figures."""
     from ..output import write_dataset
 
-    written = write_dataset(dataset, folder, "mesh", csv=False)
+    written = write_dataset(dataset, folder, "mesh", csv=False, provenance=provenance)
     series = dataset.drop_vars([name for name in dataset.variables if "block" in dataset[name].dims])
-    written += write_dataset(series, folder, "mesh_cycle", csv=True)
+    written += write_dataset(series, folder, "mesh_cycle", csv=True, provenance=provenance)
     written += plot_cycle(dataset, folder)
     return ["  wrote " + ", ".join(str(path) for path in written)]
 

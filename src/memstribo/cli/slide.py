@@ -78,7 +78,13 @@ def run(args, params):
         notes.append("  (synthetic: the thesis's own scan is not published; give --profile for a measured one)")
     notes.append("  cof, forces: means over the steps; energies: totals over the slide")
     if args.out:
-        notes += [f"  wrote {path}" for path in _write(dataset, args.out)]
+        from ..output import provenance_attributes
+
+        roughness = args.profile or (dataset.attrs.get("profile_source") if args.model != "single" else None)
+        provenance = provenance_attributes(params, roughness=roughness, extra={
+            "command": f"memstribo slide --model {args.model}", "models": f"memstribo.sliding.slide ({args.model})",
+            **({} if roughness else {"roughness_provenance": "none: a nanoblock on a flat"})})
+        notes += [f"  wrote {path}" for path in _write(dataset, args.out, provenance)]
     return CommandResult(values=values, units=sliding.UNITS, title=f"memstribo slide --model {args.model}",
                          notes=notes)
 
@@ -113,12 +119,12 @@ def _estimate(args, params):
                          notes=notes)
 
 
-def _write(dataset, folder):
+def _write(dataset, folder, provenance=None):
     from ..output import new_figure, save_figure, write_dataset
 
-    written = write_dataset(dataset, folder, "slide", csv=False)
+    written = write_dataset(dataset, folder, "slide", csv=False, provenance=provenance)
     steps_only = dataset[[name for name, var in dataset.data_vars.items() if var.dims == ("step",)]]
-    written += write_dataset(steps_only, folder, "slide_steps", csv=True)
+    written += write_dataset(steps_only, folder, "slide_steps", csv=True, provenance=provenance)
     x = dataset["sliding_distance"].values * 1e9
     panels = [
         ("friction_force", "friction force [N]", ["friction_force", "friction_force_chemical",

@@ -75,7 +75,13 @@ def run(args, params):
               for point in points]
     notes = []
     if args.out:
-        notes.extend(_write(args.parameter, points, args.out))
+        from ..output import provenance_attributes
+        from ..roughness import default_profile
+
+        provenance = provenance_attributes(
+            params, roughness=default_profile(params) if roughness is None else roughness,
+            extra={"command": f"memstribo sweep {args.parameter}", "models": "memstribo.mesh.sweep (thesis 4.9.3-4.9.4)"})
+        notes.extend(_write(args.parameter, points, args.out, provenance))
     if args.json:
         return CommandResult(values={"parameter": args.parameter, "points": points})
     lines = [f"  {head[0]:>13} {'cof_mean':>9} {'chemical':>9} {'vdW':>9} {'elastic':>9} {'F_f mean':>10} "
@@ -90,7 +96,7 @@ def run(args, params):
                          notes=lines + notes)
 
 
-def _write(parameter, points, folder) -> list[str]:
+def _write(parameter, points, folder, provenance=None) -> list[str]:
     import numpy as np
     import xarray as xr
 
@@ -106,7 +112,7 @@ def _write(parameter, points, folder) -> list[str]:
             for k in keys}
     dataset = xr.Dataset(data, coords={dim: (dim, coordinate, {"units": _UNITS[parameter] or "1",
                                                               "long_name": dim.replace("_", " ")})})
-    written = write_dataset(dataset, folder, f"sweep_{parameter}")
+    written = write_dataset(dataset, folder, f"sweep_{parameter}", provenance=provenance)
     x = coordinate * (1e6 if parameter == "load" else 1.0)
     xlabel = {"load": "external load [uN]", "torque": "drive torque [N m]",
               "area": "nominal contact area [A_adh]"}[parameter]

@@ -194,8 +194,9 @@ class ColumnState:
 
     Attributes
     ----------
-    compressions : ndarray, shape (..., 3)
-        Compressions ``delta_1, delta_2, delta_3`` of the atomic, adhesive and bulk segments [m].
+    compressions : ndarray
+        Compressions ``delta_1, delta_2, delta_3`` of the atomic, adhesive and bulk segments [m],
+        shape (..., 3).
     force : ndarray
         Compressive force in the column [N].
     gap : ndarray
