@@ -116,7 +116,8 @@ def _check_global_attributes(name, attrs, start, end, scan_sha):
     assert overrides["roughness_seed"]["origin"].startswith("config file") and overrides["roughness_seed"]["value"] == 7
     assert set(overrides) == {"normal_load", "roughness_seed"}
     assert attrs["parameter_set"] == "silicon_thesis"
-    assert json.loads(attrs["load_case"])["normal_load"] == {"value": pytest.approx(30e-6), "unit": "N"}
+    assert json.loads(attrs["load_case_parameters"])["normal_load"] == {"value": pytest.approx(30e-6), "unit": "N"}
+    assert attrs["load_case"] == "torque"
     assert attrs["models"].strip() and attrs["stage"]
     options = json.loads(attrs["run_options"])
     assert options["steps"] == 8

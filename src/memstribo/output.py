@@ -100,9 +100,9 @@ def write_dataset(dataset, folder: str | Path, stem: str, csv: bool = True, *,
 # --- provenance and CF attributes --------------------------------------------------------------
 CONVENTIONS = "CF-1.8"
 
-#: Parameters that define the load case of a meshing cycle (also in ``load_case``).
-LOAD_CASE_PARAMETERS = ("normal_load", "drive_torque", "pinion_speed", "load_sharing", "face_width",
-                        "coating_wear", "mesh_steps")
+#: Parameters that define the load case of a meshing cycle (also in ``load_case_parameters``).
+LOAD_CASE_PARAMETERS = ("load_case", "normal_load", "drive_torque", "pinion_speed", "load_sharing", "face_width",
+                        "coating_wear", "mesh_steps", "interface_model", "contact_adhesion", "realisations")
 
 _DIMENSIONLESS = {"", "-", "1", "none", "dimensionless", "unitless", "[]", "[-]"}
 
@@ -200,7 +200,7 @@ def provenance_attributes(params=None, *, roughness=None, extra: Mapping[str, An
         The parameters used. Every value goes into ``parameters`` (JSON text: name ->
         value [SI], UDUNITS unit, source); those that differ from the named parameter set,
         or were set by the user, into ``parameter_overrides`` with their origin (``--set``,
-        ``config file ...``); the load case (:data:`LOAD_CASE_PARAMETERS`) into ``load_case``.
+        ``config file ...``); the load case (:data:`LOAD_CASE_PARAMETERS`) into ``load_case_parameters`` (and its name into ``load_case``).
     roughness : Profile, SurfaceMap, path, or a list of them, optional
         The roughness used (see :func:`roughness_provenance`); a list gives JSON lists.
     extra : mapping, optional
@@ -266,7 +266,8 @@ def _parameter_attributes(params) -> dict[str, Any]:
         "parameter_set": str(params.name),
         "parameters": json.dumps({name: entry(name) for name in params}, allow_nan=False, ensure_ascii=False),
         "parameter_overrides": json.dumps(overrides, allow_nan=False, ensure_ascii=False),
-        "load_case": json.dumps({name: {"value": to_jsonable(params[name]), "unit": unit(name)}
+        "load_case": str(params["load_case"]) if "load_case" in params else "",
+        "load_case_parameters": json.dumps({name: {"value": to_jsonable(params[name]), "unit": unit(name)}
                                  for name in LOAD_CASE_PARAMETERS if name in params}, allow_nan=False,
                                 ensure_ascii=False),
     }
