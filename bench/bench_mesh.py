@@ -1,13 +1,18 @@
 """Benchmark of the meshing-cycle simulation: wall/CPU time, peak memory, time per step.
 
-Run: ``python bench/bench_mesh.py [--steps 121 241 481 961] [--grid 4 2 1] [--repeat 2] [--profile] [--json]``.
+Run: ``python bench/bench_mesh.py [--steps 121 241 481 961] [--across 20 40 80] [--repeat 2] [--profile]
+[--ensemble 16 --workers 2] [--json]``.
 
-1. The default cycle (the thesis case: 481 steps, 2 nm grid, 1.2 um window, synthetic roughness)
+1. The default cycle (torque load case, 481 steps, grid sized from the Hertz width: 40 elements
+   across 2a, 10 rows each with its own synthetic roughness line)
    with the time of each stage (roughness set-up, contact solves, nanoblocks/bonds) and the peak
    traced memory (``tracemalloc``: numpy's allocations included).
 2. How time and memory grow with the number of steps (default grid) and with the grid
-   resolution (elements per step; default steps).
+   resolution (elements across the Hertz width; default steps).
 3. ``--profile``: the 15 most expensive functions of the default cycle (cProfile).
+4. ``--ensemble N``: the N-realisation stiction verdict (``mesh.simulate_ensemble``) on Dask's
+   local cluster with ``--workers`` single-threaded worker processes (MODEL 7b; goal: 16
+   realisations under 60 s on 2 cores).
 
 One core: numpy/scipy are limited to one thread (``OMP_NUM_THREADS=1`` and friends are set
 before they are imported; scipy.fft runs with one worker in the contact solver). Imports are
@@ -69,7 +74,10 @@ def _stages(params):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, nargs="+", default=[121, 241, 481, 961])
-    parser.add_argument("--grid", type=float, nargs="+", default=[4.0, 2.0, 1.0], help="grid spacings [nm]")
+    parser.add_argument("--across", type=int, nargs="+", default=[20, 40, 80],
+                        help="contact elements across the largest Hertz width 2a")
+    parser.add_argument("--ensemble", type=int, default=0, help="also time an ensemble of N realisations on Dask")
+    parser.add_argument("--workers", type=int, default=2, help="Dask worker processes for --ensemble")
     parser.add_argument("--repeat", type=int, default=2)
     parser.add_argument("--profile", action="store_true", help="print the 15 most expensive functions")
     parser.add_argument("--json", action="store_true")
@@ -90,17 +98,31 @@ def main(argv=None):
     results["stages_seconds"] = stages
     results["vs_steps"] = [_run(params, n, args.repeat)[1] for n in args.steps]
     results["vs_grid"] = []
-    for nm in args.grid:
-        point = _run(params.updated({"mesh_grid_spacing": nm * 1e-9}), params["mesh_steps"], args.repeat)[1]
-        point["grid_spacing_nm"] = nm
-        point["elements_per_step"] = int(round(params["mesh_window"] / (nm * 1e-9)))
+    for across in args.across:
+        dataset, point = _run(params.updated({"mesh_elements_across_contact": across}), params["mesh_steps"],
+                              args.repeat)
+        point["grid_spacing_nm"] = dataset.attrs["grid_spacing"] * 1e9
+        point["elements_per_step"] = int(round(dataset.attrs["window"] / dataset.attrs["grid_spacing"]))
         results["vs_grid"].append(point)
+    if args.ensemble:
+        from distributed import Client, LocalCluster
+
+        from memstribo.mesh import simulate_ensemble
+
+        with LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
+                          dashboard_address=None) as cluster, Client(cluster) as client:
+            client.run(lambda: __import__("memstribo.mesh"))  # warm the workers' imports
+            start = time.perf_counter()
+            ensemble = simulate_ensemble(params, realisations=args.ensemble, client=client)
+            results["ensemble"] = {"realisations": args.ensemble, "workers": args.workers,
+                                   "seconds": time.perf_counter() - start,
+                                   "stiction_probability": ensemble["stiction_probability"]}
     if args.json:
         print(json.dumps(results, indent=2))
         return 0
     d = default
-    print(f"default cycle ({d['steps']} steps, {params['mesh_grid_spacing'] * 1e9:g} nm grid, "
-          f"{params['mesh_window'] * 1e6:g} um window): {d['seconds']:.2f} s wall, {d['cpu_seconds']:.2f} s CPU, "
+    print(f"default cycle ({d['steps']} steps, load case {params['load_case']}): "
+          f"{d['seconds']:.2f} s wall, {d['cpu_seconds']:.2f} s CPU, "
           f"{d['ms_per_step']:.2f} ms/step, peak memory {d['peak_memory_mb']:.1f} MB, "
           f"{d['mean_iterations']:.1f} CG iterations per solve (mean)")
     print("stages [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in stages.items()) + " (under cProfile)")
@@ -112,6 +134,10 @@ def main(argv=None):
     for r in results["vs_grid"]:
         print(f"{r['grid_spacing_nm']:>7g} {r['elements_per_step']:>8} {r['seconds']:8.2f} {r['cpu_seconds']:8.2f} "
               f"{r['ms_per_step']:8.2f} {r['peak_memory_mb']:8.1f} {r['mean_iterations']:6.1f}")
+    if "ensemble" in results:
+        e = results["ensemble"]
+        print(f"ensemble: {e['realisations']} realisations on {e['workers']} Dask workers: {e['seconds']:.1f} s "
+              f"(stiction probability {e['stiction_probability']:.2f})")
     print(f"({results['fft']}; numpy {results['numpy']}, scipy {results['scipy']}; "
           f"OMP_NUM_THREADS={results['threads']})")
     if args.profile:

@@ -220,3 +220,32 @@ def test_an_interrupted_run_keeps_what_it_finished(params, tmp_path, monkeypatch
     assert "roughness" in done and "gear" in done
     assert (tmp_path / "out" / "data" / "gear.json").is_file()
     assert (tmp_path / "out" / "report.html").is_file()
+
+
+def test_a_measured_meshing_profile_sets_the_geometry_downstream(tmp_path):
+    """#11 item 5: with a measured profile for the meshing cycle, the nanoblock geometry is derived from it
+    (as 'memstribo nanoblock --from' does) and used by the meshing stages; the verdict says so."""
+    from memstribo.nanoblock.geometry import nanoblock_geometry_from_profile
+    from memstribo.parameters import get_parameter_values
+    from memstribo.readers import read_topography
+
+    scan = REPO / "data" / "afm" / "si_profile_linescan.txt"
+    options = options_for_test(roughness_files=(str(scan),), mesh_roughness=0, stages=("roughness", "geometry", "mesh"),
+                               realisations=1)
+    chain = RunChain(get_parameter_values(), tmp_path / "out", options)
+    result = chain.run()
+    assert [r.status for r in result.stages if r.name in options.stages] == ["done"] * 3
+    derived = nanoblock_geometry_from_profile(read_topography(scan))
+    assert chain.model_params["atomic_height"] == derived.atomic_height
+    assert chain.model_params["adhesive_width"] == derived.adhesive_width
+    assert "derived from the scan" in chain.model_params.source("atomic_height")
+    assert result.verdict["nanoblock_geometry"].startswith("from the meshing surface")
+    # a scan whose geometry cannot be derived keeps the parameters' geometry, and the stage says why
+    odd = options_for_test(roughness_files=(str(REPO / "data" / "afm" / "opdx-3.opdx"),), mesh_roughness=0,
+                           stages=("roughness", "geometry"))
+    fallback = RunChain(get_parameter_values(), tmp_path / "odd", odd)
+    record = next(r for r in fallback.run().stages if r.name == "geometry")
+    assert "could not be derived" in record.message and fallback.model_params is fallback.params
+    # the default run keeps the parameter set's geometry
+    default = RunChain(get_parameter_values(), tmp_path / "default", options_for_test(stages=("roughness", "geometry")))
+    assert default.run().verdict["nanoblock_geometry"] == "parameters"

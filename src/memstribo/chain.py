@@ -59,9 +59,9 @@ STAGES: dict[str, str] = {
 
 #: What each stage needs.
 DEPENDS: dict[str, tuple[str, ...]] = {
-    "roughness": (), "geometry": ("roughness",), "sliding": ("roughness",), "gear": (), "mesh": ("roughness",),
-    "load_sweep": ("roughness",), "area_sweep": ("roughness",), "coated": ("roughness",),
-    "wear_sweep": ("roughness",), "damage": ("coated",),
+    "roughness": (), "geometry": ("roughness",), "sliding": ("roughness",), "gear": (),
+    "mesh": ("roughness", "geometry"), "load_sweep": ("roughness", "geometry"), "area_sweep": ("roughness", "geometry"),
+    "coated": ("roughness", "geometry"), "wear_sweep": ("roughness", "geometry"), "damage": ("coated",),
 }
 
 _RUN_KEYS = {
@@ -351,6 +351,12 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
                         "cof_mean_median", "cof_mean_p05", "cof_mean_p95"):
                 if key in summary:
                     out[f"{label}_{key}"] = summary[key]
+    geometry = summaries.get("geometry")
+    if geometry and "used_downstream" in geometry:
+        out["nanoblock_geometry"] = geometry["used_downstream"]
+        if geometry["used_downstream"] != "parameters":
+            used = geometry[geometry["used_downstream"]]
+            out["nanoblock_geometry_values"] = {k: v for k, v in used.items() if k != "rules"}
     sweep = summaries.get("wear_sweep")
     if sweep:
         out["wear_at_stiction"] = sweep.get("critical_wear")
@@ -573,6 +579,8 @@ class RunChain:
 
     def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False):
         self.params = params
+        #: the parameters of the model stages: ``params`` with the geometry derived from a measured profile
+        self.model_params = params
         self.folder = ensure_directory(out)
         self.options = options or RunOptions()
         self.progress = progress
@@ -620,6 +628,7 @@ class RunChain:
         """Default synthetic profile and measured files: statistics (ISO 4287) and figure."""
         roughness = _module("roughness")
         profiles = [roughness.default_profile(self.params)]
+        surfaces = [None]  # what the meshing cycle gets: None is the synthetic default, else the file's surface
         for path in self.options.roughness_files:
             readers = _module("readers")
             surface = readers.read_topography(path)
@@ -629,6 +638,7 @@ class RunChain:
             else:
                 profile = surface
             profiles.append(profile)
+            surfaces.append(surface)
         statistics = [roughness.profile_statistics(p) for p in profiles]
         import xarray as xr
 
@@ -653,7 +663,9 @@ class RunChain:
         self.results["profiles"] = profiles
         choice = self.options.mesh_roughness
         index = 0 if choice == "synthetic" else 1 + int(choice)
-        self.results["mesh_profile"] = profiles[index]
+        # the meshing stages get the whole surface (a map's rows become nanoblock rows)
+        self.results["mesh_profile"] = profiles[index] if surfaces[index] is None else surfaces[index]
+        self.results["mesh_profile_measured"] = index > 0
         for i, item in enumerate(self.inputs):
             item["meshing"] = i == index
         self.summaries["roughness"] = {p.name: s.to_dict() for p, s in zip(profiles, statistics)}
@@ -673,8 +685,29 @@ class RunChain:
                   "atomic_per_side", "bulk_height")
         summary = {label: {**{f: getattr(g, f) for f in fields}, "rules": dict(getattr(g, "rules", {}))}
                    for label, g in rows.items()}
+        # the stages feed each other: a measured profile for the meshing cycle sets the nanoblock geometry
+        # of every stage after this one (as 'memstribo nanoblock --from' derives it)
+        used = "parameters"
+        if self.results.get("mesh_profile_measured"):
+            surface = self.results["mesh_profile"]
+            name = getattr(surface, "name", "measured surface")
+            try:
+                derived = geometry.nanoblock_geometry_from_profile(surface)
+            except MemstriboError as exc:
+                notes.append(f"the meshing surface's geometry could not be derived ({exc}): the parameters' "
+                             "geometry is used")
+                self._current.message = "; ".join(notes)
+            else:
+                used = f"from the meshing surface {name}"
+                rows[used] = derived
+                summary[used] = {**{f: getattr(derived, f) for f in fields}, "rules": dict(derived.rules)}
+                values = {f: getattr(derived, f) for f in fields}
+                values["atomic_per_side"] = int(values["atomic_per_side"])
+                self.model_params = self.params.updated(values, origin=f"derived from the scan '{name}' "
+                                                                       "(memstribo nanoblock --from)")
+        summary["used_downstream"] = used
         self._json(summary, "nanoblock_geometry")
-        self.results["geometry"] = rows["parameters"]
+        self.results["geometry"] = rows[used]
         self.summaries["geometry"] = summary
 
     def sliding(self):
@@ -734,16 +767,16 @@ class RunChain:
         """The bare-silicon meshing cycle (thesis 4.9, MODEL 7b): forces, COF and its split, energies, the
         stiction verdict over an ensemble of roughness realisations and its step convergence."""
         mesh = _module("mesh")
-        dataset = self._simulate(self.params)
+        dataset = self._simulate(self.model_params)
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
         summary = cycle_summary(dataset)
-        summary.update(mesh.step_convergence(self.params, self.results["mesh_profile"], steps=self.options.steps,
+        summary.update(mesh.step_convergence(self.model_params, self.results["mesh_profile"], steps=self.options.steps,
                                              baseline=summary))
         count = self.options.realisations
         if count > 1:
-            first = dict(summary, realisation=0, seed=[int(self.params["roughness_seed"]), 0])
-            others = [mesh._ensemble_point(self.params, self.results["mesh_profile"], self.options.steps, None, 1.0, k)
+            first = dict(summary, realisation=0, seed=[int(self.model_params["roughness_seed"]), 0])
+            others = [mesh._ensemble_point(self.model_params, self.results["mesh_profile"], self.options.steps, None, 1.0, k)
                       for k in self._tick(range(1, count), "roughness realisations")]
             ensemble = mesh.ensemble_summary([first] + others)
             self.results["ensemble"] = ensemble
@@ -764,7 +797,7 @@ class RunChain:
     def load_sweep(self):
         """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
         mesh = _module("mesh")
-        summaries = [mesh.sweep(self.params, "load", [load], self.results["mesh_profile"], steps=self.options.steps)[0]
+        summaries = [mesh.sweep(self.model_params, "load", [load], self.results["mesh_profile"], steps=self.options.steps)[0]
                      for load in self._tick(self.options.loads, "load sweep")]
         dataset = _sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
         self._dataset(dataset, "load_sweep")
@@ -780,7 +813,7 @@ class RunChain:
         nanoblocks share the load.
         """
         mesh = _module("mesh")
-        summaries = [mesh.sweep(self.params, "area", [k], self.results["mesh_profile"], steps=self.options.steps)[0]
+        summaries = [mesh.sweep(self.model_params, "area", [k], self.results["mesh_profile"], steps=self.options.steps)[0]
                      for k in self._tick(self.options.areas, "area sweep")]
         dataset = _sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
         self._dataset(dataset, "area_sweep")
@@ -791,7 +824,7 @@ class RunChain:
 
     def coated(self):
         """The coated pair, fully functionalised (Omega = 0; thesis 5.4)."""
-        dataset = self._simulate(self.params, coating=self.options.coating, wear=0.0)
+        dataset = self._simulate(self.model_params, coating=self.options.coating, wear=0.0)
         self._dataset(dataset, "mesh_coated")
         self.results["coated"] = dataset
         self.summaries["coated"] = cycle_summary(dataset)
@@ -807,7 +840,7 @@ class RunChain:
     def wear_sweep(self):
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
         coating = _module("coating")
-        dataset = coating.wear_sweep(self.params, self.options.coating, list(self.options.wear),
+        dataset = coating.wear_sweep(self.model_params, self.options.coating, list(self.options.wear),
                                      roughness=self.results["mesh_profile"], steps=self.options.steps)
         self._dataset(dataset, "wear_sweep")
         self.results["wear_sweep"] = dataset
@@ -823,7 +856,7 @@ class RunChain:
     def damage(self):
         """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
         damage = _module("damage")
-        outcome = damage.run_damage(self.params, self.results["coated"], wear_sweep=self.results.get("wear_sweep"),
+        outcome = damage.run_damage(self.model_params, self.results["coated"], wear_sweep=self.results.get("wear_sweep"),
                       cycles_observed=self.options.cycles_observed)
         self.summaries["damage"] = dict(outcome.summary)
         for stem, dataset in getattr(outcome, "datasets", {}).items():
@@ -846,7 +879,9 @@ class RunChain:
         if name not in self.options.stages:
             record.status, record.message = "skipped", "not requested ([run] stages)"
             return record
-        missing = [d for d in DEPENDS[name] if self.records[d].status != "done"]
+        # geometry only feeds the model stages when it was asked for (else: the parameters' geometry)
+        missing = [d for d in DEPENDS[name] if self.records[d].status != "done"
+                   and not (d == "geometry" and d not in self.options.stages)]
         if missing:
             record.status = "skipped"
             record.message = f"needs stage(s) {', '.join(missing)}, which did not finish"

@@ -149,6 +149,12 @@ def _verdict_html(result) -> str:
                      f"{_quantity(v['damage_per_cycle_over_c1'])}{unit}; give an observed life "
                      f"(<code>[run] cycles_observed</code>) or the parameter <code>damage_coefficient</code> to turn it "
                      f"into cycles.{relative}</li>")
+    if v.get("nanoblock_geometry") not in (None, "parameters"):
+        values = v.get("nanoblock_geometry_values", {})
+        listed = ", ".join(f"{_e(k)} {_quantity(val, 'm') if k != 'atomic_per_side' else _e(str(val))}"
+                           for k, val in values.items())
+        items.append(f"<li>Nanoblock geometry of the meshing stages: derived {_e(v['nanoblock_geometry'])} "
+                     f"(<code>memstribo nanoblock --from</code>): {listed}.</li>")
     if not items:
         items.append("<li>No verdict: the meshing stages did not run (see the stages below).</li>")
     return "<div class='verdict'><ul>" + "".join(items) + "</ul></div>"
