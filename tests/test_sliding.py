@@ -200,3 +200,18 @@ def test_cli_bad_input(cli, argv, message):
 def test_too_many_steps(params_m):
     with pytest.raises(InputError, match="more than 1e6"):
         sliding.slide_single(params_m, distance=1e-3)
+
+
+def test_physical_limits_are_warnings(params):
+    """MODEL 7c: results past what silicon can carry say so (the issue's 22-213 GPa at 300 uN)."""
+    from memstribo.sliding import slide, summarize
+
+    heavy = summarize(slide("fixed-load", params.updated({"normal_load": "300 uN"}), distance=20e-9))
+    assert heavy.max_atomic_stress > params["elastic_limit_pressure"]
+    assert any("elastic limit" in text for text in heavy.warnings)
+    assert any("ideal shear strength" in text for text in heavy.warnings) == (
+        heavy.max_shear_stress > params["ideal_shear_strength"])
+    relaxed = summarize(slide("fixed-load", params.updated({"normal_load": "300 uN", "elastic_limit_pressure": "1 TPa",
+                                                             "ideal_shear_strength": "1 TPa"}), distance=20e-9))
+    assert relaxed.warnings == []
+    assert "warnings" in heavy.to_dict() and "max_shear_stress" in heavy.to_dict()

@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from types import SimpleNamespace
 
 import numpy as np
@@ -538,20 +538,58 @@ def slide_fixed_load(params, profile=None, *, load=None, distance=None, step=Non
 
 
 def slide(model, params, profile=None, *, gap=None, load=None, distance=None, step=None, progress=False):
-    """Run one of :data:`MODELS` ("single", "fixed-gap", "fixed-load")."""
+    """Run one of :data:`MODELS` ("single", "fixed-gap", "fixed-load").
+
+    The dataset's attributes carry the limits of silicon that :func:`summarize` checks
+    (``atomic_area`` [m^2], ``elastic_limit_pressure`` [Pa], ``ideal_shear_strength`` [Pa]).
+    """
     if model == "single":
         if profile is not None or gap is not None:
             raise InputError("the single model slides on a flat surface under a load: it takes no profile or gap.")
-        return slide_single(params, load=load, distance=distance, step=step)
-    if model == "fixed-gap":
+        dataset = slide_single(params, load=load, distance=distance, step=step)
+    elif model == "fixed-gap":
         if load is not None:
             raise InputError("the fixed-gap model takes a gap, not a load (use --model fixed-load).")
-        return slide_fixed_gap(params, profile, gap=gap, distance=distance, step=step, progress=progress)
-    if model == "fixed-load":
+        dataset = slide_fixed_gap(params, profile, gap=gap, distance=distance, step=step, progress=progress)
+    elif model == "fixed-load":
         if gap is not None:
             raise InputError("the fixed-load model takes a load, not a gap (use --model fixed-gap).")
-        return slide_fixed_load(params, profile, load=load, distance=distance, step=step, progress=progress)
-    raise InputError(f"unknown sliding model {model!r}: allowed are {', '.join(MODELS)}.")
+        dataset = slide_fixed_load(params, profile, load=load, distance=distance, step=step, progress=progress)
+    else:
+        raise InputError(f"unknown sliding model {model!r}: allowed are {', '.join(MODELS)}.")
+    dataset.attrs.update(atomic_area=float(params["atomic_width"]) ** 2,
+                         elastic_limit_pressure=float(params["elastic_limit_pressure"]),
+                         ideal_shear_strength=float(params["ideal_shear_strength"]))
+    return dataset
+
+
+def physical_limits(dataset) -> tuple[float, list[str]]:
+    """Largest friction stress on the touching atomic blocks [Pa], and warnings of silicon's limits (MODEL 7c).
+
+    The friction stress is the friction force over the area of the atomic blocks in contact
+    (``atomic_in_contact`` times ``atomic_area``); a warning names every limit passed: the
+    ideal shear strength of silicon (friction stress) and the elastic limit (normal stress on an
+    atomic block). Without the limits in the attributes (a dataset not made by :func:`slide`)
+    there are no warnings.
+    """
+    area = dataset.attrs.get("atomic_area")
+    touching = np.asarray(dataset["atomic_in_contact"].values, dtype=float) if "atomic_in_contact" in dataset else None
+    shear = 0.0
+    if area and touching is not None:
+        force = np.asarray(dataset["friction_force"].values, dtype=float)
+        stress = np.divide(force, touching * area, out=np.zeros_like(force), where=touching > 0)
+        shear = float(stress.max()) if stress.size else 0.0
+    warnings = []
+    strength = dataset.attrs.get("ideal_shear_strength")
+    if strength and shear > strength:
+        warnings.append(f"the friction stress on the touching atomic blocks reaches {shear / 1e9:.3g} GPa, above the "
+                        f"ideal shear strength of silicon ({strength / 1e9:.3g} GPa): the blocks would shear off")
+    limit = dataset.attrs.get("elastic_limit_pressure")
+    normal = float(dataset["max_atomic_stress"].max()) if "max_atomic_stress" in dataset else 0.0
+    if limit and normal > limit:
+        warnings.append(f"the normal stress on an atomic block reaches {normal / 1e9:.3g} GPa, above the elastic limit "
+                        f"of silicon ({limit / 1e9:.3g} GPa): the elastic nanoblock model does not hold there")
+    return shear, warnings
 
 
 # --------------------------------------------------------------------------------------
@@ -582,6 +620,10 @@ class SlideSummary:
         Largest normal stress on an atomic block [Pa].
     load_residual : float or None
         Largest relative force-balance error (fixed-load model only) [-].
+    max_shear_stress : float
+        Largest friction stress on the touching atomic blocks [Pa] (0 when unknown).
+    warnings : list of str
+        Limits of silicon passed (:func:`physical_limits`), empty when none.
     """
 
     cof: float
@@ -601,6 +643,8 @@ class SlideSummary:
     steps: int
     max_atomic_stress: float
     load_residual: float | None = None
+    max_shear_stress: float = 0.0
+    warnings: list = field(default_factory=list)
 
     def to_dict(self) -> dict:
         values = asdict(self)
@@ -612,7 +656,8 @@ class SlideSummary:
 UNITS = {"cof": "", "cof_chemical": "", "cof_vdw": "", "cof_elastic": "", "friction_force": "N",
          "adhesion_force": "N", "normal_force": "N", "energy_chemical": "J", "energy_vdw": "J",
          "energy_elastic": "J", "fraction_chemical": "", "fraction_vdw": "", "fraction_elastic": "",
-         "distance": "m", "steps": "", "max_atomic_stress": "Pa", "load_residual": ""}
+         "distance": "m", "steps": "", "max_atomic_stress": "Pa", "load_residual": "", "max_shear_stress": "Pa",
+         "warnings": ""}
 
 
 def summarize(dataset) -> SlideSummary:
@@ -631,6 +676,7 @@ def summarize(dataset) -> SlideSummary:
     residual = float(dataset["load_residual"].values.max()) if "load_residual" in dataset else None
     if dataset.attrs.get("model") == "fixed-gap":
         residual = None
+    shear, warnings = physical_limits(dataset)
     return SlideSummary(
         cof=mean("cof"), cof_chemical=mean("cof_chemical"), cof_vdw=mean("cof_vdw"),
         cof_elastic=mean("cof_elastic"), friction_force=friction_force,
@@ -638,5 +684,5 @@ def summarize(dataset) -> SlideSummary:
         energy_chemical=energies[0], energy_vdw=energies[1], energy_elastic=energies[2],
         fraction_chemical=fractions[0], fraction_vdw=fractions[1], fraction_elastic=fractions[2],
         distance=distance, steps=int(positions.size), max_atomic_stress=float(dataset["max_atomic_stress"].max()),
-        load_residual=residual,
+        load_residual=residual, max_shear_stress=shear, warnings=warnings,
     )
