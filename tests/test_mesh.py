@@ -413,3 +413,23 @@ def test_adhesive_layer_one_rule_with_the_sliding_models(base):
     thin = simulate_mesh(params.updated({"adhesive_layer_thickness": h0}), steps=STEPS)
     assert summarize(thin)["cof_mean"] > summarize(bare)["cof_mean"]  # fewer vdW bonds, far less F_adh
     assert summarize(thin)["adhesion_force_mean"] < summarize(bare)["adhesion_force_mean"]
+
+
+@pytest.mark.parametrize("module, name, key", [
+    ("memstribo.friction", "chemical_bond_count", "energy_chemical"),
+    ("memstribo.friction", "vdw_bond_count", "energy_vdw"),
+    ("memstribo.friction", "bond_breaking_energy", "energy_dissipated"),
+    ("memstribo.friction", "adhesion_force", "adhesion_force_mean"),
+    ("memstribo.adhesion", "pull_off_force", "adhesion_force_mean"),
+    ("memstribo.nanoblock.mechanics", "elastic_interlocking_energy", "energy_elastic"),
+])
+def test_the_cycle_calls_the_published_relations(params, monkeypatch, module, name, key):
+    """#11 item 2: the engine calls the one function of each relation, so replacing it changes the result."""
+    import importlib
+
+    target = importlib.import_module(module)
+    before = summarize(simulate_mesh(params, steps=11))[key]
+    real = getattr(target, name)
+    monkeypatch.setattr(target, name, lambda *args, **kwargs: 2.0 * np.asarray(real(*args, **kwargs)))
+    after = summarize(simulate_mesh(params, steps=11))[key]
+    assert after != pytest.approx(before, rel=1e-6), name

@@ -441,8 +441,10 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     stiffness = BlockStiffness.from_geometry(geometry, params["youngs_modulus"], modulus, params["threshold_strain"])
     offsets = (np.arange(m) - 0.5 * (m - 1)) * pitch
 
-    from .adhesion import no_slip_coefficient, pull_off_force
-    from .friction import chemical_bond_count, vdw_bond_count
+    # the published relations, looked up on their modules at call time: a change to a relation
+    # changes the meshing cycle (tests/test_mesh.py::test_the_cycle_calls_the_published_relations)
+    from . import adhesion, friction
+    from .nanoblock import mechanics
 
     w_si = _work_of_adhesion(params)
     # thesis interface: one rule with the sliding models (3.5), for bare and coated blocks alike
@@ -451,7 +453,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     with_cohesive_zone = params["contact_adhesion"] == "maugis"
     if coating is not None:
         w_coat, u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
-    c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
+    c_ns = float(adhesion.no_slip_coefficient(params["poisson_ratio"]))
     n_rows_solved = len(setup.pinion_profiles)  # every row, each with its own roughness (MODEL 7b)
 
     pbar = None
@@ -543,9 +545,11 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         t2 = touch2.reshape(n_steps, -1)
         overlap_len = np.clip(w_at - np.abs(xa1[:, :, None] - xa2[:, None, :]), 0.0, None)
         overlap_len = overlap_len * (t1[:, :, None] & t2[:, None, :])
-        chem = chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)  # (3-10), overlap area / D^2
+        chem = friction.chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)  # (3-10)
         out["chem_bonds"] += chem
-        out["f_chem"] += chem * params["bond_energy"] / bond
+        # all bonds break once per bond length of sliding (3.5): the force is that energy per bond length (3-1)
+        out["f_chem"] += friction.friction_force(friction.bond_breaking_energy(chem, params["bond_energy"], bond, bond),
+                                                 bond)
 
         # vdW bonds: pinion block footprint inside the adhesive layer (3-12), pull-off (3-32)
         k1_at_x = np.floor((s1[:, None] - grid[None, :]) / w_adh).astype(int)  # pinion block at each element
@@ -557,15 +561,17 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         u_vdw_x = np.where(bare_x, params["vdw_bond_energy"], u_vdw_coat) if coating is not None \
             else params["vdw_bond_energy"]
         w_x = np.where(bare_x, w_si, w_coat) if coating is not None else w_si
-        n_vdw = vdw_bond_count(w_adh, dx, bond) * inside  # (3-12), bonds per element
+        n_vdw = friction.vdw_bond_count(w_adh, dx, bond) * inside  # (3-12), bonds per element
         out["vdw_bonds"] += n_vdw.sum(axis=1)
-        out["f_vdw"] += (n_vdw * u_vdw_x).sum(axis=1) / bond
+        out["f_vdw"] += friction.friction_force(
+            friction.bond_breaking_energy(n_vdw, u_vdw_x, bond, bond).sum(axis=1), bond)
+        # elastic interlocking (3-25) on material blocks, both flanks, times the sliding fraction
+        e_el = np.zeros(n_steps)
+        for (k, (_, _, _, _, comp_at, comp_adh)) in zip((k1, k2), flank_states):
+            e_el += _interlocking(k, comp_at, comp_adh, stiffness, mechanics.elastic_interlocking_energy)
+        out["e_el"] += e_el * sliding_fraction
         if with_cohesive_zone:  # the attraction is the contact solve's cohesive line load over the row
             out["f_adh"] += info[:, 4] * w_adh
-            e_el = np.zeros(n_steps)
-            for (k, (_, _, _, _, comp_at, comp_adh)) in zip((k1, k2), flank_states):
-                e_el += _interlocking(k, comp_at, comp_adh, stiffness)
-            out["e_el"] += e_el * sliding_fraction
             continue
         # pull-off per pinion block: a = half its engaged length, w12 averaged over it
         key = k1_at_x - k1_at_x.min(axis=1, keepdims=True)
@@ -579,14 +585,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         engaged = a > 0
         pull_off = np.zeros_like(a)
         if engaged.any():
-            pull_off[engaged] = pull_off_force(work[engaged], modulus, c_ns, a[engaged])  # (3-32)
-        out["f_adh"] += pull_off.sum(axis=1)  # (3-31)
-
-        # elastic interlocking (3-25) on material blocks, both flanks, times the sliding fraction
-        e_el = np.zeros(n_steps)
-        for (k, (_, _, _, _, comp_at, comp_adh)) in zip((k1, k2), flank_states):
-            e_el += _interlocking(k, comp_at, comp_adh, stiffness)
-        out["e_el"] += e_el * sliding_fraction
+            pull_off[engaged] = adhesion.pull_off_force(work[engaged], modulus, c_ns, a[engaged])  # (3-32)
+        out["f_adh"] += friction.adhesion_force(pull_off, axis=1)  # (3-31)
 
     if pbar is not None:
         pbar.close()
@@ -594,8 +594,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                                   sliding_fraction=sliding_fraction)
 
 
-def _interlocking(k, comp_at, comp_adh, stiffness):
-    """Sum over material blocks of 1/2 k de^2 between consecutive steps (atomic + adhesive)."""
+def _interlocking(k, comp_at, comp_adh, stiffness, interlocking_energy):
+    """Sum over material blocks of 1/2 k de^2 (3-25, ``interlocking_energy``) between consecutive steps."""
     n_steps = k.shape[0]
     k_min = int(k.min())
     width = int(k.max()) - k_min + 1
@@ -606,7 +606,8 @@ def _interlocking(k, comp_at, comp_adh, stiffness):
     adh[steps, (k - k_min).ravel()] = comp_adh.ravel()
     d_at = np.diff(at, axis=0, prepend=at[:1])
     d_adh = np.diff(adh, axis=0, prepend=adh[:1])
-    return 0.5 * stiffness.atomic * (d_at**2).sum(axis=(1, 2)) + 0.5 * stiffness.adhesive * (d_adh**2).sum(axis=1)
+    return (interlocking_energy(stiffness.atomic, d_at).sum(axis=(1, 2))
+            + interlocking_energy(stiffness.adhesive, d_adh).sum(axis=1))
 
 
 def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar):
