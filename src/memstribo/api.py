@@ -1,0 +1,273 @@
+"""The public API in a few names: read a surface, get and change a parameter set, simulate a
+meshing cycle (one or an ensemble of roughness realisations), sweep, run the whole chain.
+
+Every function here is re-exported at the top of the package (``memstribo.read_surface``, ...)
+and imported lazily, so ``import memstribo`` stays quick. Physical values may be numbers in SI,
+strings with units (``"50 uN"``) or pint quantities (``50 * ureg.uN``); surfaces may be file
+paths, memstribo profiles and maps, or SurfaceTopography topographies. Results are labelled:
+xarray datasets, or small result objects with ``.to_xarray()``.
+
+Example
+-------
+>>> import memstribo
+>>> params = memstribo.parameter_set(normal_load="50 uN", load_case="thesis")  # doctest: +SKIP
+>>> cycle = memstribo.mesh_cycle(params, "data/afm/opdx-3.opdx", steps=121)     # doctest: +SKIP
+>>> cycle.summary["cof_mean"], cycle.summary["stiction"]                       # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+
+__all__ = ["read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run"]
+
+
+def _plain(value: Any) -> Any:
+    """A pint quantity as a string pint can read back (``"50 micronewton"``); anything else unchanged."""
+    if hasattr(value, "magnitude") and hasattr(value, "units"):
+        return f"{value.magnitude!r} {value.units}"
+    return value
+
+
+def read_surface(surface, *, channel: str | None = None, unit: str | None = None):
+    """A measured surface as a memstribo :class:`~memstribo.roughness.Profile` or
+    :class:`~memstribo.readers.SurfaceMap` (heights in m).
+
+    Parameters
+    ----------
+    surface : str, Path, Profile, SurfaceMap or SurfaceTopography topography
+        A file of any format :func:`memstribo.readers.read_topography` reads, or an object
+        already in memory. A SurfaceTopography ``Topography`` (2D) or ``UniformLineScan`` (1D)
+        is converted with its ``physical_sizes`` and ``unit``.
+    channel, unit : str, optional
+        Channel of a multi-channel file; height unit of a file that does not say it.
+
+    Returns
+    -------
+    Profile or SurfaceMap
+    """
+    from .roughness import Profile
+
+    if isinstance(surface, (str, Path)):
+        from .readers import read_topography
+
+        return read_topography(surface, channel=channel, unit=unit)
+    if isinstance(surface, Profile) or hasattr(surface, "line_scans"):
+        return surface
+    if hasattr(surface, "heights") and hasattr(surface, "physical_sizes"):
+        return _from_surface_topography(surface)
+    raise InputError(f"a surface must be a file path, a memstribo Profile or SurfaceMap, or a SurfaceTopography "
+                     f"topography; got {type(surface).__name__}.")
+
+
+def _from_surface_topography(topography):
+    """A SurfaceTopography topography (1D or 2D, uniform grid) as a Profile or SurfaceMap [m]."""
+    import numpy as np
+
+    from .readers import SurfaceMap
+    from .roughness import Profile
+    from .units import to_si
+
+    unit = getattr(topography, "unit", None) or "m"
+    scale = to_si(f"1 {unit}", "m", "unit of the topography")
+    heights = np.asarray(topography.heights(), dtype=float) * scale
+    sizes = np.atleast_1d(np.asarray(topography.physical_sizes, dtype=float)) * scale
+    name = str(getattr(topography, "info", {}).get("name", "SurfaceTopography topography")) \
+        if isinstance(getattr(topography, "info", None), dict) else "SurfaceTopography topography"
+    if heights.ndim == 1:
+        x = np.arange(heights.size) * sizes[0] / heights.size
+        return Profile(x=x, z=heights, name=name, source=f"SurfaceTopography object ({type(topography).__name__})")
+    # SurfaceTopography stores heights as (nx, ny); memstribo maps are (ny, nx) with rows along x
+    nx, ny = heights.shape
+    return SurfaceMap(heights.T.copy(), sizes[0] / nx, sizes[1] / ny, name=name,
+                      source=f"SurfaceTopography object ({type(topography).__name__})")
+
+
+def parameter_set(name: str = "silicon_thesis", overrides: dict | None = None, **values):
+    """A parameter set with changes: ``parameter_set(normal_load=50 * ureg.uN, load_case="thesis")``.
+
+    Parameters
+    ----------
+    name : str
+        The parameter set (``memstribo parameters`` lists them).
+    overrides : dict, optional
+        Changes by name (for names that are not Python identifiers, or from a config).
+    **values
+        Changes by name: numbers in SI, strings with units, or pint quantities.
+
+    Returns
+    -------
+    memstribo.parameters.Parameters
+        Every value validated and in SI, with its source (``"Python API"`` for the changes).
+    """
+    from .parameters import get_parameter_values
+
+    params = get_parameter_values(name)
+    changes = {**(overrides or {}), **values}
+    if changes:
+        params = params.updated({key: _plain(value) for key, value in changes.items()}, origin="Python API")
+    return params
+
+
+@dataclass
+class MeshCycle:
+    """A simulated meshing cycle: the time series, its summary, and the ensemble when there is one.
+
+    Attributes
+    ----------
+    dataset : xarray.Dataset
+        The first realisation over the steps (``memstribo.mesh.simulate_mesh``).
+    summary : dict
+        Its summary (the keys of ``memstribo mesh --json``).
+    ensemble : dict or None
+        The verdict over the realisations (``memstribo.mesh.simulate_ensemble``), without the
+        per-realisation summaries, or None for one realisation.
+    """
+
+    dataset: Any
+    summary: dict
+    ensemble: dict | None = field(default=None)
+
+    def to_xarray(self):
+        """The dataset, with the ensemble's scalars as attributes and its realisations over ``realisation``."""
+        import json
+
+        import numpy as np
+        import xarray as xr
+
+        dataset = self.dataset.copy()
+        if self.ensemble:
+            rows = self.ensemble["per_realisation"]
+            index = np.array([r["realisation"] for r in rows])
+            for key, unit in (("stiction_margin", "N"), ("cof_mean", "1"), ("mesh_efficiency", "1")):
+                dataset[f"realisation_{key}"] = xr.DataArray(
+                    np.array([r[key] for r in rows], dtype=float), dims="realisation", coords={"realisation": index},
+                    attrs={"units": unit, "long_name": f"{key.replace('_', ' ')} of each roughness realisation"})
+            dataset.attrs["ensemble"] = json.dumps({k: v for k, v in self.ensemble.items() if k != "per_realisation"})
+        return dataset
+
+
+def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int | None = None, coating=None,
+               wear: float = 1.0, client=None, progress: bool = False) -> MeshCycle:
+    """Friction, adhesion, COF and the stiction verdict over one meshing cycle (thesis 4.6-4.9, MODEL 7b).
+
+    Parameters
+    ----------
+    params : Parameters, optional
+        Default: :func:`parameter_set` (the thesis pair, torque load case).
+    surface : optional
+        Roughness of the teeth, anything :func:`read_surface` takes; None is the synthetic default.
+    realisations : int
+        Independent roughness realisations; more than 1 gives the stiction probability and bands.
+    steps : int, optional
+        Positions along the path of contact (default ``mesh_steps``).
+    coating : str or Coating, optional
+        SAM coating ("OTS", "FDTS"); None is bare silicon.
+    wear : float
+        Worn fraction Omega of the gear's coating (with a coating).
+    client : distributed.Client, optional
+        Runs the realisations on a Dask cluster.
+    progress : bool
+
+    Returns
+    -------
+    MeshCycle
+    """
+    from .coating import get_coating
+    from .mesh import simulate_ensemble, simulate_mesh, summarize
+
+    params = parameter_set() if params is None else params
+    roughness = None if surface is None else read_surface(surface)
+    coating_object = get_coating(coating) if isinstance(coating, str) else coating
+    dataset = simulate_mesh(params, roughness, steps=steps, coating=coating_object, wear=wear, progress=progress)
+    summary = summarize(dataset)
+    ensemble = None
+    if realisations > 1:
+        ensemble = simulate_ensemble(params, roughness, realisations=realisations, steps=steps,
+                                     coating=coating_object, wear=wear, client=client, progress=progress)
+        ensemble = {k: v for k, v in ensemble.items() if k != "summaries"}
+    return MeshCycle(dataset, summary, ensemble)
+
+
+def sweep(params, parameter: str, values, surface=None, *, steps: int | None = None, coating=None,
+          wear: float = 1.0, progress: bool = False):
+    """Meshing cycles over loads, drive torques or nominal areas, as one labelled dataset.
+
+    Parameters
+    ----------
+    params : Parameters
+    parameter : {"load", "torque", "area"}
+    values : sequence
+        Loads [N], torques [N m] (numbers, strings with units or pint quantities) or area multiples.
+    surface, steps, coating, wear, progress
+        As for :func:`mesh_cycle`.
+
+    Returns
+    -------
+    xarray.Dataset
+        One dimension named after the swept quantity (``normal_load``, ``drive_torque`` or
+        ``area_multiple``), a variable per numeric summary key, each with ``units``.
+    """
+    import numpy as np
+    import xarray as xr
+
+    from .coating import get_coating
+    from .mesh import SUMMARY_UNITS
+    from .mesh import sweep as mesh_sweep
+    from .units import to_si
+
+    units = {"load": "N", "torque": "N*m", "area": ""}
+    if parameter not in units:
+        raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load', 'torque' or 'area'.")
+    numbers = [to_si(_plain(v), units[parameter], parameter) for v in values]
+    roughness = None if surface is None else read_surface(surface)
+    coating_object = get_coating(coating) if isinstance(coating, str) else coating
+    points = mesh_sweep(params, parameter, numbers, roughness, steps=steps, coating=coating_object, wear=wear,
+                        progress=progress)
+    dim = {"load": "normal_load", "torque": "drive_torque", "area": "area_multiple"}[parameter]
+    keys = [k for k, v in points[0].items() if k != dim and isinstance(v, (int, float)) and not isinstance(v, bool)]
+    data = {k: (dim, np.array([p[k] for p in points], dtype=float),
+                {"units": SUMMARY_UNITS.get(k, "") or "1", "long_name": k.replace("_", " ")}) for k in keys}
+    data["stiction"] = (dim, np.array([bool(p["stiction"]) for p in points]), {"units": "1",
+                                                                              "long_name": "stiction (R > F_t)"})
+    coordinate = np.array([p[dim] for p in points], dtype=float)
+    return xr.Dataset(data, coords={dim: (dim, coordinate, {"units": units[parameter] or "1",
+                                                            "long_name": dim.replace("_", " ")})},
+                      attrs={"load_case": points[0]["load_case"]})
+
+
+def run(config: str | Path | None = None, out: str | Path = "memstribo-results", params=None, **options):
+    """The whole chain (``memstribo run``): roughness to damage, with ``report.html``.
+
+    Parameters
+    ----------
+    config : str or Path, optional
+        A TOML config (``[parameters]`` and ``[run]`` tables), as for the command line.
+    out : str or Path
+        Results folder.
+    params : Parameters, optional
+        Parameters instead of (or on top of the defaults without) a config file.
+    **options
+        ``[run]`` options by name (``realisations=4``, ``stages=["roughness", "mesh"]``, ...).
+
+    Returns
+    -------
+    memstribo.chain.RunResult
+    """
+    from .chain import RunChain, RunOptions
+    from .parameters import read_config
+
+    table: dict[str, Any] = {}
+    base = None
+    if config is not None:
+        loaded = read_config(config)
+        params = parameter_set(overrides=loaded.get("parameters", {})) if params is None else \
+            params.updated(loaded.get("parameters", {}), origin=f"config file {config}")
+        table.update(loaded.get("run", {}))
+        base = Path(config).parent
+    table.update({k: _plain(v) for k, v in options.items()})
+    return RunChain(parameter_set() if params is None else params, out, RunOptions.from_table(table, base)).run()
