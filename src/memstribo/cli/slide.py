@@ -38,10 +38,21 @@ def register(subparsers, parents):
     parser.set_defaults(handler=run)
 
 
-def _quantity(text, unit, name):
+def _quantity(text, unit, name, parameter=None):
+    """The option's value in SI; with ``parameter``, checked against that parameter's range."""
     from ..units import to_si
 
-    return None if text is None else to_si(text, unit, name)
+    if text is None:
+        return None
+    if parameter is None:
+        return to_si(text, unit, name)
+    from ..errors import InputError
+    from ..parameters import coerce_value
+
+    try:
+        return coerce_value(parameter, text)
+    except InputError as exc:
+        raise InputError(f"{name}: {exc}") from None
 
 
 def run(args, params):
@@ -51,10 +62,13 @@ def run(args, params):
         return _estimate(args, params)
     from .. import sliding
 
-    load = _quantity(args.load, "N", "--load")
-    gap = _quantity(args.gap, "m", "--gap")
+    load = _quantity(args.load, "N", "--load", "normal_load")
+    gap = _quantity(args.gap, "m", "--gap", "sliding_gap")
     distance = _quantity(args.distance, "m", "--distance")
-    step = _quantity(args.step, "m", "--step")
+    step = _quantity(args.step, "m", "--step", "sliding_step")
+    if distance is not None and distance > 1e-3:
+        raise InputError(f"--distance {args.distance!r} is longer than 1 mm; the sliding models follow single "
+                         "bonds (0.1 nm steps): give at most 1 mm.")
     if load is not None and load <= 0:
         raise InputError(f"--load must be a positive force, got {args.load!r}.")
     if distance is not None and distance < 0:
@@ -89,7 +103,7 @@ def _estimate(args, params):
 
     if args.profile or args.gap or args.distance or args.step or args.out:
         raise InputError("--model estimate takes only --load (the 3.5 estimate has no profile or slide).")
-    load = _quantity(args.load, "N", "--load")
+    load = _quantity(args.load, "N", "--load", "normal_load")
     printed = thesis_estimate(**THESIS_3_5_INPUTS)
     counts = thesis_estimate(**THESIS_3_5_COUNTS)
     ours = estimate_from_parameters(params, load=load)

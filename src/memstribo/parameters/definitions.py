@@ -209,7 +209,7 @@ _SPECS = [
            "-100 nm (an interference deeper than a nanoblock crushes it) to 1 um (far out of contact)",
            optional=True, exclusive_minimum=False),
     _range("sliding_step", "m", "Sliding distance per step of the flat-friction models; unset: bond_length",
-           1e-12, 1e-6, "1 pm to 1 um; sliding distance / step is at most 10 million steps", optional=True),
+           1e-12, 1e-6, "1 pm to 1 um; sliding distance / step is at most 1 million steps", optional=True),
     _range("adhesive_layer_thickness", "m", "Thickness of the adhesive layer inside which an adhesive block "
            "forms vdW bonds and adheres, in the sliding models and the meshing cycle, for bare and coated "
            "blocks alike; unset: adhesive_height (thesis 3.5); the Maugis range h0 = w/sigma0 (MODEL §2, "
