@@ -638,8 +638,8 @@ def _check_complete(path, suffix, size):
                 ends = []
                 for page in tif.pages:
                     for tag in page.tags.values():
-                        ends.append(tag.valueoffset + tag.count * np.dtype(tag.dtype.char if hasattr(tag.dtype, "char")
-                                                                            else tag.dtype).itemsize)
+                        if getattr(tag, "valuebytecount", 0) > 4:  # values of 4 bytes or less sit in the tag itself
+                            ends.append(tag.valueoffset + tag.valuebytecount)
                     offsets, counts = page.dataoffsets, page.databytecounts
                     ends.extend(o + c for o, c in zip(offsets, counts))
         except Exception:
