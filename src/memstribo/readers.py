@@ -298,9 +298,16 @@ def _decode_text(data: bytes, path):
             return None
         text = data.decode("latin-1")
     text = text.replace("\r\n", "\n").replace("\r", "\n")
-    if any(not (c.isprintable() or c in "\n\t\f\v") for c in text):
-        return None
-    return text
+    bad = next((i for i, c in enumerate(text) if not (c.isprintable() or c in "\n\t\f\v")), None)
+    if bad is None:
+        return text
+    if encoding == "utf-8" and "\x00" not in text:
+        # readable text with terminal control sequences (ESC, BEL, ...) in it: not a measurement export
+        line = text.count("\n", 0, bad) + 1
+        raise DataFileError(f"{path}: line {line} holds control characters ({printable(text[bad], 10)}, e.g. terminal "
+                            "escape sequences); a text profile holds numbers, '#' comments and one line of column "
+                            "names.")
+    return None
 
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?(?:nan|inf|infinity)"
@@ -415,8 +422,8 @@ def _text_reason(text, path):
     bad = [(i, line) for i, line in lines if not _NUMBER_ROW.match(line)]
     if len(bad) > 1 or (bad and bad[0] != lines[0]):
         i, line = bad[1] if len(bad) > 1 and bad[0] == lines[0] else bad[0]
-        return (f"line {i} '{printable(line, 40)}' is not numbers separated by spaces, tabs, commas or semicolons "
-                "(one line of column names allowed)")
+        return (f"line {i} '{printable(line, 40)}' is not numbers separated by spaces, tabs, commas or "
+                "semicolons")
     return f"{len(_SPLIT.split(lines[-1][1]))} columns; a text profile has 2 (x, height) or 1 (height)"
 
 
@@ -664,9 +671,8 @@ def _check_complete(path, suffix, size):
 
 
 #: in a message: the formats memstribo reads
-_SUPPORTED_SHORT = ("Supported: the instrument files SurfaceTopography reads (NanoScope .di/.001, Park .tiff, Asylum "
-                    ".ibw, Dektak .opdx/.csv, Gwyddion .gwy, .x3p, .sur, .plu, ...), a contact.engineering .zip, "
-                    "x-z (or z) text/CSV and .npy profiles.")
+_SUPPORTED_SHORT = ("Supported: what SurfaceTopography reads (.di/.001, .tiff, .ibw, Dektak .opdx/.csv, .gwy, .x3p, "
+                    "...), contact.engineering .zip, x-z or z text, .npy.")
 
 
 def _container_meta(archive):

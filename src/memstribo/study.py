@@ -172,8 +172,11 @@ def _expand_values(key: str, values: Any, where: str) -> list[Any]:
         unit = _unit_of(key)
         from .units import to_si
 
-        start = to_si(values["start"], unit, key)
-        stop = to_si(values["stop"], unit, key)
+        try:
+            start = to_si(values["start"], unit, key)
+            stop = to_si(values["stop"], unit, key)
+        except InputError as exc:
+            raise InputError(f"{where}: range '{printable(key)}': {exc}") from None
         num = values["num"]
         if not isinstance(num, int) or isinstance(num, bool) or not 1 <= num <= MAX_STUDY_POINTS:
             raise InputError(f"{where}: range '{printable(key)}' needs num = an integer from 1 to "
@@ -362,6 +365,8 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
     points = []
     for index, raw in enumerate(spec.points):
         where = f"study point {index} ({_describe(raw)})"
+        if spec.source != "python":
+            where = f"study spec {printable(spec.source, 200)}: {where}"
         overrides, options = _point_options(raw, where, base_folder)
         try:
             point_params = base.updated(overrides, origin=f"study point {index}") if overrides else base

@@ -14,7 +14,7 @@ import re
 
 from .errors import InputError
 
-_PLAIN_NUMBER = re.compile(r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*$")
+_PLAIN_NUMBER = re.compile(r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*$", re.ASCII)
 
 
 @functools.lru_cache(maxsize=1)
@@ -72,7 +72,7 @@ def to_si(value, unit: str, name: str = "value") -> float:
 
 
 #: a quantity string: one number, then a unit expression (no second number, no bare unit)
-_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)?\s*$")
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)?\s*$", re.ASCII)
 
 #: characters a unit expression may hold (pint syntax: names, *, /, ^, **, parentheses, digits of powers)
 _UNIT_TEXT = re.compile(r"^[A-Za-z_\u00b5\u03bc\u00b0%Ω][A-Za-z0-9_\u00b5\u03bc\u00b0%Ω*/^ ().-]*$")
