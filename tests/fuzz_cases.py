@@ -285,7 +285,7 @@ _OPTIONS = [
     ("slide_huge_load", ["slide", "--load", "1e30"], "--load"),
     ("slide_gap_minus_1m", ["slide", "--gap", "-1 m"], "--gap"),
     ("slide_step_tiny", ["slide", "--step", "1e-20"], "--step"),
-    ("slide_distance_huge", ["slide", "--distance", "1 m"], "--distance"),
+    ("slide_distance_huge", ["slide", "--distance", "1 m"], "1 m"),
     ("asperity_load_1e30", ["asperity", "--load", "1e30"], "--load"),
     ("asperity_load_word", ["asperity", "--load", "heavy"], "--load"),
     ("asperity_degree_zero", ["asperity", "--load", "1 uN", "--degree", "0"], "--degree"),

@@ -177,7 +177,11 @@ def test_odd_unit_strings_are_input_errors(text, match):
 
 def test_negative_option_values_reach_the_range_check(cli):
     code, out, err = cli("slide", "--load", "-5uN")
-    assert code == 2 and "--load" in err and "outside its range" in err and "expected one argument" not in err
+    assert code == 2 and "--load must be a positive force, got '-5uN'" in err and "expected one argument" not in err
+    code, out, err = cli("slide", "--load", "-5e-6")
+    assert code == 2 and "--load must be a positive force" in err
+    code, out, err = cli("gear", "--set", "normal_load=-5uN")
+    assert code == 2 and "outside its range" in err
 
 
 # --- config files -------------------------------------------------------------------------------------

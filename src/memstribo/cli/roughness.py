@@ -61,7 +61,7 @@ def run(args, params):
     if args.resample is not None:
         step = to_si(args.resample, "m", "--resample")
         if not 1e-12 <= step <= 1e-3:
-            raise InputError(f"--resample must be a length from 1 pm to 1 mm ('39 nm'), got '{args.resample}'.")
+            raise InputError(f"--resample must be a positive length from 1 pm to 1 mm ('39 nm'), got '{args.resample}'.")
     notes = []
     if args.path == "thesis":
         if step is not None:

@@ -44,9 +44,13 @@ def _quantity(text, unit, name, parameter=None):
 
     if text is None:
         return None
+    value = to_si(text, unit, name)
     if parameter is None:
-        return to_si(text, unit, name)
+        return value
     from ..errors import InputError
+
+    if parameter == "normal_load" and value <= 0:
+        raise InputError(f"{name} must be a positive force, got '{text}'.")
     from ..parameters import coerce_value
 
     try:
@@ -66,9 +70,6 @@ def run(args, params):
     gap = _quantity(args.gap, "m", "--gap", "sliding_gap")
     distance = _quantity(args.distance, "m", "--distance")
     step = _quantity(args.step, "m", "--step", "sliding_step")
-    if distance is not None and distance > 1e-3:
-        raise InputError(f"--distance {args.distance!r} is longer than 1 mm; the sliding models follow single "
-                         "bonds (0.1 nm steps): give at most 1 mm.")
     if load is not None and load <= 0:
         raise InputError(f"--load must be a positive force, got {args.load!r}.")
     if distance is not None and distance < 0:
