@@ -855,7 +855,8 @@ def _read(path, shown, channel, unit, physical_size):
             except OSError as exc:
                 raise DataFileError(f"{shown}: cannot read the file ({exc.strerror}).") from None
             text = _decode_text(data, shown)
-            if text is not None and "image width" in text[:2000].lower() and _HEADER_SHAPE.search(text[:2000]):
+            head = text[:2000].lower() if text is not None else ""
+            if "image width" in head and "image height" in head:
                 result = _read_header_export(text, shown, name, unit)
             elif text is not None:
                 plain = _plain_rows(text)
