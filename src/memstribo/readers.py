@@ -1,11 +1,15 @@
 """Read measured surfaces: instrument files -> :class:`~memstribo.roughness.Profile` or :class:`SurfaceMap`.
 
-Instrument formats go through SurfaceTopography (imported lazily, it takes seconds);
-memstribo reads a few formats itself where SurfaceTopography's result would be wrong for
-our use (see data/afm/README.md, "Reader notes and pitfalls"):
+Every format SurfaceTopography reads goes through it first (imported lazily, it takes
+seconds), with the file's channels, units and sizes: instrument files, and text or CSV files
+with an instrument header such as a Bruker Dektak CSV export. memstribo reads these itself
+(see data/afm/README.md, "Reader notes and pitfalls"):
 
-- plain x-z text/CSV (``#`` comments, whitespace or commas) and ``.npy`` (n x 2 or 2 x n)
-  profiles: own readers; heights in metres unless ``unit`` says otherwise;
+- plain numeric x-z (or z) text/CSV (``#`` comments, whitespace, commas or semicolons, one
+  optional line of column names whose units, ``x [um], z [nm]``, are honoured per axis) and
+  ``.npy`` (n x 2 or 2 x n) profiles: own strict readers (SurfaceTopography would silently
+  skip unreadable leading rows and ignore such a header); heights in metres unless ``unit``
+  says otherwise; text in UTF-8 with or without BOM, UTF-16, Latin-1, any line ends;
 - the one-line text export with an 11-line header ("Name : ... (128x128)", "Z Unit : nm"),
   e.g. ``topography_in_nanometers.txt``: own reader (SurfaceTopography returns a 16384 x 1 map);
 - contact.engineering containers (``.zip`` with ``meta.yml``): every member is opened on its
@@ -14,6 +18,11 @@ our use (see data/afm/README.md, "Reader notes and pitfalls"):
 - Park TIFF and every other SurfaceTopography map: SurfaceTopography's ``heights()`` is
   indexed [x, y]; memstribo stores (ny, nx) with rows = scan lines along x;
 - Asylum ``.ibw``: pixel size ScanSize / points (SurfaceTopography uses ScanSize / (points - 1)).
+
+A file that no reader takes gets one message: why it is not x-z text, what SurfaceTopography
+said for its format (one clause, never its list of every reader), what is supported. Text
+from the file is shown with control characters escaped. TIFF and Igor files cut short are
+refused even where the cut spares the heights.
 
 Every problem raises :class:`~memstribo.errors.DataFileError` naming the file and what is allowed.
 """
