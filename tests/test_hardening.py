@@ -103,6 +103,18 @@ def test_header_units_per_axis(tmp_path):
         read_topography(path)
 
 
+def test_units_in_the_comment_line_before_the_data(tmp_path):
+    text, x, z = _profile_text(x_scale=10.0, z_scale=2.0)
+    path = tmp_path / "commented.txt"
+    path.write_text("# my scan\n# x [um]   height [nm]\n" + text)
+    profile = read_topography(path)
+    np.testing.assert_allclose(profile.z, z * 1e-9, rtol=1e-15)
+    assert profile.sample_spacing == pytest.approx(10e-6)
+    path.write_text("# x [um]   height [nm]\n# more notes\n" + text)  # not right before the data: a note
+    with pytest.raises(DataFileError, match="unit is probably wrong"):
+        read_topography(path)
+
+
 def test_z_only_text_needs_physical_size(tmp_path):
     path = tmp_path / "z.txt"
     path.write_text("".join(f"{float(np.sin(i / 3) * 1e-9)!r}\n" for i in range(50)))

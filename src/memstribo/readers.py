@@ -335,10 +335,14 @@ def _plain_rows(text):
     names before the data, then only rows of 1 or 2 numbers (the x-z and z formats memstribo
     reads itself). Anything else (instrument headers, 3 or more columns) is another format.
     """
-    header, rows = None, []
+    header, rows, comment = None, [], None
     for line in text.split("\n"):
         stripped = line.strip()
-        if not stripped or stripped.startswith("#"):
+        if not stripped:
+            continue
+        if stripped.startswith("#"):
+            if not rows and header is None:
+                comment = stripped.lstrip("#").strip()
             continue
         if _NUMBER_ROW.match(stripped):
             rows.append(stripped)
@@ -351,6 +355,11 @@ def _plain_rows(text):
     widths = {len([f for f in _SPLIT.split(r.rstrip(",;")) if f]) for r in rows[:50]}
     if not widths <= {1, 2}:
         return None
+    if header is None and comment:
+        # a comment right before the data naming both columns' units in brackets: '# x [um], z [nm]'
+        units = re.findall(r"[\[(]\s*([A-Za-z\u00b5\u03bc\u00c5]+)\s*[\])]", comment)
+        if len(units) == 2 and all(u in LENGTH_UNITS for u in units):
+            header = comment
     return header, rows
 
 
@@ -360,7 +369,8 @@ def _header_units(header, path):
         return None, None
     fields = [f for f in re.split(r"\s*[,;\t]\s*", header.strip().strip(",;")) if f]
     if len(fields) != 2:
-        fields = header.split()
+        bracketed = [f.strip() for f in re.findall(r"[^\[\]()]*[\[(][^\])]*[\])]", header)]
+        fields = bracketed if len(bracketed) == 2 else header.split()
     units = []
     for field in fields[:2]:
         found = re.search(r"[\[(]\s*([^\])]*?)\s*[\])]", field)
