@@ -122,7 +122,7 @@ def test_spec_file_needs_a_study_table(tmp_path):
 
 # --- running ----------------------------------------------------------------------------------------
 
-SPEC = f"""
+SPEC = """
 [parameters]
 module = "3.9 um"
 
