@@ -41,3 +41,13 @@ def failing_point(params, **options):
     if params["normal_load"] > 100e-6:
         raise InputError("normal_load too high for this test function")
     return {"load": params["normal_load"]}
+
+
+def flaky_point(params, **options):
+    """Fails until the file named by MEMSTRIBO_TEST_FLAKY exists (resume must run failed points again)."""
+    from memstribo.errors import InputError
+
+    marker = os.environ.get("MEMSTRIBO_TEST_FLAKY")
+    if marker and not os.path.exists(marker):
+        raise InputError("not ready yet")
+    return {"load": params["normal_load"]}

@@ -274,9 +274,12 @@ def test_unreadable_text(tmp_path):
 
 
 def test_three_columns(tmp_path):
+    # three columns of numbers that are no x, y, z grid: SurfaceTopography reads them as a 10 x 3 height
+    # matrix (its .asc format), which gives no lateral size
     path = tmp_path / "three.txt"
-    path.write_text("\n".join(f"{i} {i} {i}" for i in range(10)))
-    with pytest.raises(DataFileError, match="3 columns"):
+    values = np.random.default_rng(1).random((10, 3))
+    path.write_text("\n".join(f"{a} {b} {c}" for a, b, c in values))
+    with pytest.raises(DataFileError, match="does not give its lateral size; give the scan size with --physical-size"):
         read_topography(path)
 
 

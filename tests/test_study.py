@@ -13,18 +13,27 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import _study_points
 from memstribo.errors import InputError
-from memstribo.study import load_study_spec, prepare_points, run_study, study_spec
+from memstribo.study import POINT_FUNCTIONS, load_study_spec, prepare_points, run_study, study_spec
 
 TESTS = Path(__file__).resolve().parent
-HERTZ = "_study_points:hertz_point"
+#: through the Python API a study runs any module-level function; spec files name registered ones ("hertz")
+HERTZ = _study_points.hertz_point
+
+#: `memstribo study` in a subprocess that first registers the test function as "hertz" (Python API)
+CLI_WITH_HERTZ = ("import sys, _study_points; from memstribo.study import register_point_function; "
+                  "register_point_function('hertz', _study_points.hertz_point); "
+                  "from memstribo.cli.main import main; sys.exit(main(sys.argv[1:]))")
 
 
 @pytest.fixture(autouse=True)
 def _workers_find_test_functions(monkeypatch):
-    """Dask worker processes import the test point functions from tests/ (spawned, via PYTHONPATH)."""
+    """Dask worker processes import the test point functions from tests/ (spawned, via PYTHONPATH);
+    spec files name the test function "hertz" (registered for the test only)."""
     monkeypatch.syspath_prepend(str(TESTS))
     monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(TESTS), os.environ.get("PYTHONPATH", "")]))
+    monkeypatch.setitem(POINT_FUNCTIONS, "hertz", _study_points.hertz_point)
 
 
 def write_spec(path: Path, body: str) -> Path:
@@ -71,6 +80,13 @@ def test_point_ids_are_stable_and_distinct(params):
     ({"function": HERTZ, "grid": {"roughness": ["no/such/file.txt"]}}, "does not exist"),
     ({"function": HERTZ, "grid": {"steps": [1]}}, "integer >= 2"),
     ({"function": HERTZ, "grid": {"seed": [1]}, "grdi": {}}, "unknown key.*grdi"),
+    ({"function": HERTZ, "grid": {"normal_load": [["25 uN"]]}}, "not a list"),
+    ({"function": HERTZ, "grid": {"normal_load": {"start": 1, "stop": 2, "num": 10**6}}}, "num = an integer"),
+    ({"function": HERTZ, "grid": {"seed": list(range(1000)), "module": list(range(1000))}}, "1,000,000 points"),
+    ({"function": HERTZ, "grid": {"seed": [1]}, "fixed": {"coating": "OST"}}, "unknown coating 'OST'.*OTS"),
+    ({"function": HERTZ, "grid": {"seed": [1]}, "name": 5}, "name must be a short text"),
+    ({"function": HERTZ, "grid": {"seed": [1]}, "fixed": ["x"]}, "must be tables"),
+    ({"function": HERTZ, "grid": {"steps": [10**7]}}, "<= 100000"),
 ])
 def test_bad_specs_raise_input_error(params, study, match):
     with pytest.raises(InputError, match=match):
@@ -78,12 +94,24 @@ def test_bad_specs_raise_input_error(params, study, match):
 
 
 def test_unknown_point_function_is_an_input_error(params, tmp_path):
-    spec = study_spec({"function": "mseh", "grid": {"seed": [1]}})
     with pytest.raises(InputError, match="unknown point function 'mseh'.*mesh"):
-        run_study(spec, tmp_path / "out", params)
-    spec = study_spec({"function": "no_such_module:f", "grid": {"seed": [1]}})
-    with pytest.raises(InputError, match="cannot import module"):
-        run_study(spec, tmp_path / "out", params)
+        study_spec({"function": "mseh", "grid": {"seed": [1]}})
+    with pytest.raises(InputError, match="unknown point function 'no_such_module:f'.*never code to import"):
+        study_spec({"function": "no_such_module:f", "grid": {"seed": [1]}})
+
+
+def test_spec_file_cannot_import_code(cli, tmp_path, monkeypatch):
+    """A data file must not run code: 'os:system' was once imported and called on a worker."""
+    import sys as _sys
+
+    monkeypatch.delitem(_sys.modules, "antigravity", raising=False)
+    spec = write_spec(tmp_path / "evil.toml", '[study]\nfunction = "antigravity:fly"\n[study.grid]\nseed = [1]\n')
+    code, out, err = cli("study", spec, "--out", tmp_path / "out")
+    assert code == 2 and "unknown point function 'antigravity:fly'" in err and "never code to import" in err
+    assert "antigravity" not in _sys.modules and not (tmp_path / "out").exists()
+    spec = write_spec(tmp_path / "os.toml", '[study]\nfunction = "os:system"\n[study.grid]\nseed = [1]\n')
+    code, out, err = cli("study", spec, "--dry-run")
+    assert code == 2 and "unknown point function 'os:system'" in err
 
 
 def test_spec_file_needs_a_study_table(tmp_path):
@@ -94,13 +122,13 @@ def test_spec_file_needs_a_study_table(tmp_path):
 
 # --- running ----------------------------------------------------------------------------------------
 
-SPEC = f"""
+SPEC = """
 [parameters]
 module = "3.9 um"
 
 [study]
 name = "hertz check"
-function = "{HERTZ}"
+function = "hertz"
 
 [study.grid]
 normal_load = ["25 uN", "50 uN", "100 uN"]
@@ -145,7 +173,7 @@ def test_rerun_needs_resume_and_resume_reuses_everything(params, tmp_path):
 
 
 def test_failed_points_are_recorded_and_the_study_goes_on(params, tmp_path):
-    spec = study_spec({"function": "_study_points:failing_point",
+    spec = study_spec({"function": _study_points.failing_point,
                        "grid": {"normal_load": ["50 uN", "200 uN"]}})
     result = run_study(spec, tmp_path / "out", params, workers=1)
     assert result.n_failed == 1 and result.n_points == 2
@@ -154,18 +182,33 @@ def test_failed_points_are_recorded_and_the_study_goes_on(params, tmp_path):
     assert result.dataset["error"].values[0] == "" and np.isnan(result.dataset["load"].values[1])
 
 
+def test_resume_runs_failed_points_again_and_says_how_many(params, tmp_path, monkeypatch, cli):
+    marker = tmp_path / "ready"
+    monkeypatch.setenv("MEMSTRIBO_TEST_FLAKY", str(marker))
+    monkeypatch.setitem(POINT_FUNCTIONS, "flaky", _study_points.flaky_point)
+    spec = write_spec(tmp_path / "s.toml", '[study]\nfunction = "flaky"\n[study.grid]\nnormal_load = ["25 uN", "50 uN"]\n')
+    first = cli.json("study", spec, "--out", tmp_path / "out", "--workers", "1")
+    assert (first["failed"], first["computed"], first["retried"]) == (2, 2, 0)
+    marker.write_text("")
+    code, out, err = cli("study", spec, "--out", tmp_path / "out", "--workers", "1", "--resume")
+    assert code == 0, err
+    assert "reran 2 point(s) that had failed in an earlier run" in out
+    again = cli.json("study", spec, "--out", tmp_path / "out", "--workers", "1", "--resume")
+    assert (again["failed"], again["computed"], again["reused"], again["retried"]) == (0, 0, 2, 0)
+
+
 def test_kill_9_then_resume_loses_no_point_and_computes_none_twice(tmp_path):
     """A real `memstribo study` process group is killed with SIGKILL mid-study, then resumed."""
     spec = write_spec(tmp_path / "s.toml", f"""
 [study]
 name = "kill test"
-function = "{HERTZ}"
+function = "hertz"
 [study.grid]
 seed = {list(range(12))}
 """)
     out = tmp_path / "out"
     env = {**os.environ, "MEMSTRIBO_TEST_POINT_DELAY": "0.4"}
-    command = [sys.executable, "-m", "memstribo.cli.main", "study", str(spec), "--out", str(out), "--workers", "1"]
+    command = [sys.executable, "-c", CLI_WITH_HERTZ, "study", str(spec), "--out", str(out), "--workers", "1"]
     process = subprocess.Popen(command, env=env, start_new_session=True,
                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     points = out / "points"

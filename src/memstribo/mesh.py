@@ -252,10 +252,6 @@ def normal_force_of_load_case(params, pair: GearPair) -> float:
     return f_t / math.cos(pair.pressure_angle)
 
 
-#: Largest number of contact elements times steps of one row that the simulation allocates (memory guard).
-MAX_ELEMENT_STEPS = 60_000_000
-
-
 def _prepare(params, roughness, steps, realisation=0) -> MeshSetup:
     from . import roughness as rough
 
@@ -289,10 +285,9 @@ def _prepare(params, roughness, steps, realisation=0) -> MeshSetup:
     n = int(round(window / dx))
     if n < 64:
         raise InputError(f"mesh_window / mesh_grid_spacing = {n}: at least 64 contact elements are needed.")
-    if n * steps > MAX_ELEMENT_STEPS:
-        raise InputError(f"the meshing cycle would solve {steps} steps of {n} contact elements "
-                         f"({n * steps * 8 * 12 / 1e9:.3g} GB of working arrays): at most {MAX_ELEMENT_STEPS:.3g} "
-                         "element-steps; use fewer mesh_steps or a coarser mesh_grid_spacing.")
+    from .parameters import check_mesh_size
+
+    check_mesh_size(steps, n * dx, dx, what="mesh_steps" if steps == params["mesh_steps"] else "steps")
     grid = (np.arange(n) - 0.5 * (n - 1)) * dx
     _, _, (lo1, hi1), (lo2, hi2) = _flank_ranges(pair, positions, n * dx + 2 * w_adh)
     needed = max(hi1 - lo1, hi2 - lo2)

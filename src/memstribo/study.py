@@ -16,7 +16,8 @@ state.
 Every finished point is written at once to ``OUT/points/<id>.json`` (temporary file,
 ``fsync``, atomic rename); ``OUT/study.json`` (the manifest) lists every point and a hash of
 the study. After an interruption, even ``kill -9``, rerunning with ``resume=True`` computes
-only the points that have no file yet: none is lost and none is computed twice. At the end
+only the points that have no file yet, and runs the failed points again: no finished point
+is lost and none is computed twice. At the end
 ``OUT/results.nc`` and ``OUT/results.csv`` gather all points.
 
 Spec file (TOML)::
@@ -26,7 +27,7 @@ Spec file (TOML)::
 
     [study]
     name = "load sweep"
-    function = "mesh"               # built-in name, or "package.module:function"
+    function = "mesh"               # a name of POINT_FUNCTIONS (memstribo's own point functions)
 
     [study.fixed]                   # optional: overrides for every point
     coating = "OTS"
@@ -60,9 +61,11 @@ import numpy as np
 
 from .errors import InputError, MemstriboError, did_you_mean
 from .output import dumps_json, ensure_directory, to_jsonable
+from .units import printable
 
-__all__ = ["StudySpec", "StudyResult", "STUDY_KEYS", "POINT_FUNCTIONS", "load_study_spec", "study_spec",
-           "prepare_points", "run_study", "evaluate_point", "mesh_point", "study_dataset"]
+__all__ = ["StudySpec", "StudyResult", "STUDY_KEYS", "POINT_FUNCTIONS", "MAX_STUDY_POINTS", "load_study_spec",
+           "study_spec", "prepare_points", "run_study", "evaluate_point", "mesh_point", "gear_point", "slide_point",
+           "register_point_function", "resolve_function", "function_name", "study_dataset"]
 
 #: Keys of a point that are not model parameters, with their unit and meaning.
 STUDY_KEYS: dict[str, tuple[str, str]] = {
@@ -75,6 +78,9 @@ STUDY_KEYS: dict[str, tuple[str, str]] = {
 
 #: How long to wait for an existing Dask scheduler before giving up.
 CONNECT_TIMEOUT = "10s"
+
+#: most points in one study (each holds its parameters: about 10 kB; the results more)
+MAX_STUDY_POINTS = 100_000
 
 POINTS_FOLDER = "points"
 MANIFEST = "study.json"
@@ -89,8 +95,9 @@ class StudySpec:
     ----------
     name : str
         Title of the study.
-    function : str
-        Point function: a name of :data:`POINT_FUNCTIONS` or ``"package.module:function"``.
+    function : str or callable
+        Point function: a name of :data:`POINT_FUNCTIONS` (the only choice of a spec file), or
+        through the Python API any importable module-level function.
     points : tuple of dict
         The points, each ``{key: value}`` with values as written (units allowed: ``"25 uN"``).
     parameters : dict
@@ -100,7 +107,7 @@ class StudySpec:
     """
 
     name: str
-    function: str
+    function: Any
     points: tuple[dict[str, Any], ...]
     parameters: dict[str, Any] = field(default_factory=dict)
     source: str = "python"
@@ -122,6 +129,8 @@ class StudyResult:
         Points found finished on disk (``resume``) and not computed again.
     n_failed : int
         Points whose function raised an error (recorded in their file, see ``errors``).
+    n_retried : int
+        Points that had failed in an earlier run and were run again by this one (``resume``).
     elapsed : float
         Wall time of this run [s].
     dataset : xarray.Dataset
@@ -138,28 +147,50 @@ class StudyResult:
     elapsed: float
     dataset: Any
     errors: dict[str, str]
+    n_retried: int = 0
 
 
 # --- spec ----------------------------------------------------------------------------------------
+
+def _check_scalar(key: str, value: Any, where: str) -> None:
+    """A point value is one number, string or boolean (not a table, not a list)."""
+    if isinstance(value, (Mapping, list, tuple)):
+        kind = "table" if isinstance(value, Mapping) else "list"
+        raise InputError(f"{where}: '{printable(key)}' = {printable(repr(value), 60)}: a point value is one number or "
+                         f"string, not a {kind}.")
+    if not isinstance(value, (str, int, float, bool)):
+        raise InputError(f"{where}: '{printable(key)}' has a value of type {type(value).__name__}; give a number or "
+                         "a string.")
+
 
 def _expand_values(key: str, values: Any, where: str) -> list[Any]:
     if isinstance(values, Mapping):
         unknown = set(values) - {"start", "stop", "num"}
         if unknown or not {"start", "stop", "num"} <= set(values):
-            raise InputError(f"{where}: range '{key}' must be a table {{start, stop, num}}, got {dict(values)}.")
+            raise InputError(f"{where}: range '{printable(key)}' must be a table {{start, stop, num}}, got "
+                             f"{printable(repr(dict(values)), 80)}.")
         unit = _unit_of(key)
         from .units import to_si
 
-        start = to_si(values["start"], unit, key)
-        stop = to_si(values["stop"], unit, key)
+        try:
+            start = to_si(values["start"], unit, key)
+            stop = to_si(values["stop"], unit, key)
+        except InputError as exc:
+            raise InputError(f"{where}: range '{printable(key)}': {exc}") from None
         num = values["num"]
-        if not isinstance(num, int) or isinstance(num, bool) or num < 1:
-            raise InputError(f"{where}: range '{key}' needs num = a positive integer, got {num!r}.")
+        if not isinstance(num, int) or isinstance(num, bool) or not 1 <= num <= MAX_STUDY_POINTS:
+            raise InputError(f"{where}: range '{printable(key)}' needs num = an integer from 1 to "
+                             f"{MAX_STUDY_POINTS:,}, got {printable(repr(num), 40)}.")
         return [float(v) for v in np.linspace(start, stop, num)]
     if isinstance(values, list):
         if not values:
-            raise InputError(f"{where}: '{key}' has an empty list of values.")
+            raise InputError(f"{where}: '{printable(key)}' has an empty list of values.")
+        if len(values) > MAX_STUDY_POINTS:
+            raise InputError(f"{where}: '{printable(key)}' lists {len(values):,} values; at most {MAX_STUDY_POINTS:,}.")
+        for value in values:
+            _check_scalar(key, value, where)
         return list(values)
+    _check_scalar(key, values, where)
     return [values]
 
 
@@ -177,47 +208,79 @@ def study_spec(study: Mapping[str, Any], parameters: Mapping[str, Any] | None = 
                source: str = "python") -> StudySpec:
     """Build a :class:`StudySpec` from the ``[study]`` table of a spec file (as a dict).
 
+    ``study["function"]`` is a name of :data:`POINT_FUNCTIONS` (default ``"mesh"``); through
+    the Python API (``source="python"``) it may also be a callable (a module-level function,
+    so that the Dask workers can import it). A spec file never names code to import.
+
     Raises
     ------
     InputError
-        Unknown keys, empty grids, or neither a grid nor a list of points.
+        Unknown keys, wrong types, empty grids, more than :data:`MAX_STUDY_POINTS` points,
+        neither a grid nor a list of points, or a function that is not a registered name.
     """
-    where = f"study spec {source}"
+    where = f"study spec {printable(source, 200)}"
+    if not isinstance(study, Mapping):
+        raise InputError(f"{where}: [study] must be a table.")
     allowed = {"name", "function", "fixed", "grid", "points"}
-    unknown = sorted(set(study) - allowed)
+    unknown = sorted(str(k) for k in set(study) - allowed)
     if unknown:
-        raise InputError(f"{where}: unknown key(s) {unknown} in [study]; allowed: {sorted(allowed)}."
-                         f"{did_you_mean(unknown[0], allowed)}")
-    fixed = dict(study.get("fixed", {}))
+        raise InputError(f"{where}: unknown key(s) {[printable(k) for k in unknown]} in [study]; allowed: "
+                         f"{sorted(allowed)}.{did_you_mean(unknown[0], allowed)}")
+    fixed = study.get("fixed", {})
     grid = study.get("grid", {})
     listed = study.get("points", [])
     if not isinstance(grid, Mapping) or not isinstance(listed, list) or not isinstance(fixed, Mapping):
         raise InputError(f"{where}: [study.grid] and [study.fixed] must be tables, [[study.points]] a list of tables.")
+    name = study.get("name", "study")
+    if not isinstance(name, str) or not name.strip() or len(name) > 200:
+        raise InputError(f"{where}: name must be a short text (1 to 200 characters), got {printable(repr(name), 60)}.")
     if not grid and not listed:
         raise InputError(f"{where}: no points: give a [study.grid] table and/or [[study.points]] tables.")
+    for key, value in fixed.items():
+        _check_scalar(key, value, f"{where} [study.fixed]")
+    axes = [(key, _expand_values(key, values, where)) for key, values in grid.items()]
+    n_points = int(np.prod([len(values) for _, values in axes], dtype=float)) if axes else 0
+    n_points += len(listed)
+    if n_points > MAX_STUDY_POINTS:
+        raise InputError(f"{where}: {n_points:,} points; a study holds at most {MAX_STUDY_POINTS:,} (split it, or use "
+                         "fewer grid values).")
     points: list[dict[str, Any]] = []
-    if grid:
-        axes = [(key, _expand_values(key, values, where)) for key, values in grid.items()]
+    if axes:
         for combination in itertools.product(*(values for _, values in axes)):
             points.append({**fixed, **dict(zip((key for key, _ in axes), combination))})
     for entry in listed:
         if not isinstance(entry, Mapping):
-            raise InputError(f"{where}: every [[study.points]] entry must be a table, got {entry!r}.")
+            raise InputError(f"{where}: every [[study.points]] entry must be a table, got {printable(repr(entry), 60)}.")
+        for key, value in entry.items():
+            _check_scalar(key, value, f"{where} [[study.points]]")
         points.append({**fixed, **entry})
     function = study.get("function", "mesh")
-    if not isinstance(function, str):
-        raise InputError(f"{where}: function must be a name, e.g. 'mesh', got {function!r}.")
-    return StudySpec(name=str(study.get("name", "study")), function=function, points=tuple(points),
+    if callable(function):  # the Python API (a TOML file holds no callables)
+        pass
+    elif not isinstance(function, str):
+        raise InputError(f"{where}: function must be the name of a point function, one of {sorted(POINT_FUNCTIONS)}, "
+                         f"got {printable(repr(function), 60)}.")
+    elif function not in POINT_FUNCTIONS:
+        hint = did_you_mean(function, POINT_FUNCTIONS)
+        code = (" A study spec names one of memstribo's point functions, never code to import; a function of your "
+                "own runs through the Python API (study_spec({'function': my_function, ...}), run_study)."
+                if ":" in function or "." in function else "")
+        raise InputError(f"{where}: unknown point function '{printable(function, 60)}'; use one of "
+                         f"{sorted(POINT_FUNCTIONS)}.{hint}{code}")
+    return StudySpec(name=name, function=function, points=tuple(points),
                      parameters=dict(parameters or {}), source=source)
 
 
 def load_study_spec(path: str | Path) -> StudySpec:
-    """Read a study spec TOML file (``[study]`` table, optional ``[parameters]``)."""
+    """Read a study spec TOML file (``[study]`` table, optional ``[parameters]``), validated whole."""
     from .parameters import read_config
 
     config = read_config(path)
     if "study" not in config:
-        raise InputError(f"study spec '{path}' has no [study] table; see 'memstribo study --help'.")
+        raise InputError(f"study spec '{printable(path, 200)}' has no [study] table; see 'memstribo study --help'.")
+    if "run" in config:
+        raise InputError(f"study spec '{printable(path, 200)}' has a [run] table; a study spec holds [study] and "
+                         "[parameters] only.")
     return study_spec(config["study"], config.get("parameters"), source=str(path))
 
 
@@ -253,7 +316,13 @@ def _point_options(raw: Mapping[str, Any], where: str, base_folder: Path | None)
     if coating is None or str(coating).strip().lower() in ("none", "bare", ""):
         clean["coating"] = None
     else:
-        clean["coating"] = str(coating)
+        from .coating import available_coatings
+
+        known = available_coatings()
+        if not isinstance(coating, str) or coating not in known:
+            raise InputError(f"{where}: unknown coating '{printable(coating, 40)}'; use one of {known} or 'none'."
+                             f"{did_you_mean(str(coating), known)}")
+        clean["coating"] = coating
     if "wear" in options:
         wear = to_si(options["wear"], "", "wear")
         if not 0.0 <= wear <= 1.0:
@@ -271,12 +340,12 @@ def _point_options(raw: Mapping[str, Any], where: str, base_folder: Path | None)
         if not path.is_absolute() and base_folder is not None:
             path = base_folder / path
         if not path.is_file():
-            raise InputError(f"{where}: roughness file '{roughness}' does not exist.")
+            raise InputError(f"{where}: roughness file '{printable(roughness, 200)}' does not exist.")
         clean["roughness"] = str(path.resolve())
     if "steps" in options:
         steps = options["steps"]
-        if not isinstance(steps, int) or isinstance(steps, bool) or steps < 2:
-            raise InputError(f"{where}: steps = {steps!r} must be an integer >= 2.")
+        if not isinstance(steps, int) or isinstance(steps, bool) or not 2 <= steps <= 100_000:
+            raise InputError(f"{where}: steps = {printable(repr(steps), 40)} must be an integer >= 2 and <= 100000.")
         clean["steps"] = steps
     else:
         clean["steps"] = None
@@ -296,18 +365,28 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
     points = []
     for index, raw in enumerate(spec.points):
         where = f"study point {index} ({_describe(raw)})"
+        if spec.source != "python":
+            where = f"study spec {printable(spec.source, 200)}: {where}"
         overrides, options = _point_options(raw, where, base_folder)
         try:
             point_params = base.updated(overrides, origin=f"study point {index}") if overrides else base
         except InputError as exc:
             raise InputError(f"{where}: {exc}") from None
+        if options.get("steps") is not None and "mesh_window" in point_params:
+            from .parameters import check_mesh_size
+
+            try:
+                check_mesh_size(options["steps"], point_params["mesh_window"], point_params["mesh_grid_spacing"],
+                                what="steps")
+            except InputError as exc:
+                raise InputError(f"{where}: {exc}") from None
         digest = _hash({"inputs": raw, "parameters": point_params.to_dict(), "options": options})[:10]
         points.append(_Point(f"p{index:06d}-{digest}", index, dict(raw), point_params, options))
     return points
 
 
 def _describe(raw: Mapping[str, Any]) -> str:
-    return ", ".join(f"{k}={v}" for k, v in raw.items()) or "base parameters"
+    return printable(", ".join(f"{k}={v}" for k, v in raw.items()), 120) or "base parameters"
 
 
 def _hash(value: Any) -> str:
@@ -359,30 +438,78 @@ def mesh_point(params, coating: str | None = None, wear: float = 1.0, roughness:
     return mesh.summarize(dataset)
 
 
-#: Built-in point functions by name.
-POINT_FUNCTIONS: dict[str, str] = {
+def gear_point(params, coating: str | None = None, wear: float = 1.0, roughness: str | None = None,
+               steps: int | None = None) -> dict[str, Any]:
+    """Gear geometry and the pitch-point Hertz contact of one point (``memstribo gear --json``; fast)."""
+    if coating is not None or roughness is not None or steps is not None:
+        raise InputError("point function 'gear' takes no coating, roughness or steps (it is the smooth pair).")
+    from .gear import gear_summary
+
+    values, _ = gear_summary(params)
+    return values
+
+
+def slide_point(params, coating: str | None = None, wear: float = 1.0, roughness: str | None = None,
+                steps: int | None = None) -> dict[str, Any]:
+    """The fixed-load flat-friction slide of one point (``memstribo slide --json``): COF, forces, energies."""
+    if coating is not None or steps is not None:
+        raise InputError("point function 'slide' takes no coating or steps (set sliding_step for the step).")
+    from . import sliding
+
+    return sliding.summarize(sliding.slide("fixed-load", params, _read_roughness(roughness))).to_dict()
+
+
+#: memstribo's own point functions, by name: the only ones a study spec file may name.
+#: ``register_point_function`` adds one through the Python API (in this process).
+POINT_FUNCTIONS: dict[str, Callable | str] = {
     "mesh": "memstribo.study:mesh_point",
+    "gear": "memstribo.study:gear_point",
+    "slide": "memstribo.study:slide_point",
 }
 
+_UNITS_OF = {"slide": ("memstribo.sliding", "UNITS")}
 
-def resolve_function(name: str) -> Callable:
-    """The point function called ``name`` (built-in name or ``"package.module:function"``)."""
-    target = POINT_FUNCTIONS.get(name, name)
-    module_name, sep, attribute = target.partition(":")
-    if not sep or not module_name or not attribute:
-        raise InputError(f"unknown point function {name!r}: use one of {sorted(POINT_FUNCTIONS)} or "
-                         f"'package.module:function'.{did_you_mean(name, POINT_FUNCTIONS)}")
-    try:
-        module = importlib.import_module(module_name)
-    except ImportError as exc:
-        raise InputError(f"point function {name!r}: cannot import module '{module_name}': {exc}") from None
-    function = getattr(module, attribute, None)
+
+def register_point_function(name: str, function: Callable) -> None:
+    """Make ``function`` available to study specs as ``name`` (Python API; this process only).
+
+    ``function(params, coating=None, wear=1.0, roughness=None, steps=None) -> dict`` must be a
+    module-level function that the Dask workers can import. Give it a ``units`` dict attribute
+    to label the results.
+    """
+    if not isinstance(name, str) or not name.isidentifier():
+        raise InputError(f"point function name {name!r} must be an identifier.")
     if not callable(function):
-        raise InputError(f"point function {name!r}: '{module_name}' has no function '{attribute}'.")
-    return function
+        raise InputError(f"point function {name!r} must be callable, got {type(function).__name__}.")
+    POINT_FUNCTIONS[name] = function
 
 
-def evaluate_point(function_name: str, params, options: Mapping[str, Any]) -> dict[str, Any]:
+def function_name(function) -> str:
+    """A stable name of a point function (registry name, or ``module:qualname`` of a callable)."""
+    if isinstance(function, str):
+        return function
+    return f"{getattr(function, '__module__', '?')}:{getattr(function, '__qualname__', repr(function))}"
+
+
+def resolve_function(function) -> Callable:
+    """The point function ``function``: a callable as it is, or a name of :data:`POINT_FUNCTIONS`.
+
+    Names resolve only through the registry (memstribo's own modules): a string never makes
+    memstribo import a module it names.
+    """
+    if callable(function):
+        return function
+    target = POINT_FUNCTIONS.get(function) if isinstance(function, str) else None
+    if target is None:
+        raise InputError(f"unknown point function '{printable(function, 60)}': use one of {sorted(POINT_FUNCTIONS)}."
+                         f"{did_you_mean(str(function), POINT_FUNCTIONS)}")
+    if callable(target):
+        return target
+    module_name, _, attribute = target.partition(":")
+    return getattr(importlib.import_module(module_name), attribute)
+
+
+def evaluate_point(function, params, options: Mapping[str, Any]) -> dict[str, Any]:
     """Run one point (on a worker): ``{"values": {...}, "error": None or message, "seconds": ...}``.
 
     Model errors (:class:`memstribo.errors.MemstriboError`) are recorded, not raised, so that
@@ -393,10 +520,11 @@ def evaluate_point(function_name: str, params, options: Mapping[str, Any]) -> di
     reset_used_references()
     start = time.perf_counter()
     try:
-        function = resolve_function(function_name)
+        name = function_name(function)
+        function = resolve_function(function)
         values = function(params, **options)
         if not isinstance(values, Mapping):
-            raise InputError(f"point function {function_name!r} returned {type(values).__name__}, not a dict.")
+            raise InputError(f"point function {name!r} returned {type(values).__name__}, not a dict.")
         values = {str(k): to_jsonable(v) for k, v in values.items()}
         error = None
     except MemstriboError as exc:
@@ -484,10 +612,10 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     params = params if params is not None else get_parameter_values()
     if workers is not None and (not isinstance(workers, int) or workers < 1):
         raise InputError(f"workers = {workers!r}: give a positive integer.")
-    resolve_function(spec.function)  # fail early on a bad name
+    function = resolve_function(spec.function)  # fail early on a bad name
     points = prepare_points(spec, params)
     folder = ensure_directory(out)
-    study_hash = _hash({"function": spec.function, "points": [[p.id, p.inputs] for p in points],
+    study_hash = _hash({"function": function_name(spec.function), "points": [[p.id, p.inputs] for p in points],
                         "parameters": params.to_dict(), "base": spec.parameters})
     manifest_path = folder / MANIFEST
     if manifest_path.exists():
@@ -502,17 +630,20 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
                              "parameters); choose another --out.")
     else:
         _write_json_atomic(manifest_path, {
-            "format": FORMAT_VERSION, "name": spec.name, "function": spec.function, "source": spec.source,
+            "format": FORMAT_VERSION, "name": spec.name, "function": function_name(spec.function),
+            "source": spec.source,
             "hash": study_hash, "parameter_set": params.name, "base_overrides": spec.parameters,
             "points": [{"id": p.id, "index": p.index, "inputs": p.inputs} for p in points],
         })
     ensure_directory(folder / POINTS_FOLDER)
     by_id = {p.id: p for p in points}
-    done = _finished_points(folder, set(by_id))
+    finished = _finished_points(folder, set(by_id))
+    done = {pid: record for pid, record in finished.items() if not record.get("error")}
+    n_retried = len(finished) - len(done)  # failed in an earlier run: run again (the model or inputs may be fixed)
     todo = [p for p in points if p.id not in done]
     n_computed = 0
     if todo:
-        n_computed = _compute(spec, todo, folder, len(points), len(done), scheduler, workers, progress)
+        n_computed = _compute(spec, function, todo, folder, len(points), len(done), scheduler, workers, progress)
     records = _finished_points(folder, set(by_id))
     missing = sorted(set(by_id) - set(records))
     if missing:  # cannot happen unless files vanished while running
@@ -524,10 +655,10 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     write_dataset(dataset, folder, "results")
     errors = {r["id"]: r["error"] for r in ordered if r.get("error")}
     return StudyResult(folder, len(points), n_computed, len(done), len(errors), time.perf_counter() - start,
-                       dataset, errors)
+                       dataset, errors, n_retried)
 
 
-def _compute(spec, todo, folder, total, already, scheduler, workers, progress) -> int:
+def _compute(spec, function, todo, folder, total, already, scheduler, workers, progress) -> int:
     from distributed import as_completed
     from tqdm import tqdm
 
@@ -538,7 +669,7 @@ def _compute(spec, todo, folder, total, already, scheduler, workers, progress) -
     try:
         futures = {}
         for point in todo:
-            future = client.submit(evaluate_point, spec.function, point.params, point.options,
+            future = client.submit(evaluate_point, function, point.params, point.options,
                                    key=f"memstribo-{point.id}-{os.getpid()}", pure=False)
             futures[future] = point
         for future in as_completed(list(futures), loop=client.loop):
@@ -602,7 +733,7 @@ def study_dataset(records: list[dict], spec: StudySpec | None = None, points: li
                          coords={"point": ("point", np.arange(n)), "point_id": ("point", ids)})
     dataset.attrs["title"] = spec.name if spec else "study"
     if spec is not None:
-        dataset.attrs["point_function"] = spec.function
+        dataset.attrs["point_function"] = function_name(spec.function)
     return dataset
 
 
@@ -633,6 +764,10 @@ def _result_units(spec: StudySpec | None) -> dict[str, str]:
     except InputError:
         return {}
     units = getattr(function, "units", None)
+    if units is None and spec.function in _UNITS_OF:
+        module_name, attribute = _UNITS_OF[spec.function]
+        if attribute:
+            units = getattr(importlib.import_module(module_name), attribute, None)
     if units is None and spec.function == "mesh":
         try:
             from . import mesh

@@ -14,7 +14,7 @@ import re
 
 from .errors import InputError
 
-_PLAIN_NUMBER = re.compile(r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*$")
+_PLAIN_NUMBER = re.compile(r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*$", re.ASCII)
 
 
 @functools.lru_cache(maxsize=1)
@@ -55,7 +55,7 @@ def to_si(value, unit: str, name: str = "value") -> float:
     elif isinstance(value, str):
         text = value.strip()
         if text.lower() in ("nan", "inf", "+inf", "-inf", "infinity", "-infinity"):
-            raise InputError(f"{name}: must be a finite number, got {value!r}.")
+            raise InputError(f"{name}: must be a finite number, got '{printable(value)}'.")
         if _PLAIN_NUMBER.match(text):
             result = float(text)
         else:
@@ -64,31 +64,59 @@ def to_si(value, unit: str, name: str = "value") -> float:
         try:
             result = float(value)
         except (TypeError, ValueError):
-            raise InputError(f"{name}: expected a number or a quantity string like '25 uN', got {value!r}.") from None
+            raise InputError(f"{name}: expected a number or a quantity string like '25 uN', "
+                             f"got {printable(repr(value))}.") from None
     if not math.isfinite(result):
-        raise InputError(f"{name}: must be a finite number, got {value!r}.")
+        raise InputError(f"{name}: must be a finite number, got {printable(repr(value))}.")
     return result
 
 
-def _parse_quantity(text: str, unit: str, name: str) -> float:
-    import pint
+#: a quantity string: one number, then a unit expression (no second number, no bare unit)
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)?\s*$", re.ASCII)
 
+#: characters a unit expression may hold (pint syntax: names, *, /, ^, **, parentheses, digits of powers)
+_UNIT_TEXT = re.compile(r"^[A-Za-z_\u00b5\u03bc\u00b0%Ω][A-Za-z0-9_\u00b5\u03bc\u00b0%Ω*/^ ().-]*$")
+
+
+def printable(text, limit: int = 80) -> str:
+    """``text`` with every non-printable character escaped (``\\x1b``), cut to ``limit`` characters.
+
+    Anything a user typed or a file held is shown through this before it reaches a message:
+    a crafted value cannot write terminal escape sequences.
+    """
+    text = str(text)
+    out = "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
+    return out if len(out) <= limit else out[: limit - 3] + "..."
+
+
+def _parse_quantity(text: str, unit: str, name: str) -> float:
+    example = "e.g. '25 uN', '195.5 nm', '20 deg'"
+    shown = printable(text)
+    match = _QUANTITY.match(text)
+    if not match:
+        raise InputError(f"{name}: cannot read '{shown}' as a quantity: it must start with a number. "
+                         f"Give a number in SI ({unit or 'dimensionless'}) or a number with a unit, {example}.")
+    number, unit_text = match.group(1), (match.group(2) or "")
+    unit_text = unit_text.replace("µ", "u").replace("μ", "u").replace("°", "deg").strip()
+    if not _UNIT_TEXT.match(unit_text):
+        raise InputError(f"{name}: cannot read '{shown}' as a quantity: '{printable(unit_text)}' is not a unit. "
+                         f"Give a number in SI ({unit or 'dimensionless'}) or a number with a unit, {example}.")
     ureg = _registry()
-    # "25uN" -> "25 uN": pint needs no space, but "1e-9m" style strings parse better with one.
-    spaced = re.sub(r"^([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*([A-Za-zµμ°%])", r"\1 \2", text)
-    spaced = spaced.replace("µ", "u").replace("μ", "u").replace("°", " deg")
     try:
-        quantity = ureg.Quantity(spaced)
-    except (pint.errors.PintError, ValueError, TypeError, AttributeError, SyntaxError) as exc:
-        raise InputError(
-            f"{name}: cannot read {text!r} as a quantity ({exc}). "
-            f"Give a number in SI ({unit or 'dimensionless'}) or a value with a unit, e.g. '25 uN', '195.5 nm', '20 deg'."
-        ) from None
+        units = ureg.parse_units(unit_text)
+        quantity = ureg.Quantity(float(number), units)
+    except Exception:  # pint raises many types (AssertionError, ZeroDivisionError, TokenError, ...) on odd text
+        raise InputError(f"{name}: cannot read '{shown}' as a quantity: '{printable(unit_text)}' is not a unit "
+                         f"pint knows. Give a number in SI ({unit or 'dimensionless'}) or a number with a unit, "
+                         f"{example}.") from None
     target = unit or "dimensionless"
     try:
         # round off the last-bit noise of unit conversion (25 uN -> 2.5e-05, not 2.4999...e-05)
-        return float(f"{float(quantity.to(target).magnitude):.15g}")
-    except pint.errors.DimensionalityError:
+        value = float(quantity.to(target).magnitude)
+    except Exception:  # DimensionalityError, or an offset unit
         raise InputError(
-            f"{name}: {text!r} has units of {quantity.units:~}, but {name} needs units convertible to {target}."
+            f"{name}: '{shown}' has units of {units:~}, but {name} needs units convertible to {target}."
         ) from None
+    if not math.isfinite(value):
+        raise InputError(f"{name}: '{shown}' is not a finite number in {target}.")
+    return float(f"{value:.15g}")

@@ -29,12 +29,21 @@ def run(args, params):
     from ..errors import InputError
     from ..units import to_si
 
+    from ..parameters import coerce_value
+
+    def option(text, parameter, name):
+        try:
+            return coerce_value(parameter, text)
+        except InputError as exc:
+            raise InputError(f"{name}: {exc}") from None
+
     load = to_si(args.load, "N", "--load")
     if load <= 0:
-        raise InputError(f"--load must be > 0 N, got {args.load!r}.")
-    degree = params["asperity_degree"] if args.degree is None else to_si(args.degree, "", "--degree")
+        raise InputError(f"--load must be > 0 N, got '{args.load}'.")
+    load = option(args.load, "normal_load", "--load")  # an asperity carries at most what a tooth does
+    degree = params["asperity_degree"] if args.degree is None else option(args.degree, "asperity_degree", "--degree")
     coefficient = (params["asperity_shape_coefficient"] if args.shape_coefficient is None
-                   else to_si(args.shape_coefficient, "", "--shape-coefficient"))
+                   else option(args.shape_coefficient, "asperity_shape_coefficient", "--shape-coefficient"))
     modulus = _contact_modulus_from(params)
     notes = [f"  power-law asperity d = {degree:g}, B = {coefficient:g} m^({1 - degree:g}), E* = {modulus / 1e9:.5g} GPa"]
     values = {}

@@ -44,8 +44,9 @@ def run(args, params):
     pull_off = constants.pull_off_force_block
     if args.half_width is not None:
         half_width = to_si(args.half_width, "m", "--half-width")
-        if half_width <= 0:
-            raise InputError(f"--half-width must be > 0 (a length such as '97.5 nm'), got {args.half_width!r}.")
+        if not 1e-10 <= half_width <= 1e-3:
+            raise InputError(f"--half-width must be a length from 0.1 nm to 1 mm (e.g. '97.5 nm'), got "
+                             f"'{args.half_width}'.")
         pull_off = pull_off_force(constants.work_of_adhesion, constants.contact_modulus,
                                   constants.no_slip_coefficient, half_width)
     values = {

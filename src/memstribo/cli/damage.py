@@ -46,9 +46,18 @@ def parse_loads(text) -> list[float]:
     items = [item.strip() for item in str(text).split(",")]
     if any(item == "" for item in items):
         raise InputError(f"--loads must be a comma-separated list of loads > 0 N, got {text!r}.")
+    if len(items) > 10_000:
+        raise InputError(f"--loads: {len(items)} loads; give at most 10 000 (they repeat to peaks_per_cycle anyway).")
     loads = [to_si(item, "N", "--loads") for item in items]
     if any(load <= 0 for load in loads):
         raise InputError(f"--loads must all be > 0 N, got {text!r}.")
+    from ..parameters import coerce_value
+
+    for item in items:  # a nanoblock carries at most what a tooth does
+        try:
+            coerce_value("normal_load", item)
+        except InputError as exc:
+            raise InputError(f"--loads: {exc}") from None
     return loads
 
 
@@ -63,12 +72,16 @@ def run(args, params):
 
     params = apply_load_case(args, params)
     loads = parse_loads(args.loads) if args.loads is not None else None
-    if args.observed_life is not None and not (np.isfinite(args.observed_life) and args.observed_life > 0):
-        raise InputError(f"--observed-life must be a number of cycles > 0, got {args.observed_life!r}.")
-    if args.wear_points < 2:
-        raise InputError(f"--wear-points must be >= 2, got {args.wear_points}.")
-    if args.steps is not None and args.steps < 2:
-        raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
+    if args.observed_life is not None and not (np.isfinite(args.observed_life) and 1 <= args.observed_life <= 1e20):
+        raise InputError(f"--observed-life must be a number of cycles from 1 to 1e20, got {args.observed_life!r}.")
+    if not 2 <= args.wear_points <= 1001:
+        raise InputError(f"--wear-points must be from 2 to 1001, got {args.wear_points}.")
+    if args.steps is not None and not 2 <= args.steps <= 100_000:
+        raise InputError(f"--steps must be an integer from 2 to 100 000, got {args.steps}.")
+    if args.steps is not None:
+        from ..parameters import check_mesh_size
+
+        check_mesh_size(args.steps, params["mesh_window"], params["mesh_grid_spacing"], what="--steps")
     coating = get_coating(args.coating)
     c1_known = params["damage_coefficient"] is not None or args.observed_life is not None
     mesh_dataset = None

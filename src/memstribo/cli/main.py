@@ -6,6 +6,7 @@ import argparse
 import importlib
 import os
 import pkgutil
+import re
 import sys
 from types import ModuleType
 
@@ -39,9 +40,32 @@ def _command_modules() -> list[ModuleType]:
     return sorted(modules, key=lambda m: (getattr(m, "ORDER", 100), m.NAME))
 
 
+#: an option value that starts with a minus sign and a digit ("-5uN", "-.5 nm") is a value, not an option
+_NEGATIVE_VALUE = re.compile(r"^-\.?\d")
+
+
+def _printable(text: str) -> str:
+    """``text`` with control characters (terminal escape sequences, ...) escaped; newlines kept."""
+    return "\n".join("".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in line)
+                     for line in str(text).split("\n"))
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with a short usage error: one line naming the problem and where the options are listed."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # argparse takes "-5uN" for an option; memstribo has no option that starts with a digit
+        self._negative_number_matcher = _NEGATIVE_VALUE
+
+    def error(self, message):
+        self.exit(EXIT_USAGE, f"{self.prog}: error: {_printable(message)}\nRun '{self.prog} --help' for the "
+                              "options.\n")
+
+
 def common_options() -> argparse.ArgumentParser:
     """Options every subcommand takes: --json, --set, --config, --parameter-set."""
-    parent = argparse.ArgumentParser(add_help=False)
+    parent = _Parser(add_help=False)
     group = parent.add_argument_group("parameters and output")
     group.add_argument("--json", action="store_true", help="print exactly one JSON object of SI values")
     group.add_argument("--set", dest="overrides", action="append", default=[], metavar="NAME=VALUE",
@@ -53,8 +77,8 @@ def common_options() -> argparse.ArgumentParser:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="memstribo", description=DESCRIPTION, epilog=EPILOG,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = _Parser(prog="memstribo", description=DESCRIPTION, epilog=EPILOG,
+                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"memstribo {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
     parents = [common_options()]
@@ -89,7 +113,12 @@ def main(argv: list[str] | None = None) -> int:
         params = load_parameters(args)
         result = args.handler(args, params)
     except MemstriboError as exc:
-        print(f"memstribo {args.command}: error: {exc}", file=sys.stderr)
+        print(f"memstribo {args.command}: error: {_printable(exc)}", file=sys.stderr)
+        return EXIT_USAGE
+    except MemoryError:
+        print(f"memstribo {args.command}: error: not enough memory for these inputs (steps, grid spacing, "
+              "resample step or study size ask for larger arrays than this machine holds); reduce them.",
+              file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
         print(f"memstribo {args.command}: interrupted", file=sys.stderr)
@@ -97,7 +126,7 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as exc:  # a bug: say so briefly, full traceback on request
         if os.environ.get("MEMSTRIBO_DEBUG"):
             raise
-        print(f"memstribo {args.command}: internal error: {type(exc).__name__}: {exc}\n"
+        print(f"memstribo {args.command}: internal error: {type(exc).__name__}: {_printable(exc)}\n"
               "This is a bug in memstribo; rerun with MEMSTRIBO_DEBUG=1 for the traceback and report it.",
               file=sys.stderr)
         return 1

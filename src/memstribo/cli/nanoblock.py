@@ -21,6 +21,8 @@ def register(subparsers, parents):
                         help="derive the geometry from this file (or 'thesis': the default synthetic profile)")
     parser.add_argument("--channel", metavar="NAME", help="channel name or chN (for --from)")
     parser.add_argument("--unit", metavar="U", help="unit of x and heights for files that do not say (for --from)")
+    parser.add_argument("--physical-size", metavar="SIZE",
+                        help="lateral size of a file that does not give one (for --from): '10 um' or '10 um, 5 um'")
     parser.set_defaults(handler=run)
 
 
@@ -40,7 +42,8 @@ def run(args, params):
             notes.append("SYNTHETIC profile: the thesis's AFM scan is not published (seeded Gaussian profile with the "
                          "chapter-4 statistics).")
         else:
-            surface = read_topography(args.source, channel=args.channel, unit=args.unit)
+            surface = read_topography(args.source, channel=args.channel, unit=args.unit,
+                                      physical_size=args.physical_size)
         geometry = nanoblock_geometry_from_profile(surface, bulk_height=params["bulk_height"])
         title = f"nanoblock geometry derived from {surface.name}"
     values = geometry.to_dict()

@@ -28,5 +28,7 @@ def run(args, params):
         spec, value = SPECS[name], params[name]
         shown = "unset (derived)" if value is None else format_quantity(value, spec.unit)
         lines.append(f"  {name:<28} {shown:<16} {spec.description}")
+        if spec.kind in ("float", "int"):
+            lines.append(f"  {'':<28} allowed: {spec.allowed()}" + (f"; {spec.why}" if spec.why else ""))
         lines.append(f"  {'':<28} source: {params.source(name)}")
     return CommandResult(values={}, title=f"parameter set '{params.name}'", notes=lines)

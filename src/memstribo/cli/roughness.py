@@ -24,6 +24,9 @@ def register(subparsers, parents):
     parser.add_argument("--resample", metavar="STEP", help="PCHIP-resample to this step first ('39 nm' or metres)")
     parser.add_argument("--channel", metavar="NAME", help="channel name or chN; for a .zip a member name (or part)")
     parser.add_argument("--unit", metavar="U", help="unit of x and heights for files that do not say (m, mm, um, nm)")
+    parser.add_argument("--physical-size", metavar="SIZE",
+                        help="lateral size of a file that does not give one: '10 um' (profile or square map) or "
+                             "'10 um, 5 um' (map)")
     parser.add_argument("--save-profile", metavar="FILE",
                         help="write the profile as analysed (after --resample, before levelling) to FILE (.txt/.csv, "
                              "x and height in m); for a map, its middle scan line")
@@ -51,26 +54,37 @@ def run(args, params):
     from ..readers import SurfaceMap, read_topography
     from ..units import to_si
 
+    from ..errors import InputError
+    from ..parameters import check_points
+
     step = None
     if args.resample is not None:
         step = to_si(args.resample, "m", "--resample")
-        if not step > 0:
-            from ..errors import InputError
-            raise InputError(f"--resample must be a positive length (got {args.resample!r}).")
+        if not 1e-12 <= step <= 1e-3:
+            raise InputError(f"--resample must be a positive length from 1 pm to 1 mm ('39 nm'), got '{args.resample}'.")
     notes = []
     if args.path == "thesis":
+        if step is not None:
+            check_points(params["roughness_length"], step, "--resample")
         surface = rough.default_profile(params, spacing=step)
         step = None
         notes.append("SYNTHETIC profile: the thesis's AFM scan is not published; this seeded Gaussian profile has the "
                      "chapter-4 Rq and rms slope at the 78 nm step, then PCHIP-resampled (see 'source').")
     else:
-        surface = read_topography(args.path, channel=args.channel, unit=args.unit)
+        surface = read_topography(args.path, channel=args.channel, unit=args.unit, physical_size=args.physical_size)
     values = {}
     if isinstance(surface, SurfaceMap):
         import numpy as np
 
         heights, dx = surface.heights, surface.dx
         if step is not None:
+            from ..parameters import MAX_POINTS
+
+            n = check_points(surface.physical_sizes[0], step, "--resample")
+            if n * surface.shape[0] > MAX_POINTS:
+                raise InputError(f"--resample {step:.3g} m: {surface.shape[0]} scan lines x {n:,} points is more "
+                                 f"than {MAX_POINTS:,} heights (the arrays would not fit in memory); use a larger "
+                                 "step.")
             heights, dx = _resample_rows(surface, step), step
         lines = rough.line_scan_statistics(heights, dx)
         areal = rough.areal_statistics(surface.heights, surface.dx, surface.dy)
@@ -82,6 +96,8 @@ def run(args, params):
                      "pooled over the lines (rms), lambda_q from them, the others averaged over the lines.")
         notes.append("S values: the whole map levelled by its least-squares plane (ISO 25178).")
     else:
+        if step is not None:
+            check_points(float(surface.x[-1] - surface.x[0]), step, "--resample")
         profile = surface if step is None else rough.resample_pchip(surface, step)
         stats = rough.profile_statistics(profile)
         values.update({key: getattr(stats, key) for key in _KEYS})

@@ -38,10 +38,25 @@ def register(subparsers, parents):
     parser.set_defaults(handler=run)
 
 
-def _quantity(text, unit, name):
+def _quantity(text, unit, name, parameter=None):
+    """The option's value in SI; with ``parameter``, checked against that parameter's range."""
     from ..units import to_si
 
-    return None if text is None else to_si(text, unit, name)
+    if text is None:
+        return None
+    value = to_si(text, unit, name)
+    if parameter is None:
+        return value
+    from ..errors import InputError
+
+    if parameter == "normal_load" and value <= 0:
+        raise InputError(f"{name} must be a positive force, got '{text}'.")
+    from ..parameters import coerce_value
+
+    try:
+        return coerce_value(parameter, text)
+    except InputError as exc:
+        raise InputError(f"{name}: {exc}") from None
 
 
 def run(args, params):
@@ -51,10 +66,10 @@ def run(args, params):
         return _estimate(args, params)
     from .. import sliding
 
-    load = _quantity(args.load, "N", "--load")
-    gap = _quantity(args.gap, "m", "--gap")
+    load = _quantity(args.load, "N", "--load", "normal_load")
+    gap = _quantity(args.gap, "m", "--gap", "sliding_gap")
     distance = _quantity(args.distance, "m", "--distance")
-    step = _quantity(args.step, "m", "--step")
+    step = _quantity(args.step, "m", "--step", "sliding_step")
     if load is not None and load <= 0:
         raise InputError(f"--load must be a positive force, got {args.load!r}.")
     if distance is not None and distance < 0:
@@ -95,7 +110,7 @@ def _estimate(args, params):
 
     if args.profile or args.gap or args.distance or args.step or args.out:
         raise InputError("--model estimate takes only --load (the 3.5 estimate has no profile or slide).")
-    load = _quantity(args.load, "N", "--load")
+    load = _quantity(args.load, "N", "--load", "normal_load")
     printed = thesis_estimate(**THESIS_3_5_INPUTS)
     counts = thesis_estimate(**THESIS_3_5_COUNTS)
     ours = estimate_from_parameters(params, load=load)

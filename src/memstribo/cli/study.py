@@ -15,7 +15,9 @@ Run a parameter study: every point of SPEC.toml (a [study] table with a grid and
 of points over model parameters and coating, wear, roughness, seed, steps) through
 dask.distributed. Each finished point is written at once to OUT/points/; after an
 interruption (even kill -9) rerun with --resume: no point is lost and none is computed
-twice. Results go to OUT/results.nc and OUT/results.csv. See docs/studies.md.
+twice, and the points that failed run again. Results go to OUT/results.nc and
+OUT/results.csv. The spec names one of memstribo's point functions (mesh, gear, slide);
+--dry-run checks the spec and every point without running anything. See docs/studies.md.
 """
 
 
@@ -31,7 +33,11 @@ def register(subparsers, parents):
                         help="address of an existing Dask scheduler (tcp://host:8786); default: a local cluster")
     parser.add_argument("--workers", type=int, default=None, metavar="N",
                         help="worker processes of the local cluster (default: number of cores)")
-    parser.add_argument("--resume", action="store_true", help="finish a study interrupted in --out")
+    parser.add_argument("--resume", action="store_true",
+                        help="finish a study interrupted in --out, and run its failed points again")
+    parser.add_argument("--dry-run", action="store_true",
+                        help="check the spec and every point (keys, ranges, files) and print the number of points; "
+                             "run nothing")
     parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                         help="progress bar on stderr: auto (when stderr is a terminal), on, off")
     parser.set_defaults(handler=run)
@@ -41,21 +47,27 @@ def run(args, params):
     from pathlib import Path
 
     from ..errors import InputError
-    from ..study import load_study_spec, run_study
+    from ..study import function_name, load_study_spec, prepare_points, run_study
 
     spec = load_study_spec(args.spec)
-    if args.workers is not None and args.workers < 1:
-        raise InputError(f"--workers {args.workers}: give a positive integer.")
+    if args.workers is not None and not 1 <= args.workers <= 4096:
+        raise InputError(f"--workers {args.workers}: give a positive integer (at most 4096).")
+    if args.dry_run:
+        points = prepare_points(spec, params)
+        return CommandResult(values={"name": spec.name, "function": function_name(spec.function),
+                                     "points": len(points)},
+                             title=f"study '{spec.name}': spec and points valid (dry run, nothing computed)")
     out = Path(args.out) if args.out else Path(f"memstribo-study-{Path(args.spec).stem}")
     progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
     result = run_study(spec, out, params, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
                        progress=progress)
     values = {
         "name": spec.name,
-        "function": spec.function,
+        "function": function_name(spec.function),
         "points": result.n_points,
         "computed": result.n_computed,
         "reused": result.n_reused,
+        "retried": result.n_retried,
         "failed": result.n_failed,
         "elapsed": result.elapsed,
         "folder": str(result.folder),
@@ -63,7 +75,10 @@ def run(args, params):
         "results_csv": str(result.folder / "results.csv"),
     }
     units = {"elapsed": "s"}
-    notes = [f"  failed point {pid}: {message}" for pid, message in list(result.errors.items())[:10]]
+    notes = []
+    if result.n_retried:
+        notes.append(f"  reran {result.n_retried} point(s) that had failed in an earlier run")
+    notes += [f"  failed point {pid}: {message}" for pid, message in list(result.errors.items())[:10]]
     if result.n_failed > 10:
         notes.append(f"  ... and {result.n_failed - 10} more (see the 'error' column of results.csv)")
     return CommandResult(values=values, units=units, title=f"study '{spec.name}'", notes=notes)

@@ -22,8 +22,8 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError, did_you_mean
-from ..units import to_si
-from .definitions import SPECS, ParameterSpec
+from ..units import printable, to_si
+from .definitions import MEMORY_LIMIT_BYTES, SPECS, ParameterSpec
 
 __all__ = [
     "SPECS",
@@ -55,16 +55,21 @@ def coerce_value(name: str, value: Any, spec: ParameterSpec | None = None) -> An
     """
     spec = spec or SPECS.get(name)
     if spec is None:
-        raise InputError(f"unknown parameter '{name}'.{did_you_mean(name, SPECS)} "
+        raise InputError(f"unknown parameter '{printable(name)}'.{did_you_mean(name, SPECS)} "
                          f"Run 'memstribo parameters' to list them.")
     if value is None:
         if spec.optional:
             return None
         raise InputError(f"parameter '{name}' needs a value: {spec.allowed()}.")
+    shown = printable(repr(value))
+    if isinstance(value, (dict, list, tuple)):
+        raise InputError(f"parameter '{name}' = {shown}: expected one value, not a "
+                         f"{'table' if isinstance(value, dict) else 'list'}: {spec.allowed()}.")
     if spec.kind == "str":
-        value = str(value)
+        if not isinstance(value, str):
+            raise InputError(f"parameter '{name}' = {shown}: expected a string, {spec.allowed()}.")
         if spec.choices and value not in spec.choices:
-            raise InputError(f"parameter '{name}' = {value!r} is not allowed: {spec.allowed()}."
+            raise InputError(f"parameter '{name}' = {shown} is not allowed: {spec.allowed()}."
                              f"{did_you_mean(value, spec.choices)}")
         return value
     if spec.kind == "bool":
@@ -75,14 +80,15 @@ def coerce_value(name: str, value: Any, spec: ParameterSpec | None = None) -> An
             return True
         if text in ("false", "0", "no", "off"):
             return False
-        raise InputError(f"parameter '{name}' = {value!r}: expected true or false.")
+        raise InputError(f"parameter '{name}' = {shown}: expected true or false.")
     number = to_si(value, spec.unit, name)
     if spec.kind == "int":
         if not float(number).is_integer():
-            raise InputError(f"parameter '{name}' = {value!r} must be an integer.")
+            raise InputError(f"parameter '{name}' = {shown} must be an integer: {spec.allowed()}.")
         number = int(number)
     if not _in_range(number, spec):
-        raise InputError(f"parameter '{name}' = {value!r} is outside its range: {spec.allowed()}.")
+        why = f"; {spec.why}" if spec.why else ""
+        raise InputError(f"parameter '{name}' = {shown} is outside its range: {spec.allowed()}{why}.")
     return number
 
 
@@ -161,8 +167,62 @@ class Parameters(Mapping):
         return tomli_w.dumps({"meta": {"name": self.name}, "parameters": table})
 
 
+#: bytes the meshing simulation holds per step and contact element (calibrated: 100 000 steps of the
+#: default 600-element window took 6.4 GB, i.e. 13.3 bytes x 8 per element and step)
+MESH_BYTES_PER_ELEMENT_STEP = 8 * 14
+
+#: largest number of points of a profile or of contact elements in one solve
+MAX_POINTS = 10_000_000
+MAX_CONTACT_ELEMENTS = 1_000_000
+
+
+def mesh_memory_bytes(steps: int, window: float, grid_spacing: float) -> float:
+    """Estimated memory [bytes] of a meshing simulation of ``steps`` steps (see MESH_BYTES_PER_ELEMENT_STEP)."""
+    return float(steps) * (window / grid_spacing) * MESH_BYTES_PER_ELEMENT_STEP
+
+
+def check_mesh_size(steps: int, window: float, grid_spacing: float, what: str = "mesh_steps") -> None:
+    """Refuse a meshing simulation whose arrays would not fit in memory (before anything is allocated).
+
+    Raises
+    ------
+    InputError
+        More than :data:`MAX_CONTACT_ELEMENTS` elements per solve, or an estimated memory above
+        :data:`MEMORY_LIMIT_BYTES` (what a 24 GB machine holds besides the interpreter).
+
+    A window or grid spacing of ``None`` (sized from the load case) is checked by the meshing
+    cycle once it has sized them (``memstribo.mesh``), with this same function.
+    """
+    if window is None or grid_spacing is None:
+        return
+    elements = window / grid_spacing
+    if elements > MAX_CONTACT_ELEMENTS:
+        raise InputError(f"mesh_window / mesh_grid_spacing = {elements:.3g} contact elements per step; at most "
+                         f"{MAX_CONTACT_ELEMENTS:,} (raise mesh_grid_spacing or shorten mesh_window).")
+    need = mesh_memory_bytes(steps, window, grid_spacing)
+    if need > MEMORY_LIMIT_BYTES:
+        raise InputError(f"{what} = {steps} with {elements:.0f} contact elements per step needs about "
+                         f"{need / 2**30:.0f} GiB of memory, more than the {MEMORY_LIMIT_BYTES / 2**30:.0f} GiB "
+                         "memstribo plans for; use fewer steps or a coarser mesh_grid_spacing.")
+
+
+def check_points(length: float, step: float, what: str) -> int:
+    """Number of points of a profile ``length`` long sampled at ``step``; refuse more than MAX_POINTS."""
+    n = length / step
+    if not n < MAX_POINTS:
+        raise InputError(f"{what}: a {length:.4g} m profile at a {step:.4g} m step has {n:.3g} points; at most "
+                         f"{MAX_POINTS:,} (the arrays would not fit in memory): use a larger step.")
+    return int(n)
+
+
 def _check_consistency(values: Mapping[str, Any]) -> None:
-    """Cross-parameter rules that a single range cannot express."""
+    """Cross-parameter rules that a single range cannot express (and the memory sizes set)."""
+    if all(values.get(k) for k in ("mesh_steps", "mesh_window", "mesh_grid_spacing")):
+        check_mesh_size(values["mesh_steps"], values["mesh_window"], values["mesh_grid_spacing"])
+    if values.get("roughness_length"):
+        for key in ("roughness_sample_spacing", "roughness_resample_spacing"):
+            if values.get(key):
+                check_points(values["roughness_length"], values[key], f"roughness_length / {key}")
     if values.get("atomic_width") and values.get("adhesive_width"):
         if values["atomic_width"] > values["adhesive_width"]:
             raise InputError(
@@ -194,47 +254,128 @@ def get_parameter_values(name: str = DEFAULT_SET) -> Parameters:
     return Parameters(values, sources, name)
 
 
+#: tables a config file may hold besides [parameters] and [meta], and who reads them
+CONFIG_TABLES = {
+    "meta": "name and description of the file (ignored)",
+    "parameters": "parameter overrides",
+    "run": "options of 'memstribo run'",
+    "study": "a study for 'memstribo study'",
+}
+
+#: keys of a table-form parameter (``[parameters.normal_load]``), as written by Parameters.to_toml
+_ENTRY_KEYS = ("value", "unit", "source")
+
+
+def _toml_type(value) -> str:
+    return {dict: "table", list: "list", str: "string", bool: "boolean", int: "integer",
+            float: "number"}.get(type(value), type(value).__name__)
+
+
+def _entry_value(path, name: str, entry: dict):
+    """The value of a table-form parameter ``[parameters.NAME]``, with its ``unit`` applied."""
+    unknown = [k for k in entry if k not in _ENTRY_KEYS]
+    if unknown:
+        raise InputError(f"config file '{path}': [parameters.{name}] has unknown key '{printable(unknown[0])}'; "
+                         f"allowed: {', '.join(_ENTRY_KEYS)}.{did_you_mean(unknown[0], _ENTRY_KEYS)}")
+    spec = SPECS[name]
+    if "value" not in entry:
+        if spec.optional:
+            return None  # written by to_toml for an unset (derived) value
+        raise InputError(f"config file '{path}': [parameters.{name}] has no 'value' (it is not optional): "
+                         f"{spec.allowed()}.")
+    value, unit = entry["value"], entry.get("unit")
+    if unit is not None and not isinstance(unit, str):
+        raise InputError(f"config file '{path}': [parameters.{name}] unit must be a string, got {_toml_type(unit)}.")
+    if unit and spec.kind in ("float", "int") and isinstance(value, (int, float)) and not isinstance(value, bool):
+        if unit.replace(" ", "") != spec.unit.replace(" ", ""):
+            value = f"{value!r} {unit}"  # a number in the unit the entry names, converted to SI by coerce_value
+    elif unit and spec.kind in ("float", "int") and isinstance(value, str) and unit != spec.unit:
+        raise InputError(f"config file '{path}': [parameters.{name}] gives both a unit ('{printable(unit)}') and a "
+                         "value string; give a number with 'unit', or the unit inside the value ('25 uN').")
+    return value
+
+
 def read_config(path: str | Path) -> dict[str, Any]:
-    """Read parameter overrides from a TOML file.
+    """Read parameter overrides from a TOML file, validated whole.
 
     The file may hold the overrides at top level (``normal_load = "50 uN"``), in a
     ``[parameters]`` table, or in the format written by :meth:`Parameters.to_toml`
-    (``[parameters.normal_load]`` with ``value``). Other tables (``[run]``, ...) are
-    returned under their own keys for the commands that use them.
+    (``[parameters.normal_load]`` with ``value``, ``unit``, ``source``; a ``unit`` other than
+    SI converts a plain-number value). The tables of :data:`CONFIG_TABLES` (``[run]``,
+    ``[study]``) are returned under their own keys for the commands that use them.
 
     Returns
     -------
     dict
         ``{"parameters": {name: value}, **other_tables}``.
+
+    Raises
+    ------
+    InputError
+        Missing or unreadable file, TOML syntax error (with line and column), an unknown
+        table or key (with a did-you-mean), a value of the wrong type.
     """
     path = Path(path)
+    shown = printable(path, 200)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        raw = path.read_bytes()
     except FileNotFoundError:
-        raise InputError(f"config file '{path}' does not exist.") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read config file '{path}': {exc}") from None
+        raise InputError(f"config file '{shown}' does not exist.") from None
+    except IsADirectoryError:
+        raise InputError(f"config file '{shown}' is a folder; give a TOML file.") from None
+    except OSError as exc:
+        raise InputError(f"cannot read config file '{shown}': {exc.strerror}.") from None
+    if raw.startswith(b"\xef\xbb\xbf"):
+        raw = raw[3:]
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"config file '{shown}' is not UTF-8 text (byte {exc.start}); TOML files are UTF-8.") from None
+    try:
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"config file '{path}' is not valid TOML: {exc}") from None
+        raise InputError(f"config file '{shown}' is not valid TOML: {printable(exc, 200)}.") from None
     overrides: dict[str, Any] = {}
     other: dict[str, Any] = {}
+    allowed_tables = sorted(CONFIG_TABLES)
     for key, value in data.items():
-        if key == "parameters" and isinstance(value, dict):
+        if key == "parameters":
+            if not isinstance(value, dict):
+                raise InputError(f"config file '{shown}': 'parameters' must be a table ([parameters]), "
+                                 f"got a {_toml_type(value)}.")
             for name, entry in value.items():
-                if isinstance(entry, dict):
-                    if "value" in entry:
-                        overrides[name] = entry["value"]
-                else:
-                    overrides[name] = entry
-        elif key == "meta":
-            continue
+                if name not in SPECS:
+                    raise InputError(f"config file '{shown}': unknown parameter '{printable(name)}' in [parameters]."
+                                     f"{did_you_mean(name, SPECS)} Run 'memstribo parameters' to list them.")
+                overrides[name] = _entry_value(shown, name, entry) if isinstance(entry, dict) else entry
+        elif key in CONFIG_TABLES:
+            if not isinstance(value, dict):
+                raise InputError(f"config file '{shown}': '{key}' must be a table ([{key}]), got a {_toml_type(value)}.")
+            if key != "meta":
+                other[key] = value
         elif isinstance(value, dict):
-            other[key] = value
-        else:
+            hint = did_you_mean(key, allowed_tables) or (
+                f" Parameter tables go under [parameters.{key}]." if key in SPECS else "")
+            raise InputError(f"config file '{shown}': unknown table [{printable(key)}]; allowed tables: "
+                             f"{', '.join(f'[{t}]' for t in allowed_tables)}.{hint}")
+        elif key in SPECS:
             overrides[key] = value
-    for name in overrides:
-        if name not in SPECS:
-            raise InputError(f"config file '{path}': unknown parameter '{name}'.{did_you_mean(name, SPECS)}")
+        else:
+            raise InputError(f"config file '{shown}': unknown parameter '{printable(key)}'."
+                             f"{did_you_mean(key, list(SPECS) + allowed_tables)} Run 'memstribo parameters' to list "
+                             "them.")
+    if "run" in other:
+        from ..chain import _RUN_KEYS  # the keys of [run]; values are checked by 'memstribo run'
+
+        for key in other["run"]:
+            if key not in _RUN_KEYS:
+                raise InputError(f"config file '{shown}': [run] has unknown key '{printable(key)}'; allowed: "
+                                 f"{', '.join(_RUN_KEYS)}.{did_you_mean(key, _RUN_KEYS)}")
+    for name, value in overrides.items():  # every value checked now, whatever command reads the file
+        try:
+            coerce_value(name, value)
+        except InputError as exc:
+            raise InputError(f"config file '{shown}': {exc}") from None
     return {"parameters": overrides, **other}
 
 
@@ -243,8 +384,8 @@ def parse_assignment(text: str) -> tuple[str, str]:
     name, sep, value = text.partition("=")
     name, value = name.strip(), value.strip()
     if not sep or not name or not value:
-        raise InputError(f"--set expects NAME=VALUE (e.g. --set normal_load='50 uN'), got {text!r}.")
+        raise InputError(f"--set expects NAME=VALUE (e.g. --set normal_load='50 uN'), got '{printable(text)}'.")
     if name not in SPECS:
-        raise InputError(f"--set: unknown parameter '{name}'.{did_you_mean(name, SPECS)} "
+        raise InputError(f"--set: unknown parameter '{printable(name)}'.{did_you_mean(name, SPECS)} "
                          f"Run 'memstribo parameters' to list them.")
     return name, value

@@ -10,6 +10,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+#: memory a single run may plan to use: a machine with 24 GB holds this and the interpreter
+MEMORY_LIMIT_BYTES = 20 * 2**30
+
 
 @dataclass(frozen=True)
 class ParameterSpec:
@@ -33,6 +36,11 @@ class ParameterSpec:
         Whether the value may be ``None`` ("derive it", see the description).
     choices : tuple of str or None
         Allowed values of a string parameter.
+    why : str
+        Why the range is what it is (shown with the range in ``memstribo parameters`` and in
+        the message of a value outside it). Every number has both bounds: a value far outside
+        what a MEMS gear or silicon surface can have is a typo or a wrong unit, and sizes
+        (steps, spacings, lengths) also bound the memory a run needs.
     """
 
     name: str
@@ -45,6 +53,14 @@ class ParameterSpec:
     exclusive_maximum: bool = False
     optional: bool = False
     choices: tuple[str, ...] | None = None
+    why: str = ""
+
+    @property
+    def description_with_bounds(self) -> str:
+        """The description, then the allowed range and why."""
+        if self.kind in ("str", "bool"):
+            return self.description
+        return f"{self.description}. Allowed: {self.allowed()}" + (f"; {self.why}" if self.why else "")
 
     def allowed(self) -> str:
         """Human-readable description of the allowed values."""
@@ -66,97 +82,142 @@ class ParameterSpec:
         return text
 
 
-def _positive(name, unit, description, **kw):
-    return ParameterSpec(name, unit, description, minimum=0.0, exclusive_minimum=True, **kw)
+def _range(name, unit, description, minimum, maximum, why, **kw):
+    """A number with both bounds (minimum excluded where it is 0)."""
+    kw.setdefault("exclusive_minimum", minimum == 0.0 and kw.get("kind", "float") == "float")
+    return ParameterSpec(name, unit, description, minimum=minimum, maximum=maximum, why=why, **kw)
 
 
-def _nonnegative(name, unit, description, **kw):
-    return ParameterSpec(name, unit, description, minimum=0.0, **kw)
-
+_E = "stiffer than hard polymers (0.1 GPa) and no stiffer than diamond (1.2 TPa): softer bodies leave the small-strain elastic model"
+_NU = "thermodynamic limits of an isotropic solid"
+_ATOMIC = "an atomic length: 0.05 nm (shorter than any bond) to 1 nm"
 
 _SPECS = [
     # --- material (potentials, adhesion) ------------------------------------------------
-    _positive("youngs_modulus", "Pa", "Young's modulus E of the tooth material (silicon)"),
+    _range("youngs_modulus", "Pa", "Young's modulus E of the tooth material (silicon)", 1e8, 1.5e12, _E),
     ParameterSpec("poisson_ratio", "", "Poisson's ratio nu of the tooth material",
-                  minimum=-1.0, maximum=0.5, exclusive_minimum=True),
-    _positive("counter_youngs_modulus", "Pa", "Young's modulus of the counter body (gear tooth); unset: same as youngs_modulus",
-              optional=True),
+                  minimum=-1.0, maximum=0.5, exclusive_minimum=True, why=_NU),
+    _range("counter_youngs_modulus", "Pa",
+           "Young's modulus of the counter body (gear tooth); unset: same as youngs_modulus", 1e8, 1.5e12, _E,
+           optional=True),
     ParameterSpec("counter_poisson_ratio", "", "Poisson's ratio of the counter body; unset: same as poisson_ratio",
-                  minimum=-1.0, maximum=0.5, exclusive_minimum=True, optional=True),
-    _positive("lattice_constant", "m", "Lattice constant of the crystal"),
-    _positive("bond_length", "m", "Chemical bond length D_chem (also the sliding distance per bond break)"),
-    _positive("bond_energy", "J", "Energy of one chemical bond U_chem"),
-    _nonnegative("vdw_bond_energy", "J", "Energy of one van der Waals bond U_vdW"),
-    _positive("hamaker_constant", "J", "Hamaker constant A"),
-    _positive("cutoff_distance", "m", "Cut-off (contact) separation D0 of the vdW interaction"),
-    _positive("work_of_adhesion", "J/m^2", "Work of adhesion w12; unset: A / (12 pi D0^2) (3-34)", optional=True),
+                  minimum=-1.0, maximum=0.5, exclusive_minimum=True, optional=True, why=_NU),
+    _range("lattice_constant", "m", "Lattice constant of the crystal", 1e-10, 2e-9,
+           "crystal lattice constants lie between 0.1 nm and 2 nm"),
+    _range("bond_length", "m", "Chemical bond length D_chem (also the sliding distance per bond break)", 5e-11, 1e-9,
+           _ATOMIC),
+    _range("bond_energy", "J", "Energy of one chemical bond U_chem", 1e-21, 2e-18,
+           "from a weak bond (0.006 eV) to beyond the strongest chemical bond (11 eV = 1.8e-18 J)"),
+    _range("vdw_bond_energy", "J", "Energy of one van der Waals bond U_vdW", 0.0, 1e-19,
+           "a van der Waals bond is weaker than 0.6 eV; 0 switches it off", exclusive_minimum=False),
+    _range("hamaker_constant", "J", "Hamaker constant A", 1e-22, 1e-17,
+           "Hamaker constants of solids lie between 1e-21 J and 5e-19 J (metals); a decade of margin each side"),
+    _range("cutoff_distance", "m", "Cut-off (contact) separation D0 of the vdW interaction", 5e-11, 1e-9, _ATOMIC),
+    _range("work_of_adhesion", "J/m^2", "Work of adhesion w12; unset: A / (12 pi D0^2) (3-34)", 1e-6, 10.0,
+           "surface energies of solids are below 5 J/m^2", optional=True),
     ParameterSpec("threshold_strain", "", "Strain at which an atomic block turns rigid (bilinear law)",
-                  minimum=0.0, maximum=1.0, exclusive_minimum=True),
+                  minimum=0.0, maximum=1.0, exclusive_minimum=True, why="a strain between 0 and 1"),
     # --- nanoblock geometry ---------------------------------------------------------------
-    _positive("atomic_width", "m", "Width w_at of a square atomic-subscale block"),
-    _positive("atomic_height", "m", "Height H_at of an atomic-subscale block"),
-    _positive("adhesive_width", "m", "Width w_adh of a square adhesive-subscale block (the nanoblock)"),
-    _positive("adhesive_height", "m", "Height H_adh of an adhesive-subscale block"),
-    ParameterSpec("atomic_per_side", "", "Atomic blocks per side m of a nanoblock (m x m blocks)", kind="int",
-                  minimum=1),
-    _positive("atomic_pitch", "m", "Centre-to-centre pitch of the atomic blocks (about lambda_q)"),
-    _positive("bulk_height", "m", "Height of the elastic bulk segment under a nanoblock; unset: adhesive_width",
-              optional=True),
-    ParameterSpec("slider_blocks", "", "Adhesive blocks in the sliding structure of the flat-friction models",
-                  kind="int", minimum=1),
+    _range("atomic_width", "m", "Width w_at of a square atomic-subscale block", 1e-10, 1e-6,
+           "atomic-subscale asperities are 0.1 nm to 1 um wide"),
+    _range("atomic_height", "m", "Height H_at of an atomic-subscale block", 1e-11, 1e-6,
+           "atomic-subscale asperities are 0.01 nm to 1 um high"),
+    _range("adhesive_width", "m", "Width w_adh of a square adhesive-subscale block (the nanoblock)", 1e-9, 1e-4,
+           "a nanoblock is 1 nm to 100 um wide (smaller than a gear tooth)"),
+    _range("adhesive_height", "m", "Height H_adh of an adhesive-subscale block", 1e-10, 1e-5,
+           "a nanoblock is 0.1 nm to 10 um high"),
+    _range("atomic_per_side", "", "Atomic blocks per side m of a nanoblock (m x m blocks)", 1, 100,
+           "at most 100 x 100 atomic blocks per nanoblock (memory and time grow as m^2)", kind="int"),
+    _range("atomic_pitch", "m", "Centre-to-centre pitch of the atomic blocks (about lambda_q)", 1e-10, 1e-4,
+           "between an atomic distance and the width of a tooth"),
+    _range("bulk_height", "m", "Height of the elastic bulk segment under a nanoblock; unset: adhesive_width",
+           1e-10, 1e-3, "smaller than a gear tooth", optional=True),
+    _range("slider_blocks", "", "Adhesive blocks in the sliding structure of the flat-friction models", 1, 1000,
+           "at most 1000 blocks (memory and time grow with them)", kind="int"),
     # --- roughness (default synthetic profile) -----------------------------------------------
-    _positive("roughness_rq", "m", "Rq of the default synthetic roughness profile"),
-    _positive("roughness_rms_slope", "", "rms slope (Delta q) of the default synthetic roughness profile"),
-    _positive("roughness_sample_spacing", "m", "Sampling step of the default synthetic profile (as measured)"),
-    _positive("roughness_resample_spacing", "m", "Step after PCHIP resampling; unset: no resampling", optional=True),
-    ParameterSpec("roughness_seed", "", "Seed of the default synthetic roughness profile", kind="int", minimum=0),
-    _positive("roughness_length", "m", "Length of the default synthetic roughness profile"),
+    _range("roughness_rq", "m", "Rq of the default synthetic roughness profile", 1e-12, 1e-5,
+           "1 pm (below any instrument's noise) to 10 um (not a MEMS surface)"),
+    _range("roughness_rms_slope", "", "rms slope (Delta q) of the default synthetic roughness profile", 1e-6, 10.0,
+           "slopes beyond 10 (84 deg) are not a surface profile"),
+    _range("roughness_sample_spacing", "m", "Sampling step of the default synthetic profile (as measured)", 1e-11,
+           1e-4, "0.01 nm to 100 um; with roughness_length it sets the number of points (at most 10 million)"),
+    _range("roughness_resample_spacing", "m", "Step after PCHIP resampling; unset: no resampling", 1e-11, 1e-4,
+           "0.01 nm to 100 um; with roughness_length it sets the number of points (at most 10 million)",
+           optional=True),
+    _range("roughness_seed", "", "Seed of the default synthetic roughness profile", 0, 2**63 - 1,
+           "any non-negative 64-bit integer", kind="int"),
+    _range("roughness_length", "m", "Length of the default synthetic roughness profile", 1e-8, 1e-1,
+           "10 nm to 10 cm"),
     # --- gear geometry and operation ----------------------------------------------------------
-    ParameterSpec("teeth_pinion", "", "Number of teeth z1 of the pinion (driver)", kind="int", minimum=5),
-    ParameterSpec("teeth_gear", "", "Number of teeth z2 of the gear (driven)", kind="int", minimum=5),
-    _positive("module", "m", "Module m of the gear pair (pitch diameter / teeth)"),
-    ParameterSpec("pressure_angle", "rad", "Pressure angle (give units: '20 deg')", minimum=0.0,
-                  maximum=math.pi / 2, exclusive_minimum=True, exclusive_maximum=True),
-    _positive("addendum_coefficient", "", "Addendum in modules (standard: 1)"),
-    _positive("face_width", "m", "Face width of the teeth"),
-    _positive("normal_load", "N", "Normal load F_ext carried by the teeth in contact"),
-    _positive("drive_torque", "N*m", "Torque on the pinion; F_t = T / r_pitch,pinion (4-27)"),
-    _positive("pinion_speed", "rad/s", "Angular speed omega1 of the pinion (sets the time axis only)"),
+    _range("teeth_pinion", "", "Number of teeth z1 of the pinion (driver)", 5, 10000,
+           "fewer than 5 teeth cannot mesh continuously; more than 10000 is not a MEMS gear", kind="int"),
+    _range("teeth_gear", "", "Number of teeth z2 of the gear (driven)", 5, 10000,
+           "fewer than 5 teeth cannot mesh continuously; more than 10000 is not a MEMS gear", kind="int"),
+    _range("module", "m", "Module m of the gear pair (pitch diameter / teeth)", 1e-7, 1e-2,
+           "0.1 um (smaller than any etched tooth) to 10 mm"),
+    _range("pressure_angle", "rad", "Pressure angle (give units: '20 deg')", math.radians(10), math.radians(35),
+           "10 to 35 deg: involute gears use 14.5 to 25 deg; beyond, teeth undercut (small angles) or turn "
+           "pointed with a contact ratio below 1 or absurdly above it (89 deg gave 36.5)"),
+    _range("addendum_coefficient", "", "Addendum in modules (standard: 1)", 0.3, 2.0,
+           "stub (0.8) to long (1.25) addenda, with margin; beyond 2 the tooth tips are pointed"),
+    _range("face_width", "m", "Face width of the teeth", 1e-8, 1e-2, "10 nm to 10 mm"),
+    _range("normal_load", "N", "Normal load F_ext carried by the teeth in contact", 1e-12, 1.0,
+           "1 pN to 1 N: a MEMS gear tooth carries uN to mN"),
+    _range("drive_torque", "N*m", "Torque on the pinion; F_t = T / r_pitch,pinion (4-27)", 1e-18, 1e-2,
+           "MEMS micromotors give pN m to uN m; 0.01 N m would break any microgear"),
+    _range("pinion_speed", "rad/s", "Angular speed omega1 of the pinion (sets the time axis only)", 1e-6, 1e7,
+           "from a crawl to 100 million rpm"),
     # --- meshing simulation ---------------------------------------------------------------------
-    ParameterSpec("mesh_steps", "", "Steps (positions c) of the meshing simulation from c_f to c_l", kind="int",
-                  minimum=3),
-    _positive("mesh_grid_spacing", "m", "Element width of the rough line-contact solve at each step; unset: the "
-              "largest Hertz width 2a of the load case / mesh_elements_across_contact", optional=True),
-    _positive("mesh_window", "m", "Length of the contact window solved at each step, centred on the contact point; "
-              "unset: 2.4 a + 6 w_adh of the largest Hertz half-width a of the load case", optional=True),
-    _positive("mesh_contact_tolerance", "", "Tolerance of the rough line-contact solver (dimensionless residual)"),
+    _range("mesh_steps", "", "Steps (positions c) of the meshing simulation from c_f to c_l", 3, 100_000,
+           "3 to 100 000 (memory grows with steps x window/grid spacing: 100 000 steps of the default window "
+           "take 6.4 GB)", kind="int"),
+    _range("mesh_grid_spacing", "m", "Element width of the rough line-contact solve at each step; unset: the "
+           "largest Hertz width 2a of the load case / mesh_elements_across_contact", 1e-11, 1e-6,
+           "0.01 nm (below an atomic distance) to 1 um; window / spacing is at most 1 million elements",
+           optional=True),
+    _range("mesh_window", "m", "Length of the contact window solved at each step, centred on the contact point; "
+           "unset: 2.4 a + 6 w_adh of the largest Hertz half-width a of the load case", 1e-8, 1e-3,
+           "10 nm to 1 mm; window / grid spacing is at most 1 million elements", optional=True),
+    _range("mesh_contact_tolerance", "", "Tolerance of the rough line-contact solver (dimensionless residual)",
+           1e-14, 1e-2, "a residual above 1 % is no solution; below 1e-14 round-off stops convergence"),
     ParameterSpec("load_sharing", "", "Load-sharing function over the mesh (Figure 4-11): dry or lubricated",
                   kind="str", choices=("dry", "lubricated")),
-    _positive("elastic_limit_pressure", "Pa", "Hertz peak pressure beyond which the elastic model of silicon no longer holds"),
+    _range("elastic_limit_pressure", "Pa",
+           "Hertz peak pressure beyond which the elastic model of silicon no longer holds", 1e6, 1e12,
+           "1 MPa to 1 TPa (above the strength of any solid)"),
     # --- coatings and wear ----------------------------------------------------------------------
     ParameterSpec("coating_wear", "", "Worn fraction Omega of the gear tooth's coating (0 coated, 1 bare; 5.5.3)",
-                  minimum=0.0, maximum=1.0),
+                  minimum=0.0, maximum=1.0, why="a fraction"),
     # --- damage and lifetime --------------------------------------------------------------------
-    _positive("asperity_degree", "", "Degree d of the atomic asperity shape f(r) = B_d r^d (5-6)"),
-    _positive("asperity_shape_coefficient", "",
-              "B_d of f(r) = B_d r^d, SI number in m^(1-d) (m^-3 for d = 4); give the number without a unit"),
-    _positive("asperity_half_width", "m", "Half width of an atomic asperity (edge of the power-law shape, 5.5.2)"),
-    _nonnegative("asperity_friction_coefficient", "",
-                 "Friction coefficient mu of the traction mu*p on an atomic asperity in the stress solution"),
-    ParameterSpec("peaks_per_cycle", "", "Load peaks k on a nanoblock per meshing cycle (Figure 5-18)", kind="int",
-                  minimum=1),
-    _positive("damage_exponent", "", "Exponent m of the damage law omega = sum c1 (dtau1)^m (5-10)"),
-    _positive("damage_coefficient", "",
-              "c1 of the damage law (5-10), SI number in Pa^-m; unset: unknown (relative lives only)", optional=True),
+    _range("asperity_degree", "", "Degree d of the atomic asperity shape f(r) = B_d r^d (5-6)", 0.0, 50.0,
+           "d > 0 (d = 2 paraboloid, 4 punch with rounded edges); beyond 50 the shape is a flat punch"),
+    _range("asperity_shape_coefficient", "",
+           "B_d of f(r) = B_d r^d, SI number in m^(1-d) (m^-3 for d = 4); give the number without a unit",
+           1e-30, 1e200, "its unit depends on d; any positive number a float holds without overflow in B_d a^d"),
+    _range("asperity_half_width", "m", "Half width of an atomic asperity (edge of the power-law shape, 5.5.2)",
+           1e-11, 1e-6, "an atomic asperity is 0.01 nm to 1 um wide"),
+    _range("asperity_friction_coefficient", "",
+           "Friction coefficient mu of the traction mu*p on an atomic asperity in the stress solution", 0.0, 2.0,
+           "dry friction coefficients of solids lie between 0 and 2", exclusive_minimum=False),
+    _range("peaks_per_cycle", "", "Load peaks k on a nanoblock per meshing cycle (Figure 5-18)", 1, 100_000,
+           "at least one peak; more than 100 000 per cycle is more than the steps of any mesh", kind="int"),
+    _range("damage_exponent", "", "Exponent m of the damage law omega = sum c1 (dtau1)^m (5-10)", 0.0, 20.0,
+           "fatigue exponents of brittle solids are below 20; (dtau)^m overflows beyond"),
+    _range("damage_coefficient", "",
+           "c1 of the damage law (5-10), SI number in Pa^-m; unset: unknown (relative lives only)", 1e-300, 1e300,
+           "its unit depends on m: any positive finite number", optional=True),
     # --- sliding (flat-friction models, thesis 2.6.2, 3.4) ------------------------------------
-    ParameterSpec("sliding_gap", "m", "Fixed-gap model: height of the undeformed atomic tips above the counter "
-                  "profile's mean line (negative: interference); unset: the profile's Rq", optional=True),
-    _positive("sliding_step", "m", "Sliding distance per step of the flat-friction models; unset: bond_length",
-              optional=True),
-    _positive("adhesive_layer_thickness", "m", "Thickness of the adhesive layer inside which an adhesive block "
-              "forms vdW bonds and adheres, in the sliding models and the meshing cycle, for bare and coated "
-              "blocks alike; unset: adhesive_height (thesis 3.5); the Maugis range h0 = w/sigma0 (MODEL §2, "
-              "'memstribo constants') is the explicit alternative", optional=True),
+    _range("sliding_gap", "m", "Fixed-gap model: height of the undeformed atomic tips above the counter "
+           "profile's mean line (negative: interference); unset: the profile's Rq", -1e-7, 1e-6,
+           "-100 nm (an interference deeper than a nanoblock crushes it) to 1 um (far out of contact)",
+           optional=True, exclusive_minimum=False),
+    _range("sliding_step", "m", "Sliding distance per step of the flat-friction models; unset: bond_length",
+           1e-12, 1e-6, "1 pm to 1 um; sliding distance / step is at most 1 million steps", optional=True),
+    _range("adhesive_layer_thickness", "m", "Thickness of the adhesive layer inside which an adhesive block "
+           "forms vdW bonds and adheres, in the sliding models and the meshing cycle, for bare and coated "
+           "blocks alike; unset: adhesive_height (thesis 3.5); the Maugis range h0 = w/sigma0 (MODEL §2, "
+           "'memstribo constants') is the explicit alternative", 1e-12, 1e-5,
+           "1 pm to 10 um (thicker than any nanoblock)", optional=True),
     # --- version 2: load case, adhesive interface, verdict (MODEL 7b, 7c) --------------------
     ParameterSpec("load_case", "", "Normal load of the meshing cycle: 'torque' (F_n = F_t / cos alpha_w from the "
                   "drive torque, shared by the pairs in mesh, over the whole face width; MODEL 7b) or 'thesis' "
@@ -166,20 +227,23 @@ _SPECS = [
                   "(D0/max(D, D0))^2 at each block's local gap D, up to vdw_cutoff; MODEL 7c) or 'thesis' (full "
                   "energy inside a band of adhesive_layer_thickness, thesis 3.5)", kind="str",
                   choices=("gap", "thesis")),
-    _positive("vdw_cutoff", "m", "Local gap beyond which vdW bonds are neglected (interface_model 'gap'); a "
-              "numerical parameter: doubling it changes the mean COF by less than 1 %"),
+    _range("vdw_cutoff", "m", "Local gap beyond which vdW bonds are neglected (interface_model 'gap'); a "
+           "numerical parameter: doubling it changes the mean COF by less than 1 %", 1e-10, 1e-6,
+           "from about the contact separation D0 to 1 um (the attraction is 1e-9 of its contact value there)"),
     ParameterSpec("contact_adhesion", "", "Adhesion inside the rough contact solve of the meshing cycle: 'maugis' "
                   "(Maugis-Dugdale cohesive zone, sigma0 and h0 from the constants; MODEL 7c) or 'none'",
                   kind="str", choices=("maugis", "none")),
-    ParameterSpec("mesh_elements_across_contact", "", "Contact elements across the largest Hertz width 2a when "
-                  "mesh_grid_spacing is unset", kind="int", minimum=8, maximum=4096),
-    _positive("friction_averaging_distance", "m", "Sliding distance over which the friction force of the verdict "
-              "averages the dissipated energy (MODEL 7b); unset: atomic_pitch, the distance over which the bond "
-              "population renews", optional=True),
-    ParameterSpec("realisations", "", "Independent roughness realisations of the stiction verdict (ensemble, "
-                  "MODEL 7b)", kind="int", minimum=1, maximum=10000),
-    _positive("ideal_shear_strength", "Pa", "Ideal shear strength of the tooth material: a friction stress above "
-              "it is flagged as a warning (silicon: about 6.8 GPa, Roundy and Cohen 2001)"),
+    _range("mesh_elements_across_contact", "", "Contact elements across the largest Hertz width 2a when "
+           "mesh_grid_spacing is unset", 8, 4096,
+           "8 resolve nothing finer than the Hertz width; 4096 make a step slow", kind="int"),
+    _range("friction_averaging_distance", "m", "Sliding distance over which the friction force of the verdict "
+           "averages the dissipated energy (MODEL 7b); unset: atomic_pitch, the distance over which the bond "
+           "population renews", 1e-11, 1e-4, "from a bond length to the whole sliding of a cycle", optional=True),
+    _range("realisations", "", "Independent roughness realisations of the stiction verdict (ensemble, MODEL 7b)",
+           1, 10000, "1 to 10 000 meshing cycles", kind="int"),
+    _range("ideal_shear_strength", "Pa", "Ideal shear strength of the tooth material: a friction stress above it is "
+           "flagged as a warning (silicon: about 6.8 GPa, Roundy and Cohen 2001)", 1e6, 1e12,
+           "1 MPa to 1 TPa (above the strength of any solid)"),
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}
