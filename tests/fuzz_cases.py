@@ -212,7 +212,7 @@ _STUDIES = {
     "wear_out_of_range": '[study]\nfunction = "mesh"\n[study.fixed]\ncoating = "OTS"\n[study.grid]\nwear = [1.5]\n',
     "steps_too_few": '[study]\nfunction = "mesh"\n[study.grid]\nsteps = [1]\n',
     "steps_huge": '[study]\nfunction = "mesh"\n[study.grid]\nsteps = [100000000]\n',
-    "steps_memory": '[parameters]\nmesh_grid_spacing = "0.1 nm"\n[study]\nfunction = "mesh"\n[study.grid]\nsteps = [90000]\n',
+    "steps_memory": '[parameters]\nmesh_grid_spacing = "0.1 nm"\nmesh_window = "1.2 um"\n[study]\nfunction = "mesh"\n[study.grid]\nsteps = [90000]\n',
     "missing_roughness_file": '[study]\nfunction = "mesh"\n[study.grid]\nroughness = ["nope.txt"]\n',
     "run_table_in_spec": '[run]\nsteps = 5\n[study]\nfunction = "gear"\n[study.grid]\nseed = [1]\n',
     "bad_base_parameter": '[parameters]\nnormal_lod = 1\n[study]\nfunction = "gear"\n[study.grid]\nseed = [1]\n',

@@ -242,7 +242,7 @@ def test_impossible_parameters_are_refused(params, name, value):
 
 def test_memory_of_mesh_and_profiles_is_checked_before_allocating(params):
     with pytest.raises(InputError, match="GiB of memory"):
-        params.updated({"mesh_steps": 100_000, "mesh_grid_spacing": "0.1 nm"})
+        params.updated({"mesh_steps": 100_000, "mesh_grid_spacing": "0.1 nm", "mesh_window": "1.2 um"})
     with pytest.raises(InputError, match="contact elements per step"):
         params.updated({"mesh_window": "1 mm", "mesh_grid_spacing": "0.1 nm"})
     with pytest.raises(InputError, match="points; at most 10,000,000"):

@@ -21,6 +21,9 @@ except PackageNotFoundError:  # running from a source tree that is not installed
 from .errors import ConvergenceError, DataFileError, InputError, MemstriboError  # noqa: E402
 from .parameters import get_parameter_values  # noqa: E402
 
+#: The public API (memstribo.api), imported on first use so that ``import memstribo`` stays quick.
+_API = ("read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run")
+
 __all__ = [
     "__version__",
     "ConvergenceError",
@@ -28,4 +31,13 @@ __all__ = [
     "InputError",
     "MemstriboError",
     "get_parameter_values",
+    *_API,
 ]
+
+
+def __getattr__(name):
+    if name in _API:
+        from . import api
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'memstribo' has no attribute {name!r}")

@@ -29,9 +29,9 @@ def to_si(value, unit: str, name: str = "value") -> float:
 
     Parameters
     ----------
-    value : float, int or str
-        A number (taken as already SI) or a string such as ``"25 uN"``, ``"20 deg"``,
-        ``"195.5nm"``.
+    value : float, int, str or pint.Quantity
+        A number (taken as already SI), a string such as ``"25 uN"``, ``"20 deg"``,
+        ``"195.5nm"``, or a pint quantity (``50 * ureg.uN``, any unit registry).
     unit : str
         The SI unit expected, in pint syntax (``"m"``, ``"N"``, ``"Pa"``, ``"J"``,
         ``"rad"``, ``"N*m"``, ``""`` for dimensionless).
@@ -60,6 +60,12 @@ def to_si(value, unit: str, name: str = "value") -> float:
             result = float(text)
         else:
             result = _parse_quantity(text, unit, name)
+    elif hasattr(value, "magnitude") and hasattr(value, "units"):  # a pint quantity, from any unit registry
+        try:
+            magnitude = float(value.magnitude)
+        except (TypeError, ValueError):
+            raise InputError(f"{name}: expected a scalar quantity, got {printable(repr(value))}.") from None
+        result = _parse_quantity(f"{magnitude!r} {value.units}", unit, name)
     else:
         try:
             result = float(value)
