@@ -23,13 +23,23 @@ class CommandResult:
     title : str
         Heading of the readable output.
     notes : list of str
-        Lines printed after the table (assumptions, files written, warnings).
+        Lines printed after the table (assumptions, files written).
+    warnings : list of str
+        Physical limits passed and numerical trouble (MODEL 7c), as sentences; every command's
+        JSON has the key ``warnings`` (empty when none), merged with ``values["warnings"]``.
     """
 
     values: dict[str, Any]
     units: dict[str, str] = field(default_factory=dict)
     title: str = ""
     notes: list[str] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+
+    def json_values(self) -> dict[str, Any]:
+        """The values with ``warnings`` (a list, possibly empty) always present."""
+        found = list(self.values.get("warnings") or [])
+        found += [w for w in self.warnings if w not in found]
+        return {**self.values, "warnings": found}
 
     def to_text(self) -> str:
         lines = [self.title] if self.title else []
@@ -37,4 +47,6 @@ class CommandResult:
         for key, value in self.values.items():
             lines.append(f"  {key:<{width}}  {format_value(value, self.units.get(key, ''))}")
         lines.extend(self.notes)
+        shown = set(self.values.get("warnings") or [])
+        lines.extend(f"  WARNING: {w}." for w in self.warnings if w not in shown)
         return "\n".join(lines)

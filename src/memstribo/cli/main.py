@@ -132,7 +132,7 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     if result is not None:
         try:
-            print(dumps_json(result.values) if args.json else result.to_text())
+            print(dumps_json(result.json_values()) if args.json else result.to_text())
             sys.stdout.flush()
         except BrokenPipeError:  # e.g. `memstribo ... --json | head`: the reader has gone, not an error
             devnull = os.open(os.devnull, os.O_WRONLY)
