@@ -190,3 +190,19 @@ def test_cli_calibrate_and_percent_wear(cli):
     assert out["vdw_bond_energy_after"] == pytest.approx(out["factor"] * out["vdw_bond_energy_before"])
     half = cli.json("coating", "--wear", "50%", "--steps", str(STEPS))
     assert half["wear"] == 0.5
+
+
+def test_coatings_are_parameter_sets_reached_by_set_and_config(cli, tmp_path):
+    """#11 item 4: --set reaches every coating value; --calibrate --out writes a config that --config reads back."""
+    listed = cli.json("parameters", "--coating", "OTS")
+    assert listed["coating"] == "OTS" and "Israelachvili" in listed["sources"]["hamaker_constant"]
+    changed = cli.json("parameters", "--coating", "OTS", "--set", "coating_work_of_adhesion=0.05 J/m^2")
+    assert changed["work_of_adhesion"] == pytest.approx(0.05) and "--set" in changed["sources"]["work_of_adhesion"]
+    target = tmp_path / "ots_calibrated.toml"
+    record = cli.json("coating", "--calibrate", "0.3", "--steps", "11", "--out", target)
+    assert target.exists() and record["config_file"] == str(target)
+    read_back = cli.json("parameters", "--coating", "OTS", "--config", target)
+    assert read_back["vdw_bond_energy"] == pytest.approx(record["vdw_bond_energy_after"], rel=1e-12)
+    # the calibrated coating gives the target COF through the config file
+    coated = cli.json("coating", "--wear", "0", "--steps", "11", "--config", target)
+    assert coated["cof"] == pytest.approx(0.3, rel=2e-3)

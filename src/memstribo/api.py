@@ -182,7 +182,7 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
 
     params = parameter_set() if params is None else params
     roughness = None if surface is None else read_surface(surface)
-    coating_object = get_coating(coating) if isinstance(coating, str) else coating
+    coating_object = get_coating(coating, params) if isinstance(coating, str) else coating
     dataset = simulate_mesh(params, roughness, steps=steps, coating=coating_object, wear=wear, progress=progress)
     summary = summarize(dataset)
     ensemble = None
@@ -225,7 +225,7 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
         raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load', 'torque' or 'area'.")
     numbers = [to_si(_plain(v), units[parameter], parameter) for v in values]
     roughness = None if surface is None else read_surface(surface)
-    coating_object = get_coating(coating) if isinstance(coating, str) else coating
+    coating_object = get_coating(coating, params) if isinstance(coating, str) else coating
     points = mesh_sweep(params, parameter, numbers, roughness, steps=steps, coating=coating_object, wear=wear,
                         progress=progress)
     dim = {"load": "normal_load", "torque": "drive_torque", "area": "area_multiple"}[parameter]

@@ -38,7 +38,7 @@ from typing import Any
 import numpy as np
 
 from .errors import InputError, MemstriboError, did_you_mean
-from .output import dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
+from .output import atomic_write_text, dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
 
 __all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain", "STAGES", "cycle_summary",
            "verdict"]
@@ -618,9 +618,7 @@ class RunChain:
     def _json(self, value, stem):
         path = self.folder / "data" / f"{stem}.json"
         ensure_directory(path.parent)
-        tmp = path.with_name(path.name + ".tmp")
-        tmp.write_text(dumps_json(value), encoding="utf-8")
-        tmp.replace(path)
+        atomic_write_text(path, dumps_json(value))
         self._files([path])
 
     # stages --------------------------------------------------------------------------------------
@@ -755,7 +753,7 @@ class RunChain:
         mesh = _module("mesh")
         coating_object = None
         if coating is not None:
-            coating_object = _module("coating").get_coating(coating)
+            coating_object = _module("coating").get_coating(coating, params)
         return mesh.simulate_mesh(params, self.results["mesh_profile"], steps=self.options.steps,
                                   coating=coating_object, wear=wear)
 
@@ -922,10 +920,7 @@ class RunChain:
         return self._finish(time.perf_counter() - start, validation)
 
     def _write_text(self, name, text):
-        path = self.folder / name
-        tmp = path.with_name(path.name + ".tmp")
-        tmp.write_text(text, encoding="utf-8")
-        tmp.replace(path)
+        atomic_write_text(self.folder / name, text)
 
     def _finish(self, elapsed, validation=None) -> RunResult:
         from .references import used_references

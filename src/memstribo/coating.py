@@ -107,13 +107,17 @@ def available_coatings() -> list[str]:
 
 
 @cites("israelachvili_2011", "srinivasan_1998", "thesis")
-def get_coating(name: str = "OTS") -> Coating:
-    """The coating parameter set ``name`` (case-insensitive).
+def get_coating(name: str = "OTS", params=None) -> Coating:
+    """The coating parameter set ``name`` (case-insensitive), with the overrides of ``params``.
 
     Parameters
     ----------
     name : str
         ``"OTS"`` (octadecyltrichlorosilane, the thesis's coating, default) or ``"FDTS"``.
+    params : memstribo.parameters.Parameters, optional
+        Its ``coating_*`` parameters that are set (``--set coating_vdw_bond_energy=...``, a
+        config file from ``memstribo coating --calibrate --out``) replace the coating's values;
+        each replaced value's source says where it came from.
 
     Returns
     -------
@@ -138,8 +142,34 @@ def get_coating(name: str = "OTS") -> Coating:
             raise InputError(f"coating file {key}: {prop} must be given in {_UNITS[prop]}, not {entry.get('unit')!r}.")
         values[prop] = float(entry["value"])
         sources[prop] = entry["source"]
+    if params is not None:
+        for prop in _OVERRIDABLE:
+            value = params[f"coating_{prop}"] if f"coating_{prop}" in params else None
+            if value is not None:
+                values[prop] = float(value)
+                sources[prop] = f"parameter coating_{prop} ({params.source(f'coating_{prop}')})"
     return Coating(name=data["meta"]["name"], description=data["meta"].get("description", ""), sources=sources,
                    **values)
+
+
+#: Coating properties that the parameters ``coating_<property>`` override.
+_OVERRIDABLE = ("vdw_bond_energy", "hamaker_constant", "cutoff_distance", "work_of_adhesion")
+
+
+def coating_config(coating: Coating, note: str = "") -> str:
+    """A config file (TOML, ``[parameters]``) that sets ``coating``'s overridable values.
+
+    ``memstribo --config FILE`` reads it back: the ``coating_*`` parameters then replace the
+    coating set's values wherever that coating is used (:func:`get_coating` with the parameters).
+    """
+    import tomli_w
+
+    table = {f"coating_{prop}": {"value": float(getattr(coating, prop)), "unit": _UNITS[prop],
+                                 "source": coating.sources.get(prop, "") + (f"; {note}" if note else "")}
+             for prop in _OVERRIDABLE}
+    header = (f"# memstribo config: the {coating.name} coating's values ({note or 'as given'}).\n"
+              "# Use it with --config FILE (or copy the [parameters] entries into your own config).\n")
+    return header + tomli_w.dumps({"parameters": table})
 
 
 def check_wear(wear) -> np.ndarray:
@@ -214,7 +244,7 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
     from . import mesh
 
     if isinstance(coating, str):
-        coating = get_coating(coating)
+        coating = get_coating(coating, params)
     omega = np.atleast_1d(check_wear(wears))
     rows = {key: np.empty(omega.size) for key in SWEEP_VARIABLES}
     states = enumerate(omega)
@@ -301,7 +331,7 @@ def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float 
     from . import mesh
 
     if isinstance(coating, str):
-        coating = get_coating(coating)
+        coating = get_coating(coating, params)
     if not (0 < target_cof < 10):
         raise InputError(f"target_cof must be a COF between 0 and 10, got {target_cof!r}.")
     current = coating

@@ -37,11 +37,26 @@ def ensure_directory(path: str | Path) -> Path:
     return path
 
 
-def _atomic_write(path: Path, write) -> Path:
+def atomic_write(path: Path, write) -> Path:
+    """Write ``path`` through ``write(tmp)`` into ``path.tmp`` and rename it: a reader (or a killed
+    run) never sees a half-written file. The one atomic-write helper of memstribo."""
+    path = Path(path)
     tmp = path.with_name(path.name + ".tmp")
-    write(tmp)
-    os.replace(tmp, path)
+    try:
+        write(tmp)
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
     return path
+
+
+def atomic_write_text(path: Path, text: str) -> Path:
+    """Write ``text`` (UTF-8) to ``path`` atomically (:func:`atomic_write`)."""
+    return atomic_write(Path(path), lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+
+
+_atomic_write = atomic_write
 
 
 def write_dataset(dataset, folder: str | Path, stem: str, csv: bool = True, *,

@@ -940,10 +940,11 @@ def write_profile(profile: Profile, path) -> Path:
     header = (f"{profile.name} ({kind})\nsource: {profile.source}\n"
               f"{profile.n_points} points; columns: x [m], height [m] (written by memstribo)")
     delimiter = "," if path.suffix.lower() == ".csv" else " "
-    tmp = path.with_name(path.name + ".tmp")
+    from .output import atomic_write
+
     try:
-        np.savetxt(tmp, np.column_stack([profile.x, profile.z]), fmt="%.17g", delimiter=delimiter, header=header)
-        tmp.replace(path)
+        atomic_write(path, lambda tmp: np.savetxt(tmp, np.column_stack([profile.x, profile.z]), fmt="%.17g",
+                                                  delimiter=delimiter, header=header))
     except OSError as exc:
         raise InputError(f"cannot write '{path}': {exc.strerror}.") from None
     return path

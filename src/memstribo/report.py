@@ -308,8 +308,6 @@ def render_report(result, validation=None) -> str:
 
 def write_report(result, path: str | Path, validation=None) -> Path:
     """Write :func:`render_report` to ``path`` atomically; return the path."""
-    path = Path(path)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(render_report(result, validation), encoding="utf-8")
-    tmp.replace(path)
-    return path
+    from .output import atomic_write_text
+
+    return atomic_write_text(Path(path), render_report(result, validation))

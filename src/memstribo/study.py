@@ -432,7 +432,7 @@ def mesh_point(params, coating: str | None = None, wear: float = 1.0, roughness:
     if coating is not None:
         from .coating import get_coating
 
-        coating_object = get_coating(coating)
+        coating_object = get_coating(coating, params)
     dataset = mesh.simulate_mesh(params, _read_roughness(roughness), steps=steps, coating=coating_object,
                                  wear=wear)
     return mesh.summarize(dataset)
@@ -536,12 +536,16 @@ def evaluate_point(function, params, options: Mapping[str, Any]) -> dict[str, An
 # --- running -------------------------------------------------------------------------------------------
 
 def _write_json_atomic(path: Path, value: Any) -> None:
-    tmp = path.with_name(path.name + ".tmp")
-    with open(tmp, "w", encoding="utf-8") as handle:
-        handle.write(dumps_json(value))
-        handle.flush()
-        os.fsync(handle.fileno())
-    os.replace(tmp, path)
+    """One point's result, durable before the rename (fsync): a killed study loses no finished point."""
+    from .output import atomic_write
+
+    def write(tmp):
+        with open(tmp, "w", encoding="utf-8") as handle:
+            handle.write(dumps_json(value))
+            handle.flush()
+            os.fsync(handle.fileno())
+
+    atomic_write(path, write)
 
 
 def _finished_points(folder: Path, ids: set[str]) -> dict[str, dict]:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from .common import CommandResult, format_value
 
 NAME = "coating"
@@ -21,7 +23,8 @@ def register(subparsers, parents):
                         help="normal load of the meshing cycles: 'torque' (default) or 'thesis' (normal_load, 25 uN)")
     parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and figures (COF vs Omega, "
-                                                     "friction vs tangential force) to DIR")
+                                                     "friction vs tangential force) to DIR; with --calibrate: the "
+                                                     "config FILE (TOML) to write")
     parser.add_argument("--progress", action="store_true", help="show a progress bar on stderr (shown anyway when stderr is a terminal)")
     parser.add_argument("--calibrate", nargs="?", const=0.185, type=float, metavar="COF",
                         help="instead of a sweep: scale the coating's U_vdW so that the fully coated pair "
@@ -53,7 +56,7 @@ def run(args, params):
     from .mesh import apply_load_case
 
     params = apply_load_case(args, params)
-    coating = get_coating(args.coating)
+    coating = get_coating(args.coating, params)
     if args.calibrate is not None:
         return _calibrate(args, params, coating)
     wears = parse_wear_list(params["coating_wear"] if args.wear is None else args.wear)
@@ -118,12 +121,22 @@ def _write_outputs(sweep, coating, folder, provenance=None) -> list[str]:
 
 
 def _calibrate(args, params, coating):
-    from ..coating import calibrate_vdw_bond_energy
+    from ..coating import calibrate_vdw_bond_energy, coating_config
+    from ..output import atomic_write_text
 
     calibrated, record = calibrate_vdw_bond_energy(params, coating, args.calibrate, steps=args.steps)
     values = {"coating": coating.name, "target_cof": args.calibrate, **record,
-              "factor": record["vdw_bond_energy_after"] / record["vdw_bond_energy_before"]}
+              "factor": record["vdw_bond_energy_after"] / record["vdw_bond_energy_before"],
+              "load_case": params["load_case"], "interface_model": params["interface_model"]}
     units = {}  # U_vdW [J] printed as plain numbers: 6.863e-22 reads better than 0.0006863 aJ
-    notes = [f"  put vdw_bond_energy = {calibrated.vdw_bond_energy:.4g} J into coatings/{coating.name.lower()}.toml "
-             "to make it the default"]
+    note = (f"calibrated to COF {args.calibrate:g} at Omega = 0 by 'memstribo coating --calibrate' (load case "
+            f"{params['load_case']}, interface model {params['interface_model']})")
+    if args.out:
+        path = atomic_write_text(Path(args.out), coating_config(calibrated, note))
+        values["config_file"] = str(path)
+        notes = [f"  wrote {path}: use it with --config {path} (it sets coating_vdw_bond_energy and the other "
+                 "coating_* parameters)"]
+    else:
+        notes = [f"  calibrated vdw_bond_energy = {calibrated.vdw_bond_energy:.4g} J; '--out FILE' writes it as a "
+                 "config file that --config FILE reads back"]
     return CommandResult(values=values, units=units, title=f"calibration of {coating.name}'s U_vdW", notes=notes)

@@ -82,7 +82,7 @@ def run(args, params):
         from ..parameters import check_mesh_size
 
         check_mesh_size(args.steps, params["mesh_window"], params["mesh_grid_spacing"], what="--steps")
-    coating = get_coating(args.coating)
+    coating = get_coating(args.coating, params)
     c1_known = params["damage_coefficient"] is not None or args.observed_life is not None
     mesh_dataset = None
     notes = []

@@ -58,7 +58,7 @@ def add_common_arguments(parser):
                                                                   "a terminal)")
 
 
-def simulation_options(args):
+def simulation_options(args, params=None):
     """Keyword arguments of :func:`memstribo.mesh.simulate_mesh` from the command line."""
     from ..errors import InputError
 
@@ -66,7 +66,7 @@ def simulation_options(args):
     if args.coating:
         from ..coating import get_coating
 
-        coating = get_coating(args.coating)
+        coating = get_coating(args.coating, params)
     elif args.wear != 1.0:
         raise InputError("--wear needs --coating (bare silicon has no coating to wear).")
     if args.steps is not None and args.steps < 3:
@@ -87,7 +87,7 @@ def run(args, params):
     from ..mesh import SUMMARY_UNITS, simulate_ensemble, simulate_mesh, step_convergence, summarize
 
     params = apply_load_case(args, params)
-    options = simulation_options(args)
+    options = simulation_options(args, params)
     realisations = params["realisations"] if args.realisations is None else args.realisations
     if realisations < 1:
         raise InputError(f"--realisations must be at least 1, got {realisations}.")

@@ -12,12 +12,17 @@ ORDER = 90
 def register(subparsers, parents):
     parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=HELP)
     parser.add_argument("--toml", action="store_true", help="print the parameters as TOML (a valid --config file)")
+    parser.add_argument("--coating", metavar="NAME",
+                        help="list a coating's parameter set instead (OTS, FDTS), with the values that --set "
+                             "coating_<property>=... or a config file replace")
     parser.set_defaults(handler=run)
 
 
 def run(args, params):
     from ..parameters import SPECS
 
+    if args.coating:
+        return _coating(args, params)
     if args.toml:
         print(params.to_toml(), end="")
         return None
@@ -32,3 +37,25 @@ def run(args, params):
             lines.append(f"  {'':<28} allowed: {spec.allowed()}" + (f"; {spec.why}" if spec.why else ""))
         lines.append(f"  {'':<28} source: {params.source(name)}")
     return CommandResult(values={}, title=f"parameter set '{params.name}'", notes=lines)
+
+
+def _coating(args, params):
+    """The coating's parameter set, each value with its unit and source (overrides applied)."""
+    from ..coating import _UNITS, coating_config, get_coating
+
+    coating = get_coating(args.coating, params)
+    names = ("vdw_bond_energy", "hamaker_constant", "cutoff_distance", "work_of_adhesion", "water_contact_angle_deg")
+    if args.toml:
+        print(coating_config(coating, "as listed by 'memstribo parameters --coating'"), end="")
+        return None
+    values = {"coating": coating.name, **{name: getattr(coating, name) for name in names},
+              "sources": {name: coating.sources.get(name, "") for name in names}}
+    if args.json:
+        return CommandResult(values=values, units={name: _UNITS[name] for name in names})
+    lines = []
+    for name in names:
+        unit = _UNITS[name]
+        lines.append(f"  {name:<24} {format_quantity(getattr(coating, name), unit):<16} "
+                     + ("(--set coating_" + name + "=...)" if name != "water_contact_angle_deg" else "(informative)"))
+        lines.append(f"  {'':<24} source: {coating.sources.get(name, '')}")
+    return CommandResult(values={}, title=f"coating '{coating.name}': {coating.description}", notes=lines)

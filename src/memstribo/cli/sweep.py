@@ -62,7 +62,7 @@ def run(args, params):
 
     params = apply_load_case(args, params)
     values = parse_values(args.values or _DEFAULTS[args.parameter], _UNITS[args.parameter])
-    options = simulation_options(args)
+    options = simulation_options(args, params)
     progress = options.pop("progress")
     roughness = args.roughness
     if roughness == "thesis":

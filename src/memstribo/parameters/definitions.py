@@ -241,6 +241,16 @@ _SPECS = [
            "population renews", 1e-11, 1e-4, "from a bond length to the whole sliding of a cycle", optional=True),
     _range("realisations", "", "Independent roughness realisations of the stiction verdict (ensemble, MODEL 7b)",
            1, 10000, "1 to 10 000 meshing cycles", kind="int"),
+    # --- coating properties: unset = the coating's own parameter set (coatings/*.toml) -------------
+    _range("coating_vdw_bond_energy", "J", "U_vdW of the coated pair; unset: the coating's parameter set "
+           "('memstribo parameters --coating NAME')", 1e-25, 1e-19, "weaker than a silicon vdW bond by up to 4 "
+           "decades, never stronger than a chemical bond", optional=True),
+    _range("coating_hamaker_constant", "J", "Hamaker constant A of the coated pair; unset: the coating's set",
+           1e-22, 1e-17, "Hamaker constants of solids lie between 1e-21 J and 5e-19 J", optional=True),
+    _range("coating_cutoff_distance", "m", "Contact separation D0 of the coated pair; unset: the coating's set",
+           5e-11, 1e-9, _ATOMIC, optional=True),
+    _range("coating_work_of_adhesion", "J/m^2", "Work of adhesion of the coated pair; unset: the coating's set",
+           1e-6, 10.0, "surface energies of solids are below 5 J/m^2", optional=True),
     _range("ideal_shear_strength", "Pa", "Ideal shear strength of the tooth material: a friction stress above it is "
            "flagged as a warning (silicon: about 6.8 GPa, Roundy and Cohen 2001)", 1e6, 1e12,
            "1 MPa to 1 TPa (above the strength of any solid)"),

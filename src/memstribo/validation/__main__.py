@@ -112,9 +112,9 @@ def main(argv: list[str] | None = None) -> int:
             return 1
         print(f"{path} is up to date")
         return 0
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(text, encoding="utf-8")
-    tmp.replace(path)
+    from ..output import atomic_write_text
+
+    atomic_write_text(path, text)
     print(f"wrote {path}")
     return 0
 
