@@ -64,20 +64,8 @@ DEPENDS: dict[str, tuple[str, ...]] = {
     "coated": ("roughness", "geometry"), "wear_sweep": ("roughness", "geometry"), "damage": ("coated",),
 }
 
-_RUN_KEYS = {
-    "steps": "positions along the path of contact in each meshing simulation (default: the model's)",
-    "loads": "external loads of the load sweep (default 25 to 300 uN in 25 uN steps, thesis 4.9.3)",
-    "areas": "nominal contact areas of the area sweep, in multiples of A_adh = w_adh^2 (default 1, 2, 4, 8, 16)",
-    "wear": "worn fractions Omega of the wear sweep (default 0, 0.2, 0.4, 0.6, 0.8, 1)",
-    "coating": "coating of the coated stages (default 'OTS')",
-    "roughness_files": "measured profiles / AFM files to analyse besides the default synthetic profile",
-    "mesh_roughness": "which profile the meshing stages use: 'synthetic' (default) or the index of roughness_files",
-    "stages": "stages to run (default: all)",
-    "validation": "put the validation table into report.html (default true; computed at the end of the run)",
-    "sliding_distance": "sliding distance of the structure in the sliding stage (default: the model's)",
-    "cycles_observed": "observed coating life [meshing cycles] to calibrate c1 (default: none)",
-    "realisations": "independent roughness realisations of the bare verdict (default 16: a 5-95 % band)",
-}
+from .parameters import RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR  # noqa: E402
+from .parameters import RUN_KEYS as _RUN_KEYS  # noqa: E402  (the [run] table's keys live with the config reader)
 
 
 @dataclass(frozen=True)
@@ -115,8 +103,8 @@ class RunOptions:
     steps: int | None = None
     loads: tuple[float, ...] = (25e-6, 50e-6, 100e-6, 150e-6, 200e-6, 300e-6)
     areas: tuple[float, ...] = (1.0, 2.0, 4.0, 8.0, 16.0)
-    wear: tuple[float, ...] = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)
-    coating: str = "OTS"
+    wear: tuple[float, ...] = RUN_DEFAULT_WEAR
+    coating: str = RUN_DEFAULT_COATING
     roughness_files: tuple[str, ...] = ()
     mesh_roughness: Any = "synthetic"
     stages: tuple[str, ...] = tuple(STAGES)
@@ -301,19 +289,14 @@ class RunResult:
         return all(s.status == "done" for s in self.stages if s.name in self.options.stages)
 
 
-def _module(name: str):
-    """Import ``memstribo.<name>`` when its stage runs (keeps ``import memstribo.chain`` light)."""
-    import importlib
-
-    return importlib.import_module(f"memstribo.{name}")
-
-
 def cycle_summary(dataset) -> dict[str, Any]:
     """Scalars of one meshing cycle: :func:`memstribo.mesh.summarize` (the keys of ``memstribo mesh --json``).
 
     Units of the keys are in :data:`memstribo.mesh.SUMMARY_UNITS`.
     """
-    return _module("mesh").summarize(dataset)
+    from .mesh import summarize
+
+    return summarize(dataset)
 
 
 def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
@@ -547,7 +530,7 @@ def _sweep_dataset(dimension, values, unit, long_name, summaries):
     """Summaries (:func:`memstribo.mesh.summarize`) of a sweep as a Dataset over ``dimension``."""
     import xarray as xr
 
-    units = _module("mesh").SUMMARY_UNITS
+    from .mesh import SUMMARY_UNITS as units
     data = {key: (dimension, np.array([float(s[key]) for s in summaries], dtype=float),
                   {"units": units.get(key, ""), "long_name": key.replace("_", " ")}) for key in units
             if all(key in s and isinstance(s[key], (int, float, np.number)) for s in summaries)}
@@ -624,11 +607,11 @@ class RunChain:
     # stages --------------------------------------------------------------------------------------
     def roughness(self):
         """Default synthetic profile and measured files: statistics (ISO 4287) and figure."""
-        roughness = _module("roughness")
+        from . import roughness
         profiles = [roughness.default_profile(self.params)]
         surfaces = [None]  # what the meshing cycle gets: None is the synthetic default, else the file's surface
         for path in self.options.roughness_files:
-            readers = _module("readers")
+            from . import readers
             surface = readers.read_topography(path)
             if not isinstance(surface, roughness.Profile):
                 rows = surface.line_scans()
@@ -670,7 +653,7 @@ class RunChain:
 
     def geometry(self):
         """Nanoblock geometry from the parameters, and derived from each profile (with the rules used)."""
-        geometry = _module("nanoblock.geometry")
+        from .nanoblock import geometry
         rows = {"parameters": geometry.NanoblockGeometry.from_parameters(self.params)}
         notes = []
         for profile in self.results["profiles"]:
@@ -711,7 +694,7 @@ class RunChain:
     def sliding(self):
         """A single nanoblock on a flat at the external load (2.6.2) and the hierarchical structure sliding on
         the rough profile under a fixed load (3.4.2, 3.6): friction, COF and its split over the distance."""
-        sliding = _module("sliding")
+        from . import sliding
         summaries = {}
         for model, profile, distance, stem in (
                 ("single", None, None, "sliding_single"),
@@ -739,7 +722,7 @@ class RunChain:
         """Gear pair geometry, Hertz contact at the pitch point and F_t (4-27)."""
         from .gear import gear_summary
 
-        gear = _module("gear")
+        from . import gear
         values, units = gear_summary(self.params)
         self._json({"values": values, "units": units}, "gear")
         self.summaries["gear"] = values
@@ -750,10 +733,12 @@ class RunChain:
                      "(4-12, signed radii) and Hertz half-width (4-24) at the external load.")
 
     def _simulate(self, params, coating=None, wear=1.0):
-        mesh = _module("mesh")
+        from . import mesh
         coating_object = None
         if coating is not None:
-            coating_object = _module("coating").get_coating(coating, params)
+            from .coating import get_coating
+
+            coating_object = get_coating(coating, params)
         return mesh.simulate_mesh(params, self.results["mesh_profile"], steps=self.options.steps,
                                   coating=coating_object, wear=wear)
 
@@ -764,7 +749,7 @@ class RunChain:
     def mesh(self):
         """The bare-silicon meshing cycle (thesis 4.9, MODEL 7b): forces, COF and its split, energies, the
         stiction verdict over an ensemble of roughness realisations and its step convergence."""
-        mesh = _module("mesh")
+        from . import mesh
         dataset = self._simulate(self.model_params)
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
@@ -794,7 +779,7 @@ class RunChain:
 
     def load_sweep(self):
         """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
-        mesh = _module("mesh")
+        from . import mesh
         summaries = [mesh.sweep(self.model_params, "load", [load], self.results["mesh_profile"], steps=self.options.steps)[0]
                      for load in self._tick(self.options.loads, "load sweep")]
         dataset = _sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
@@ -810,7 +795,7 @@ class RunChain:
         As :func:`memstribo.mesh.sweep` (``"area"``): the face width is set to k w_adh, so that k rows of
         nanoblocks share the load.
         """
-        mesh = _module("mesh")
+        from . import mesh
         summaries = [mesh.sweep(self.model_params, "area", [k], self.results["mesh_profile"], steps=self.options.steps)[0]
                      for k in self._tick(self.options.areas, "area sweep")]
         dataset = _sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
@@ -837,7 +822,7 @@ class RunChain:
 
     def wear_sweep(self):
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
-        coating = _module("coating")
+        from . import coating
         dataset = coating.wear_sweep(self.model_params, self.options.coating, list(self.options.wear),
                                      roughness=self.results["mesh_profile"], steps=self.options.steps)
         self._dataset(dataset, "wear_sweep")
@@ -853,7 +838,7 @@ class RunChain:
 
     def damage(self):
         """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
-        damage = _module("damage")
+        from . import damage
         outcome = damage.run_damage(self.model_params, self.results["coated"], wear_sweep=self.results.get("wear_sweep"),
                       cycles_observed=self.options.cycles_observed)
         self.summaries["damage"] = dict(outcome.summary)

@@ -44,7 +44,6 @@ Spec file (TOML)::
 from __future__ import annotations
 
 import hashlib
-import importlib
 import itertools
 import json
 import logging
@@ -461,13 +460,20 @@ def slide_point(params, coating: str | None = None, wear: float = 1.0, roughness
 
 #: memstribo's own point functions, by name: the only ones a study spec file may name.
 #: ``register_point_function`` adds one through the Python API (in this process).
-POINT_FUNCTIONS: dict[str, Callable | str] = {
-    "mesh": "memstribo.study:mesh_point",
-    "gear": "memstribo.study:gear_point",
-    "slide": "memstribo.study:slide_point",
+POINT_FUNCTIONS: dict[str, Callable] = {
+    "mesh": mesh_point,
+    "gear": gear_point,
+    "slide": slide_point,
 }
 
-_UNITS_OF = {"slide": ("memstribo.sliding", "UNITS")}
+
+def _units_of_slide():
+    from .sliding import UNITS
+
+    return UNITS
+
+
+_UNITS_OF = {"slide": _units_of_slide}
 
 
 def register_point_function(name: str, function: Callable) -> None:
@@ -503,10 +509,7 @@ def resolve_function(function) -> Callable:
     if target is None:
         raise InputError(f"unknown point function '{printable(function, 60)}': use one of {sorted(POINT_FUNCTIONS)}."
                          f"{did_you_mean(str(function), POINT_FUNCTIONS)}")
-    if callable(target):
-        return target
-    module_name, _, attribute = target.partition(":")
-    return getattr(importlib.import_module(module_name), attribute)
+    return target
 
 
 def evaluate_point(function, params, options: Mapping[str, Any]) -> dict[str, Any]:
@@ -769,9 +772,7 @@ def _result_units(spec: StudySpec | None) -> dict[str, str]:
         return {}
     units = getattr(function, "units", None)
     if units is None and spec.function in _UNITS_OF:
-        module_name, attribute = _UNITS_OF[spec.function]
-        if attribute:
-            units = getattr(importlib.import_module(module_name), attribute, None)
+        units = _UNITS_OF[spec.function]()
     if units is None and spec.function == "mesh":
         try:
             from . import mesh

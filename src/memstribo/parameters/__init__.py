@@ -23,7 +23,7 @@ from typing import Any
 
 from ..errors import InputError, did_you_mean
 from ..units import printable, to_si
-from .definitions import MEMORY_LIMIT_BYTES, SPECS, ParameterSpec
+from .definitions import MEMORY_LIMIT_BYTES, RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR, RUN_KEYS, SPECS, ParameterSpec
 
 __all__ = [
     "SPECS",
@@ -365,7 +365,7 @@ def read_config(path: str | Path) -> dict[str, Any]:
                              f"{did_you_mean(key, list(SPECS) + allowed_tables)} Run 'memstribo parameters' to list "
                              "them.")
     if "run" in other:
-        from ..chain import _RUN_KEYS  # the keys of [run]; values are checked by 'memstribo run'
+        _RUN_KEYS = RUN_KEYS  # the keys of [run]; values are checked by 'memstribo run'
 
         for key in other["run"]:
             if key not in _RUN_KEYS:

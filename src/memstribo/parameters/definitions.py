@@ -257,3 +257,24 @@ _SPECS = [
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}
+
+
+#: Keys of the ``[run]`` table of a config file (the main job, ``memstribo run``), with what each sets.
+RUN_KEYS = {
+    "steps": "positions along the path of contact in each meshing simulation (default: the model's)",
+    "loads": "external loads of the load sweep (default 25 to 300 uN in 25 uN steps, thesis 4.9.3)",
+    "areas": "nominal contact areas of the area sweep, in multiples of A_adh = w_adh^2 (default 1, 2, 4, 8, 16)",
+    "wear": "worn fractions Omega of the wear sweep (default 0, 0.2, 0.4, 0.6, 0.8, 1)",
+    "coating": "coating of the coated stages (default 'OTS')",
+    "roughness_files": "measured profiles / AFM files to analyse besides the default synthetic profile",
+    "mesh_roughness": "which profile the meshing stages use: 'synthetic' (default) or the index of roughness_files",
+    "stages": "stages to run (default: all)",
+    "validation": "put the validation table into report.html (default true; computed at the end of the run)",
+    "sliding_distance": "sliding distance of the structure in the sliding stage (default: the model's)",
+    "cycles_observed": "observed coating life [meshing cycles] to calibrate c1 (default: none)",
+    "realisations": "independent roughness realisations of the bare verdict (default 16: a 5-95 % band)",
+}
+
+#: Defaults of the ``[run]`` table that other layers need too (the validation of the run's verdict).
+RUN_DEFAULT_COATING = "OTS"
+RUN_DEFAULT_WEAR = (0.0, 0.2, 0.4, 0.6, 0.8, 1.0)

@@ -18,7 +18,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from . import ValidationRow, all_rows
+from . import all_rows
+from .rows import ValidationRow
 
 def _default_output() -> Path:
     """docs/validation.md of the source checkout this module runs from, else ./validation.md."""

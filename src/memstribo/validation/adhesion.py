@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 TOPIC = "nanoscale physics"
 CONSTANTS = "memstribo constants --json"

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 COMMAND = "memstribo coating --wear 0,0.2,0.8,1 --load-case thesis --set interface_model=thesis --json"
 

@@ -6,7 +6,7 @@ import contextlib
 import io
 import json
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 HERTZ_ARGS = ["contact", "--flat", "--radius", "20 um", "--load", "1 N/m", "--modulus", "100 GPa",
               "--points", "2048", "--length", "127.7 nm"]

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..thesis_tables import TABLE_5_1, TABLE_5_2, TABLE_5_3, TABLE_5_4
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 TABLE_5_2_NM = TABLE_5_2 * 1e9
 POSITIONS = ("corner", "side", "central")

@@ -3,7 +3,7 @@ nanoblock of 2.6.2 and the energy shares of the sliding simulation of 3.6 (MODEL
 
 from __future__ import annotations
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 _SLIDE = "memstribo slide --model {model} --json"
 

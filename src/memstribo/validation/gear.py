@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 COMMAND = "memstribo gear --json"
 

@@ -8,7 +8,7 @@ vdW at the actual gap (``interface_model = gap``), MODEL 7b and 7c.
 
 from __future__ import annotations
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 MESH = "memstribo mesh --json"
 THESIS = "--load-case thesis --set interface_model=thesis"

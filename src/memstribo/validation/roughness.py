@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 AFM = Path(__file__).resolve().parents[3] / "data" / "afm"
 README = "data/afm/README.md (SurfaceTopography 1.25, height detrend)"

@@ -7,18 +7,18 @@ fractions, :func:`memstribo.coating.critical_wear`).
 
 from __future__ import annotations
 
-from . import ValidationRow, compare
+from .rows import ValidationRow, compare
 
 COMMAND = "memstribo run --json"
 
 
 def rows() -> list[ValidationRow]:
-    from ..chain import RunOptions
+    from ..parameters import RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR
     from ..coating import critical_wear, wear_sweep
     from ..parameters import get_parameter_values
 
-    options = RunOptions()
-    sweep = wear_sweep(get_parameter_values(), options.coating, list(options.wear))
+    # the run's default coating and wear states ([run] coating, wear)
+    sweep = wear_sweep(get_parameter_values(), RUN_DEFAULT_COATING, list(RUN_DEFAULT_WEAR))
     margin = sweep["stiction_margin"].values
     coated_free = bool(margin[0] > 0)
     out = [ValidationRow(

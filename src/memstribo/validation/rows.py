@@ -1,0 +1,68 @@
+"""One row of docs/validation.md: memstribo against a reference, and the rule that judges it."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+__all__ = ["ValidationRow", "compare"]
+
+
+@dataclass(frozen=True)
+class ValidationRow:
+    """One comparison of memstribo with a reference.
+
+    Attributes
+    ----------
+    topic : str
+        Section of the table ("adhesion", "contact", ...).
+    quantity : str
+        What is compared, e.g. "work of adhesion w12".
+    reference : str
+        Where the reference value comes from: "thesis 3.5 (3-34)", "Hertz closed form", ...
+    reference_value : float or None
+        The reference number in ``unit`` (None where the reference is a trend or an invariant).
+    value : float or None
+        memstribo's number in ``unit``.
+    unit : str
+        Unit of both numbers as displayed (e.g. "nm", "J/m^2", "" for none).
+    tolerance : str
+        The tolerance stated, e.g. "rel 1e-3" or "abs 0.05"; "differs (see note)" where it is not met on purpose.
+    agrees : bool
+        Whether the value is within the tolerance.
+    command : str
+        The command that prints memstribo's value (e.g. "memstribo constants --json").
+    note : str
+        Why the values differ, or how the comparison is made.
+    shown_as_bound : bool
+        The value is a residual at round-off level (reference 0, absolute tolerance): the
+        table shows it as the bound it meets ("< 2e-07"), never as digits, because its
+        digits depend on the platform and library versions.
+    """
+
+    topic: str
+    quantity: str
+    reference: str
+    reference_value: float | None
+    value: float | None
+    unit: str
+    tolerance: str
+    agrees: bool
+    command: str
+    note: str = ""
+    shown_as_bound: bool = False
+
+
+def compare(topic, quantity, reference, reference_value, value, unit="", *, rtol=None, atol=None,
+            command="", note="") -> ValidationRow:
+    """Build a row, judging agreement by ``rtol`` (relative) and/or ``atol`` (absolute)."""
+    if reference_value is None or value is None:
+        raise ValueError("compare() needs both values; build a ValidationRow directly for trends")
+    rtol_ = 0.0 if rtol is None else rtol
+    atol_ = 0.0 if atol is None else atol
+    agrees = math.isclose(value, reference_value, rel_tol=rtol_, abs_tol=atol_)
+    parts = ([f"rel {rtol:g}"] if rtol is not None else []) + ([f"abs {atol:g}"] if atol is not None else [])
+    # A residual (reference 0) that meets a non-zero absolute tolerance is round-off: show the bound.
+    residual = reference_value == 0 and rtol is None and atol_ > 0 and agrees and value != 0
+    return ValidationRow(topic, quantity, reference, float(reference_value), float(value), unit,
+                         " or ".join(parts) or "exact", agrees, command, note, shown_as_bound=residual)

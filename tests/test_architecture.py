@@ -1,0 +1,111 @@
+"""The package's import graph (#11 item 6): built from every import statement, including those inside
+functions; no cycles, the command line imported only by itself, no module loaded by name."""
+
+import ast
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parent.parent / "src" / "memstribo"
+
+
+def _module_name(path: Path) -> str:
+    parts = list(path.relative_to(SRC.parent).with_suffix("").parts)
+    if parts[-1] == "__init__":
+        parts = parts[:-1]
+    return ".".join(parts)
+
+
+def _resolve(module: str, is_package: bool, level: int, target: str | None) -> str:
+    base = module.split(".") if is_package else module.split(".")[:-1]
+    if level:
+        base = base[: len(base) - (level - 1)]
+        return ".".join(base + ([target] if target else []))
+    return target or ""
+
+
+def import_graph() -> dict[str, set[str]]:
+    """memstribo module -> the memstribo modules it imports (anywhere in the file)."""
+    modules = {_module_name(p): p for p in SRC.rglob("*.py")}
+    graph = {name: set() for name in modules}
+    for name, path in modules.items():
+        is_package = path.name == "__init__.py"
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            targets = []
+            if isinstance(node, ast.Import):
+                targets = [alias.name for alias in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                base = _resolve(name, is_package, node.level, node.module)
+                targets = [base] + [f"{base}.{alias.name}" for alias in node.names]
+            for target in targets:
+                if target.startswith("memstribo"):
+                    # an imported name that is a module counts as that module, else its package
+                    while target and target not in modules:
+                        target = target.rpartition(".")[0]
+                    if target and target != name:
+                        graph[name].add(target)
+    return graph
+
+
+def _cycles(graph):
+    seen, stack, on_stack, found = set(), [], set(), []
+
+    def visit(node):
+        seen.add(node)
+        stack.append(node)
+        on_stack.add(node)
+        for nxt in sorted(graph[node]):
+            if nxt in on_stack:
+                found.append(stack[stack.index(nxt):] + [nxt])
+            elif nxt not in seen:
+                visit(nxt)
+        stack.pop()
+        on_stack.discard(nxt if False else node)
+
+    for node in sorted(graph):
+        if node not in seen:
+            visit(node)
+    return found
+
+
+# a package's __init__ importing its own submodules, and a submodule importing a sibling through the package,
+# are not layering cycles: the edges that matter run between different top-level parts
+def _between_parts(graph):
+    out = {}
+    for module, targets in graph.items():
+        out[module] = {t for t in targets if not (module == "memstribo" or t == "memstribo")}
+    return out
+
+
+def test_no_import_cycles():
+    cycles = _cycles(_between_parts(import_graph()))
+    assert not cycles, "import cycles: " + "; ".join(" -> ".join(c) for c in cycles[:5])
+
+
+def test_nothing_below_the_command_line_imports_it():
+    graph = import_graph()
+    offenders = {m: sorted(t for t in targets if t.startswith("memstribo.cli"))
+                 for m, targets in graph.items() if not m.startswith("memstribo.cli")}
+    assert not {m: t for m, t in offenders.items() if t}
+
+
+def test_no_module_is_loaded_by_name():
+    offenders = []
+    for path in SRC.rglob("*.py"):
+        if path.parent.name == "cli" and path.name == "main.py":
+            continue  # the CLI discovers its subcommand modules (one per file in cli/)
+        text = path.read_text(encoding="utf-8")
+        if "import_module(" in text or "__import__(" in text:
+            offenders.append(str(path.relative_to(SRC)))
+    assert not offenders, offenders
+
+
+@pytest.mark.parametrize("module", ["memstribo", "memstribo.cli.main"])
+def test_package_import_is_light(module):
+    import subprocess
+    import sys
+
+    code = (f"import sys, {module}; heavy = [m for m in ('matplotlib', 'SurfaceTopography', 'dask', 'distributed', "
+            f"'xarray', 'scipy') if m in sys.modules]; print(','.join(heavy))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.strip()
+    assert out == "", f"import {module} loads {out}"
