@@ -344,7 +344,7 @@ def test_cli_mesh(cli, tmp_path, afm_dir):
     assert values["steps"] == 21 and isinstance(values["stiction"], bool)
     code, out, err = cli("mesh", "--steps", "11", "--out", tmp_path)
     assert code == 0 and "cof_mean" in out
-    for name in ("mesh.nc", "mesh_cycle.csv", "mesh_cof.png", "mesh_cof.svg", "mesh_energy.png",
+    for name in ("mesh.nc", "mesh_cycle.csv", "mesh_cof.png", "mesh_cof.svg", "mesh_energy.png", "mesh_efficiency.png",
                  "mesh_friction_force.svg", "mesh_adhesion_force.png"):
         assert (tmp_path / name).exists(), name
     header = [line for line in (tmp_path / "mesh_cycle.csv").read_text().splitlines() if line[:1] != "#"][0]

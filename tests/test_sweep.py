@@ -76,3 +76,12 @@ def test_cli_sweep_progress_bar_on_stderr(cli):
     code, out, err = cli("sweep", "load", "--values", "25uN", "--steps", "11", "--progress", "--json")
     assert code == 0 and "sweep load" in err
     assert out.lstrip().startswith("{")  # stdout stays one JSON object
+
+
+def test_cli_sweep_torque_with_realisations_gives_the_stiction_probability(cli):
+    """#13 item 7: stiction probability and efficiency versus drive torque (adhesion makes light loads stick)."""
+    out = cli.json("sweep", "torque", "--values", "0.2e-7,1e-7", "--steps", "21", "--realisations", "2")
+    low, high = out["points"]
+    assert low["drive_torque"] == pytest.approx(0.2e-7) and 0.0 <= low["stiction_probability"] <= 1.0
+    assert low["load_case"] == "torque" and 0.0 < high["mesh_efficiency"] < 1.0
+    assert low["stiction_margin"] < high["stiction_margin"]  # less torque, less margin

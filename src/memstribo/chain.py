@@ -371,8 +371,16 @@ def plot_cycle(dataset, tangential_force=None, title=""):
     """Friction, adhesion and normal force, and the COF split, over the meshing cycle (Figs. 4-41..4-46)."""
     from .output import new_figure
 
-    figure, (top, bottom) = new_figure(2, 1, figsize=(7, 6), sharex=True)
+    efficiency = "mesh_efficiency" in dataset
+    figure, axes_ = new_figure(3 if efficiency else 2, 1, figsize=(7, 8 if efficiency else 6), sharex=True)
+    top, bottom = axes_[0], axes_[1]
     c = np.asarray(dataset["c"].values) * 1e6 if "c" in dataset.coords else np.arange(dataset.sizes["step"])
+    if efficiency:
+        axes_[2].plot(c, dataset["mesh_efficiency"].values, color="C2", label="instantaneous mesh efficiency")
+        axes_[2].axhline(float(dataset.attrs["mesh_efficiency_mean"]), color="k", lw=0.8, ls="--",
+                         label="mean over a mesh period")
+        axes_[2].set_ylabel("efficiency [-]")
+        axes_[2].legend(fontsize=8)
     if "resisting_force" in dataset:
         top.plot(c, np.asarray(dataset["resisting_force"].values) * 1e6, "-", lw=1.3, color="C3",
                  label="resisting force R(c), all pairs in mesh")
@@ -386,7 +394,7 @@ def plot_cycle(dataset, tangential_force=None, title=""):
     for name in ("cof", "cof_chemical", "cof_vdw", "cof_elastic"):
         bottom.plot(c, dataset[name].values, label=name.replace("_", " "))
     bottom.set_ylabel("COF [-]")
-    bottom.set_xlabel("position on the line of action c [µm]")
+    axes_[-1].set_xlabel("position on the line of action c [µm]")
     bottom.legend(fontsize=8)
     figure.tight_layout()
     return figure

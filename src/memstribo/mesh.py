@@ -1097,7 +1097,8 @@ def ensemble_summary(summaries) -> dict:
     return out
 
 
-def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False):
+def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False,
+          realisations=1, client=None):
     """Meshing cycles over a list of loads, drive torques or nominal areas (thesis 4.9.3, 4.9.4).
 
     Parameters
@@ -1113,6 +1114,12 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
         As for :func:`simulate_mesh`.
     progress : bool
         tqdm progress bar over the points (stderr).
+    realisations : int
+        Roughness realisations per point: above 1 each point also carries the ensemble's
+        ``stiction_probability`` and quantiles (:func:`simulate_ensemble`), e.g. the stiction
+        probability versus drive torque.
+    client : distributed.Client, optional
+        Runs each point's realisations on a Dask cluster.
 
     Returns
     -------
@@ -1148,6 +1155,12 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
             w_adh = params["adhesive_width"]
             point_params = params.updated({"face_width": value * w_adh * (1 + 1e-9)}, origin="sweep")
             head = {"area_multiple": int(value), "area": value * w_adh**2}
-        dataset = simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear)
-        points.append({**head, **summarize(dataset)})
+        if realisations > 1:
+            ensemble = simulate_ensemble(point_params, roughness, realisations=realisations, steps=steps,
+                                         coating=coating, wear=wear, client=client)
+            summary = dict(ensemble["summaries"][0])
+            summary.update({k: v for k, v in ensemble.items() if k not in ("summaries", "per_realisation")})
+        else:
+            summary = summarize(simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear))
+        points.append({**head, **summary})
     return points

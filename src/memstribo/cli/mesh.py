@@ -204,6 +204,12 @@ def plot_cycle(dataset, folder) -> list:
     ax.legend(fontsize=8)
     written += save_figure(figure, folder, "mesh_cof")
 
+    figure, ax = axes("Mesh efficiency over the cycle (all pairs in mesh)", "efficiency [-]")
+    ax.plot(c, dataset["mesh_efficiency"], lw=0.9, label="1 - sum F_f |u1 - u2| / (T omega1)")
+    ax.axhline(float(dataset.attrs["mesh_efficiency_mean"]), color="k", lw=0.8, ls="--", label="mean over a mesh period")
+    ax.legend(fontsize=8)
+    written += save_figure(figure, folder, "mesh_efficiency")
+
     figure, ax = axes("Energy dissipated per step", "energy [fJ]")
     for name, label in (("energy_chemical", "chemical bonds"), ("energy_vdw", "vdW bonds"),
                         ("energy_elastic", "elastic interlocking"), ("energy_dissipated", "total")):

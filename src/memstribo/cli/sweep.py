@@ -9,7 +9,7 @@ HELP = ("meshing cycles over loads (sweep load), drive torques (sweep torque) or
         "thesis 4.9.3-4.9.4")
 ORDER = 55
 
-_DEFAULTS = {"load": "25uN:300uN:25uN", "torque": "0.2e-7Nm:2e-7Nm:0.2e-7Nm", "area": "1:10:1"}
+_DEFAULTS = {"load": "25uN:300uN:25uN", "torque": "0.2e-7:2e-7:0.2e-7", "area": "1:10:1"}
 _UNITS = {"load": "N", "torque": "N*m", "area": ""}
 _HEAD = {"load": ["normal_load"], "torque": ["drive_torque"], "area": ["area_multiple", "area"]}
 
@@ -25,8 +25,10 @@ def register(subparsers, parents):
     parser.add_argument("parameter", choices=("load", "torque", "area"),
                         help="what to sweep (load: the thesis load case; torque: the torque load case)")
     parser.add_argument("--values", metavar="VALUES",
-                        help="default: load 25uN:300uN:25uN, torque 0.2e-7Nm:2e-7Nm:0.2e-7Nm, area 1:10:1")
+                        help="default: load 25uN:300uN:25uN, torque 0.2e-7:2e-7:0.2e-7 (N m; or with units, e.g. 20nN*m), area 1:10:1")
     add_common_arguments(parser)
+    parser.add_argument("--realisations", type=int, default=1, metavar="N",
+                        help="roughness realisations per point: adds the stiction probability and its bands")
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and its figures (PNG + SVG)")
     parser.set_defaults(handler=run)
 
@@ -67,11 +69,18 @@ def run(args, params):
     roughness = args.roughness
     if roughness == "thesis":
         roughness = None
-    points = sweep(params, args.parameter, values, roughness, progress=progress, **options)
+    if args.realisations < 1:
+        from ..errors import InputError
+
+        raise InputError(f"--realisations must be at least 1, got {args.realisations}.")
+    points = sweep(params, args.parameter, values, roughness, progress=progress, realisations=args.realisations,
+                   **options)
     head = _HEAD[args.parameter]
+    extra = ["stiction_probability", "stiction_margin_p05", "stiction_margin_median", "stiction_margin_p95",
+             "cof_mean_p05", "cof_mean_median", "cof_mean_p95"] if args.realisations > 1 else []
     points = [{key: point[key] for key in head + list(MESH_KEYS) + ["energy_dissipated", "energy_chemical",
                                                                      "energy_vdw", "energy_elastic",
-                                                                     "unconverged_steps"]}
+                                                                     "unconverged_steps"] + extra}
               for point in points]
     notes = []
     if args.out:
@@ -85,14 +94,19 @@ def run(args, params):
     if args.json:
         return CommandResult(values={"parameter": args.parameter, "points": points})
     lines = [f"  {head[0]:>13} {'cof_mean':>9} {'chemical':>9} {'vdW':>9} {'elastic':>9} {'F_f mean':>10} "
-             f"{'F_adh mean':>11} {'energy':>10}"]
+             f"{'F_adh mean':>11} {'energy':>10} {'margin':>10} {'efficiency':>10}"
+             + (f" {'P(stiction)':>11}" if args.realisations > 1 else "")]
     for p in points:
         swept = (f"{p['normal_load'] * 1e6:.4g} uN" if args.parameter == "load" else
                  f"{p['drive_torque']:.3g} N m" if args.parameter == "torque" else f"{p['area_multiple']} A_adh")
         lines.append(f"  {swept:>13} {p['cof_mean']:9.4g} {p['cof_chemical']:9.4g} {p['cof_vdw']:9.4g} "
                      f"{p['cof_elastic']:9.2g} {p['friction_force_mean'] * 1e6:7.4g} uN "
-                     f"{p['adhesion_force_mean'] * 1e6:8.4g} uN {p['energy_dissipated'] * 1e12:7.4g} pJ")
-    return CommandResult(values={}, title=f"sweep over {args.parameter} (thesis 4.9.{3 if args.parameter == 'load' else 4})",
+                     f"{p['adhesion_force_mean'] * 1e6:8.4g} uN {p['energy_dissipated'] * 1e12:7.4g} pJ "
+                     f"{p['stiction_margin'] * 1e3:7.3g} mN {p['mesh_efficiency']:10.3g}"
+                     + (f" {p['stiction_probability']:11.2f}" if args.realisations > 1 else ""))
+    return CommandResult(values={}, title=f"sweep over {args.parameter}" + {"load": " (thesis 4.9.3, load case thesis)",
+                                                                      "area": " (thesis 4.9.4)",
+                                                                      "torque": " (load case torque)"}[args.parameter],
                          notes=lines + notes)
 
 
