@@ -433,3 +433,20 @@ def test_the_cycle_calls_the_published_relations(params, monkeypatch, module, na
     monkeypatch.setattr(target, name, lambda *args, **kwargs: 2.0 * np.asarray(real(*args, **kwargs)))
     after = summarize(simulate_mesh(params, steps=11))[key]
     assert after != pytest.approx(before, rel=1e-6), name
+
+
+def test_sliding_axis_turns_a_map(params, afm_dir):
+    """#14 item 5: which axis of a map runs along the flank; y transposes the map."""
+    from memstribo.mesh import orient_map
+    from memstribo.readers import SurfaceMap
+
+    surface = SurfaceMap(np.arange(12.0).reshape(3, 4) * 1e-9, 1e-9, 2e-9, name="m")
+    assert orient_map(surface, "x") is surface
+    turned = orient_map(surface, "y")
+    assert turned.heights.shape == (4, 3) and turned.dx == 2e-9 and turned.dy == 1e-9
+    np.testing.assert_array_equal(turned.heights, surface.heights.T)
+    with pytest.raises(InputError, match="sliding axis"):
+        orient_map(surface, "z")
+    along_x = summarize(simulate_mesh(params, afm_dir / "di-3.di", steps=11))
+    along_y = summarize(simulate_mesh(params, afm_dir / "di-3.di", steps=11, sliding_axis="y"))
+    assert along_x["cof_mean"] != along_y["cof_mean"]

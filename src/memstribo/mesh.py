@@ -224,8 +224,24 @@ def _flank_ranges(pair, positions, window):
     return s1, s2, (s1.min() - half, s1.max() + half), (s2.min() - half, s2.max() + half)
 
 
-def _read_roughness(roughness):
-    """A Profile, a map, or None (the synthetic default) from whatever the user gave."""
+def orient_map(surface, sliding_axis: str = "x"):
+    """A map turned so that its rows run along the sliding direction (the flank's roll coordinate).
+
+    ``sliding_axis="x"``: the scan lines (rows along x) run along the flank, as scanned;
+    ``"y"``: the map is transposed, its columns become the lines. Profiles pass unchanged.
+    """
+    if sliding_axis not in ("x", "y"):
+        raise InputError(f"sliding axis must be 'x' or 'y', got {sliding_axis!r}.")
+    if sliding_axis == "x" or not hasattr(surface, "line_scans"):
+        return surface
+    from dataclasses import replace
+
+    return replace(surface, heights=np.ascontiguousarray(np.asarray(surface.heights).T), dx=surface.dy,
+                   dy=surface.dx, source=f"{surface.source}; transposed: sliding along y")
+
+
+def _read_roughness(roughness, sliding_axis="x"):
+    """A Profile, a map (rows along the sliding direction), or None (the synthetic default)."""
     from . import roughness as rough
 
     if roughness is None or (isinstance(roughness, str) and roughness == "thesis"):
@@ -233,9 +249,9 @@ def _read_roughness(roughness):
     if isinstance(roughness, (str, Path)):
         from .readers import read_topography
 
-        return read_topography(roughness)
+        return orient_map(read_topography(roughness), sliding_axis)
     if isinstance(roughness, rough.Profile) or hasattr(roughness, "line_scans"):
-        return roughness
+        return orient_map(roughness, sliding_axis)
     raise InputError(f"roughness must be None, 'thesis', a file path, a Profile or a SurfaceMap; got "
                      f"{type(roughness).__name__}.")
 
@@ -252,7 +268,7 @@ def normal_force_of_load_case(params, pair: GearPair) -> float:
     return f_t / math.cos(pair.pressure_angle)
 
 
-def _prepare(params, roughness, steps, realisation=0) -> MeshSetup:
+def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshSetup:
     from . import roughness as rough
 
     pair = GearPair.from_parameters(params)
@@ -291,7 +307,7 @@ def _prepare(params, roughness, steps, realisation=0) -> MeshSetup:
     grid = (np.arange(n) - 0.5 * (n - 1)) * dx
     _, _, (lo1, hi1), (lo2, hi2) = _flank_ranges(pair, positions, n * dx + 2 * w_adh)
     needed = max(hi1 - lo1, hi2 - lo2)
-    lines = rough.row_roughness(_read_roughness(roughness), params, rows, needed, realisation)
+    lines = rough.row_roughness(_read_roughness(roughness, sliding_axis), params, rows, needed, realisation)
     pinion, gear = [], []
     for scan_p, scan_g in zip(lines.pinion, lines.gear):
         for scan in (scan_p, scan_g):
@@ -678,7 +694,8 @@ def resisting_force(positions, friction_force, first_contact, last_contact, base
 
 
 @cites("thesis", "model", "johnson_1985", "polonsky_keer_1999", "hu_1986")
-def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False, realisation=0):
+def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False, realisation=0,
+                  sliding_axis="x"):
     """Friction, adhesion, COF and the stiction margin of rough teeth over one meshing cycle (thesis 4.6, 4.9).
 
     Parameters
@@ -701,6 +718,9 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         Show a tqdm progress bar on stderr.
     realisation : int
         Index of the roughness realisation (seeds of the synthesised lines).
+    sliding_axis : {"x", "y"}
+        Which axis of a 2D map runs along the flank (the sliding direction): ``"x"`` (the scan
+        lines, default) or ``"y"`` (the map's columns).
 
     Returns
     -------
@@ -729,7 +749,7 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
                               params["counter_poisson_ratio"])
     beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
                         params["counter_poisson_ratio"])
-    setup = _prepare(params, roughness, steps, realisation)
+    setup = _prepare(params, roughness, steps, realisation, sliding_axis)
     pair = setup.pair
     # smooth-teeth Hertz contact under the line load actually solved (load / L_eff), Eqs. (4-22)-(4-26)
     hertz = hertz_line_contact(setup.load, setup.effective_face_width, pair.effective_radius(setup.positions),
@@ -875,6 +895,7 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "vdw_cutoff": float(params["vdw_cutoff"]),
         "friction_averaging_distance": float(averaging),
         "realisation": int(realisation),
+        "sliding_axis": sliding_axis,
         "roughness": setup.roughness_name,
         "roughness_synthetic": int(setup.roughness_synthetic),
         "roughness_source": setup.roughness_source,

@@ -49,6 +49,9 @@ def add_common_arguments(parser):
     parser.add_argument("--steps", type=int, metavar="N", help="positions along the path of contact (default: "
                                                                "the parameter mesh_steps)")
     parser.add_argument("--coating", metavar="NAME", help="SAM coating of the teeth (e.g. OTS); default: bare silicon")
+    parser.add_argument("--sliding-axis", choices=("x", "y"), default="x",
+                        help="axis of a 2D map along the flank (the sliding direction): x = the scan lines "
+                             "(default), y = the map's columns")
     parser.add_argument("--load-case", choices=("torque", "thesis"),
                         help="normal load: 'torque' (F_t / cos alpha from the drive torque, default) or 'thesis' "
                              "(normal_load as given, 25 uN); sets the parameter load_case")
@@ -75,6 +78,14 @@ def simulation_options(args, params=None):
     return dict(steps=args.steps, coating=coating, wear=args.wear, progress=progress)
 
 
+def roughness_of(args):
+    """The roughness the command line names, read once and turned along the sliding axis (None: the default)."""
+    from ..mesh import _read_roughness
+
+    return _read_roughness(None if args.roughness in (None, "thesis") else args.roughness,
+                           getattr(args, "sliding_axis", "x"))
+
+
 def apply_load_case(args, params):
     """The parameter set with ``--load-case`` applied (unchanged without it)."""
     if getattr(args, "load_case", None):
@@ -91,12 +102,13 @@ def run(args, params):
     realisations = params["realisations"] if args.realisations is None else args.realisations
     if realisations < 1:
         raise InputError(f"--realisations must be at least 1, got {realisations}.")
-    dataset = simulate_mesh(params, args.roughness, **options)
+    roughness = roughness_of(args)
+    dataset = simulate_mesh(params, roughness, **options)
     summary = summarize(dataset)
     values = {key: summary[key] for key in MESH_KEYS}
     values.update({key: summary[key] for key in summary if key not in MESH_KEYS})
     if args.step_check:
-        values.update(step_convergence(params, args.roughness, steps=options["steps"], coating=options["coating"],
+        values.update(step_convergence(params, roughness, steps=options["steps"], coating=options["coating"],
                                        wear=options["wear"], baseline=summary))
     if realisations > 1:
         client = None
@@ -105,7 +117,7 @@ def run(args, params):
 
             client = Client(args.scheduler)
         try:
-            ensemble = simulate_ensemble(params, args.roughness, realisations=realisations, steps=options["steps"],
+            ensemble = simulate_ensemble(params, roughness, realisations=realisations, steps=options["steps"],
                                          coating=options["coating"], wear=options["wear"], client=client,
                                          progress=options["progress"])
         finally:

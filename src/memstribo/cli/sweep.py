@@ -66,9 +66,9 @@ def run(args, params):
     values = parse_values(args.values or _DEFAULTS[args.parameter], _UNITS[args.parameter])
     options = simulation_options(args, params)
     progress = options.pop("progress")
-    roughness = args.roughness
-    if roughness == "thesis":
-        roughness = None
+    from .mesh import roughness_of
+
+    roughness = roughness_of(args)
     if args.realisations < 1:
         from ..errors import InputError
 
