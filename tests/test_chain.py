@@ -249,3 +249,46 @@ def test_a_measured_meshing_profile_sets_the_geometry_downstream(tmp_path):
     # the default run keeps the parameter set's geometry
     default = RunChain(get_parameter_values(), tmp_path / "default", options_for_test(stages=("roughness", "geometry")))
     assert default.run().verdict["nanoblock_geometry"] == "parameters"
+
+
+def test_run_refuses_a_non_empty_folder_and_overwrite_clears_stale_files(cli, tmp_path):
+    out = tmp_path / "results"
+    out.mkdir()
+    (out / "report.html").write_text("stale")
+    (out / "data").mkdir()
+    (out / "data" / "old_stage.nc").write_text("stale")
+    code, _, err = cli("run", "--out", out, "--set", "mesh_steps=5")
+    assert code == 2 and "not empty" in err and "--overwrite" in err
+    (out / "notes.txt").write_text("mine")
+    code, _, err = cli("run", "--out", out, "--overwrite")
+    assert code == 2 and "notes.txt" in err  # never deletes files that are not memstribo's
+    (out / "notes.txt").unlink()
+    config = tmp_path / "small.toml"
+    config.write_text('[run]\nstages = ["gear"]\nvalidation = false\n')
+    code, _, err = cli("run", config, "--out", out, "--overwrite", "--progress", "off")
+    assert code == 0 and not (out / "data" / "old_stage.nc").exists()
+    assert "stage 4/10 gear: done" in err  # one log line per stage off a terminal
+    code, _, err = cli("run", config, "--out", tmp_path / "quiet", "--quiet", "--progress", "off")
+    assert code == 0 and "stage" not in err
+
+
+def test_run_exits_non_zero_when_a_stage_fails(cli, tmp_path, monkeypatch):
+    from memstribo.errors import InputError as Bad
+
+    def broken(self):
+        raise Bad("the gear stage broke on purpose")
+
+    monkeypatch.setattr(RunChain, "gear", broken)
+    config = tmp_path / "small.toml"
+    config.write_text('[run]\nstages = ["gear"]\nvalidation = false\n')
+    values_code, out, err = cli("run", config, "--out", tmp_path / "out", "--json", "--progress", "off")
+    import json
+
+    values = json.loads(out)
+    assert values_code == 1 and values["complete"] is False
+    assert "broke on purpose" in values["failed_stages"]["gear"]
+
+
+def test_run_checks_the_coating_before_the_first_stage():
+    with pytest.raises(InputError, match="unknown coating"):
+        RunOptions.from_table({"coating": "PTFE"})

@@ -27,6 +27,7 @@ figure functions (``plot_*``) and :func:`cycle_summary` work on their own too::
 from __future__ import annotations
 
 import math
+import logging
 import sys
 import time
 import traceback
@@ -165,7 +166,9 @@ class RunOptions:
         if "wear" in table:
             options["wear"] = number_list("wear", "", 0.0, 1.0)
         if "coating" in table:
-            options["coating"] = str(table["coating"])
+            from .coating import get_coating
+
+            options["coating"] = get_coating(str(table["coating"])).name  # checked before the first stage
         if "roughness_files" in table:
             files = table["roughness_files"]
             if isinstance(files, str):
@@ -900,16 +903,22 @@ class RunChain:
         reset_used_references()
         self._write_text("parameters.toml", self.params.to_toml())
         bar = tqdm(list(STAGES), desc="memstribo run", unit="stage", file=sys.stderr, disable=not self.progress)
-        for name in bar:
+        log = logging.getLogger("memstribo.run")
+        for index, name in enumerate(bar, 1):
             bar.set_postfix_str(name)
-            self.run_stage(name)
+            log.info("stage %d/%d %s ...", index, len(STAGES), name)
+            record = self.run_stage(name)
+            log.info("stage %d/%d %s: %s in %.1f s%s", index, len(STAGES), name, record.status, record.seconds,
+                     f" ({record.message})" if record.message else "")
             self._finish(time.perf_counter() - start)
         bar.close()
         validation = None
         if self.options.validation:
             from .report import validation_rows
 
+            log.info("validation table (every topic's rows, 1-3 min) ...")
             validation = validation_rows()
+            log.info("validation table: done")
         return self._finish(time.perf_counter() - start, validation)
 
     def _write_text(self, name, text):

@@ -34,6 +34,8 @@ class CommandResult:
     title: str = ""
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
+    #: exit status after printing (0: done; 1: the job ran but part of it failed, e.g. a stage of 'run')
+    exit_status: int = 0
 
     def json_values(self) -> dict[str, Any]:
         """The values with ``warnings`` (a list, possibly empty) always present."""

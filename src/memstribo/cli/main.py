@@ -137,6 +137,7 @@ def main(argv: list[str] | None = None) -> int:
         except BrokenPipeError:  # e.g. `memstribo ... --json | head`: the reader has gone, not an error
             devnull = os.open(os.devnull, os.O_WRONLY)
             os.dup2(devnull, sys.stdout.fileno())
+        return result.exit_status
     return 0
 
 

@@ -45,6 +45,12 @@ def register(subparsers, parents):
                         help="a measured profile or AFM file to analyse as well (repeatable)")
     parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                         help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    parser.add_argument("--overwrite", action="store_true",
+                        help="write into DIR although it holds files (stale files of an earlier run are removed "
+                             "first); without it a non-empty DIR is refused")
+    loudness = parser.add_mutually_exclusive_group()
+    loudness.add_argument("--quiet", action="store_true", help="no log lines on stderr (errors only)")
+    loudness.add_argument("--verbose", action="store_true", help="more log lines on stderr (each stage's files)")
     parser.set_defaults(handler=run)
 
 
@@ -76,14 +82,67 @@ def run(args, params):
         extra = RunOptions.from_table({"roughness_files": args.roughness}, Path.cwd()).roughness_files
         options = replace(options, roughness_files=options.roughness_files + extra)
     progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
+    _prepare_folder(Path(args.out), args.overwrite)
+    _configure_logging(args, progress)
     result = RunChain(params, args.out, options, progress=progress).run()
+    failed = {s.name: s.message for s in result.stages if s.status == "failed"
+              or (s.status == "skipped" and s.name in options.stages)}
     values = {"folder": str(result.folder), "report": str(result.folder / "report.html"),
-              "elapsed": result.elapsed, "complete": result.ok,
-              "stages": {s.name: s.status for s in result.stages}, **result.verdict}
+              "elapsed": result.elapsed, "complete": result.ok and not failed,
+              "stages": {s.name: s.status for s in result.stages}, "failed_stages": failed, **result.verdict}
     units = {"elapsed": "s", "tangential_force": "N", "bare_resisting_force_max": "N", "bare_stiction_margin": "N",
              "coated_resisting_force_max": "N", "coated_stiction_margin": "N", "bare_stiction_margin_median": "N",
              "bare_stiction_margin_p05": "N", "bare_stiction_margin_p95": "N"}
     notes = [f"  {s.name}: {s.status}{' - ' + s.message if s.message else ''}" for s in result.stages
              if s.status != "done" or s.message]
     notes.append(f"  open {result.folder / 'report.html'} in a browser")
-    return CommandResult(values=values, units=units, title="memstribo run: the thesis case end to end", notes=notes)
+    if failed:
+        notes.append(f"  {len(failed)} requested stage(s) did not finish: exit status 1")
+    return CommandResult(values=values, units=units, title="memstribo run: the thesis case end to end", notes=notes,
+                         exit_status=1 if failed else 0)
+
+
+#: What a results folder of memstribo holds (removed by --overwrite; anything else stays and is refused).
+_OWN = ("data", "figures", "report.html", "run.json", "parameters.toml", "references.txt")
+
+
+def _prepare_folder(folder, overwrite: bool) -> None:
+    """Refuse a non-empty results folder unless ``overwrite``; then clear memstribo's own files from it."""
+    import shutil
+
+    from ..errors import InputError
+
+    if not folder.exists():
+        return
+    if not folder.is_dir():
+        raise InputError(f"--out {folder}: exists and is not a folder.")
+    entries = sorted(p.name for p in folder.iterdir())
+    if not entries:
+        return
+    if not overwrite:
+        shown = ", ".join(entries[:5]) + (", ..." if len(entries) > 5 else "")
+        raise InputError(f"--out {folder}: the folder is not empty ({shown}); give another folder or --overwrite "
+                         "(stale files of an earlier run would otherwise sit beside the new report).")
+    foreign = [name for name in entries if name not in _OWN and not name.startswith("error_")]
+    if foreign:
+        raise InputError(f"--out {folder}: --overwrite clears only memstribo's own files, but the folder also holds "
+                         f"{', '.join(foreign[:5])}; give an empty folder.")
+    for name in entries:
+        path = folder / name
+        shutil.rmtree(path) if path.is_dir() else path.unlink()
+
+
+def _configure_logging(args, progress: bool) -> None:
+    """One log line per stage on stderr off a terminal (the progress bar replaces them on one)."""
+    import logging
+
+    level = logging.ERROR if args.quiet else (logging.DEBUG if args.verbose else logging.INFO)
+    if progress and not args.verbose:
+        level = logging.WARNING
+    logger = logging.getLogger("memstribo")
+    logger.setLevel(level)
+    if not any(getattr(h, "_memstribo", False) for h in logger.handlers):
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("memstribo run: %(message)s"))
+        handler._memstribo = True
+        logger.addHandler(handler)
