@@ -69,8 +69,16 @@ _ADHESIVE_MAX_OUTER = 200
 _APPROACH_DIRECT_MAX = 3000
 #: The cohesive zone has settled when no element's cohesive fraction changes by more than this.
 _FRACTION_TOLERANCE = 1e-4
+#: Relative tolerance of the inner solves while elements still join or leave the cohesive zone.
+_LOOSE_TOLERANCE = 1e-4
+#: Cohesive-zone updates of a coarse nested level (only a guess).
+_COARSE_MAX_UPDATES = 15
+#: Tolerance on the cohesive fraction of the coarse nested levels (only a guess).
+_COARSE_FRACTION_TOLERANCE = 1e-2
 #: Largest convergence ratio used in the Aitken extrapolation of the cohesive-zone updates.
 _AITKEN_MAX_RATIO = 0.95
+#: ... applied only where the measured ratio is at least this (slow, creeping fronts).
+_AITKEN_MIN_RATIO = 0.6
 
 #: Grids with fewer elements are solved directly (the coarsest level of the nested grids).
 _COARSEST = 512
@@ -958,28 +966,35 @@ def _cohesive_fraction(gap, h0, contact, periodic):
     return fraction
 
 
-def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic):
+def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
+                        fraction_tolerance, max_outer=_ADHESIVE_MAX_OUTER):
     """Fixed point on the cohesive fraction: traction -sigma0*fraction, inner non-adhesive solve for p+.
 
-    ``inner(h_eff, extra, guess)`` solves the non-adhesive problem for p+ >= 0 with the gap h_eff
-    and (load control) the extra compressive sum ``extra`` = sigma0 * sum(fraction) [Pa], and
+    ``inner(h_eff, extra, guess, tol)`` solves the non-adhesive problem for p+ >= 0 with the gap h_eff
+    and (load control) the extra compressive sum ``extra`` = sigma0 * sum(fraction) [Pa] to the
+    relative tolerance ``tol`` (``_LOOSE_TOLERANCE`` while whole elements still change state,
+    i.e. the cohesive fraction changes by 0.5 or more somewhere; else ``tolerance``), and
     returns (p+, gap, contact, approach, iterations, residual, ok, why). Every third update
     is Aitken-extrapolated (the plain update creeps: linear convergence with a ratio near 1).
     """
     iterations = 0
     gaps = []
     state = None
-    for outer in range(1, _ADHESIVE_MAX_OUTER + 1):
+    change = 1.0
+    for outer in range(1, max_outer + 1):
         h_eff = h - sigma0 * operator.displacement(fraction) if fraction.any() else h
-        p_plus, gap, contact, approach, used, residual, ok, why = inner(h_eff, sigma0 * fraction.sum(), guess)
+        tol = max(tolerance, _LOOSE_TOLERANCE) if change >= 0.5 else tolerance
+        p_plus, gap, contact, approach, used, residual, ok, why = inner(h_eff, sigma0 * fraction.sum(), guess, tol)
         iterations += used
         state = (p_plus - sigma0 * fraction, gap, contact, fraction, approach, iterations, outer, residual)
-        if not ok:
+        if not ok and (tol <= tolerance or not np.isfinite(residual)):
             return state + (False, why)
         new = _cohesive_fraction(gap, h0, contact, periodic)
         change = np.abs(new - fraction).max()
-        if change <= _FRACTION_TOLERANCE:
-            return state + (True, "")
+        if change <= fraction_tolerance:
+            if tol <= tolerance:
+                return state + (True, "")
+            change = 0.0  # settled on a loose solve: once more at the full tolerance
         # the plain update creeps (the front moves a fixed fraction, often ~0.9, of the remaining
         # way per update); every third update the gap outside the contact is extrapolated by
         # Aitken's rule with the ratio of its last two changes (plain updates in between correct
@@ -989,18 +1004,50 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
         if len(gaps) >= 3 and outer % 3 == 0:
             d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
             denominator = _dot(d0, d0)
-            ratio = min(max(_dot(d1, d0) / denominator, 0.0), _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
-            new = _cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, periodic)
+            ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
+            if ratio >= _AITKEN_MIN_RATIO:  # a creeping front (a smooth contact); rough contacts rarely
+                new = _cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, periodic)
         del gaps[:-3]
         fraction = new
         guess = p_plus
     return state + (False, f"the cohesive zone did not settle (last change of the cohesive fraction {change:.1e})")
 
 
+def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, sigma0, h0, cap, precondition):
+    """Initial p+ [Pa] and cohesive fraction from the adhesive problem on nested coarser grids (every other point).
+
+    Each level is solved loosely (``_COARSE_TOLERANCE``, cohesive fraction to
+    ``_COARSE_FRACTION_TOLERANCE``); a level that does not settle is still used (a guess).
+    Returns (None, None, 0) where n is odd or below 2 x ``_COARSEST``.
+    """
+    n = h.size
+    if n % 2 or n < 2 * _COARSEST:
+        return None, None, 0
+    coarse_mean = None if mean_pressure is None else mean_pressure
+    state = _solve_adhesive(h[::2], 2.0 * dx, modulus, load, coarse_mean, None, periodic, _COARSE_TOLERANCE, cap,
+                            reference, None, precondition, True, sigma0, h0,
+                            fraction_tolerance=_COARSE_FRACTION_TOLERANCE, internal=True)
+    p_plus, fraction, used = state
+    if p_plus is None:
+        return None, None, used
+
+    def interpolate(values):
+        following = np.roll(values, -1) if periodic else np.append(values[1:], values[-1])
+        fine = np.empty(n)
+        fine[0::2] = values
+        fine[1::2] = 0.5 * (values + following)
+        return fine
+
+    return interpolate(p_plus), interpolate(fraction), used
+
+
 def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
                     max_iterations, reference_distance, initial_pressure, precondition, continuation,
-                    cohesive_stress, cohesive_range):
-    """:func:`solve_line_contact` with a Maugis-Dugdale zone and/or under approach control."""
+                    cohesive_stress, cohesive_range, fraction_tolerance=_FRACTION_TOLERANCE, internal=False):
+    """:func:`solve_line_contact` with a Maugis-Dugdale zone and/or under approach control.
+
+    ``internal``: return (p+, cohesive fraction, CG iterations) for the nested levels instead.
+    """
     start = time.perf_counter()
     h = _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure, approach, tolerance,
                                max_iterations, reference_distance, initial_pressure, cohesive_stress, cohesive_range)
@@ -1024,8 +1071,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
         scale = float(h.max()) if h.max() > 0 else max(abs(delta), h0, dx)
         control = "approach control"
 
-        def inner(h_eff, extra, guess):
-            p, g, contact, used, outer, settled = _approach_contact(operator, h_eff, delta, guess, tolerance * scale, cap)
+        def inner(h_eff, extra, guess, tol):
+            p, g, contact, used, outer, settled = _approach_contact(operator, h_eff, delta, guess, tol * scale, cap)
             # gap error on the contact set, penetration outside it
             residual = max(np.abs(g[contact]).max(initial=0.0), np.maximum(-g[~contact], 0.0).max(initial=0.0)) / scale
             return p, g, contact, delta, used, residual, settled, "the contact set did not settle (it cycles)"
@@ -1039,7 +1086,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
         scale = float(h.max()) if h.max() > 0 else max(abs(total) * dx / modulus, h0)
         control = "load control"
 
-        def inner(h_eff, extra, guess):
+        def inner(h_eff, extra, guess, tol):
             inner_total = total + extra
             if inner_total <= 0.0:
                 return (np.zeros(n), h_eff - h_eff.min(), np.zeros(n, dtype=bool), 0.0, 0, np.inf, False,
@@ -1056,13 +1103,20 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
                 if guess is None:
                     guess = _cold_start(h_eff, target, small)
             p = guess * (target / guess.mean())
-            p, used, _, _ = _active_set(operator, h_eff, p, target, tolerance * scale, cap, precondition, small=small)
-            p, g, contact, g_mean, residual, used = _polonsky_keer(operator, h_eff, p, target, tolerance, scale, cap,
+            p, used, _, _ = _active_set(operator, h_eff, p, target, tol * scale, cap, precondition, small=small)
+            p, g, contact, g_mean, residual, used = _polonsky_keer(operator, h_eff, p, target, tol, scale, cap,
                                                                    precondition, used)
-            return p, g - g_mean, contact, float(g_mean) + shift, used, residual, residual <= tolerance, ""
+            return p, g - g_mean, contact, float(g_mean) + shift, used, residual, residual <= tol, ""
 
+        nested_guess = None
+        if sigma0 and p_start is None and continuation and precondition:
+            nested_guess, nested_fraction, used = _adhesive_nested(h + offset, dx, modulus, load, mean_pressure,
+                                                                   periodic, reference, sigma0, h0, cap, precondition)
+            coarse[0] += used
         if sigma0:
-            if p_start is not None and np.any(p_start != 0.0):
+            if nested_guess is not None:
+                fraction = nested_fraction
+            elif p_start is not None and np.any(p_start != 0.0):
                 fraction = np.minimum(np.clip(-p_start / sigma0, 0.0, 1.0) + (p_start > 0.0), 1.0)
             elif total > 0.0:
                 fraction = np.zeros(n)
@@ -1070,13 +1124,19 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
                 fraction = _cohesive_fraction(h, h0, h <= 0.0, periodic)
     if sigma0:
         guess = np.maximum(p_start + sigma0 * fraction, 0.0) if p_start is not None else None
+        if approach is None and nested_guess is not None:
+            guess = nested_guess
         (p, gap, contact, fraction, approach_out, iterations, outer, residual, settled,
-         why) = _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic)
+         why) = _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
+                                    fraction_tolerance, _COARSE_MAX_UPDATES if internal else _ADHESIVE_MAX_OUTER)
+        if internal:
+            ok = np.isfinite(residual)
+            return (p + sigma0 * fraction if ok else None), (fraction if ok else None), iterations + coarse[0]
         cohesive = (fraction > 0.0) & ~contact
         adhesive_load = float(sigma0 * dx * fraction[cohesive].sum())
     else:
         p, gap, contact, approach_out, iterations, residual, settled, why = inner(
-            h, 0.0, np.maximum(p_start, 0.0) if p_start is not None else None)
+            h, 0.0, np.maximum(p_start, 0.0) if p_start is not None else None, tolerance)
         outer, cohesive, adhesive_load = 1, np.zeros(n, dtype=bool), 0.0
     converged = bool(settled and residual <= tolerance)
     kind = f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)" if sigma0 else "non-adhesive"
