@@ -65,12 +65,12 @@ __all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "str
 #: Set updates of the cohesive zone (load control) or of the contact and cohesive sets (approach
 #: control) before the adhesive solve gives up (converged=False).
 _ADHESIVE_MAX_OUTER = 200
-#: Contact sets up to this size are solved directly (Cholesky) under approach control.
-_APPROACH_DIRECT_MAX = 3000
 #: The cohesive zone has settled when no element's cohesive fraction changes by more than this.
 _FRACTION_TOLERANCE = 1e-4
 #: Relative tolerance of the inner solves while elements still join or leave the cohesive zone.
 _LOOSE_TOLERANCE = 1e-4
+#: Contact sets up to this size are solved by Cholesky under approach control (larger: the CG).
+_APPROACH_DIRECT_MAX = 64
 #: Cohesive-zone updates of a coarse nested level (only a guess).
 _COARSE_MAX_UPDATES = 15
 #: Tolerance on the cohesive fraction of the coarse nested levels (only a guess).
@@ -757,8 +757,8 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     state) or from the set {h - min h <= h0} (w <= 0). If the cohesive zone cannot carry a
     tensile load (past pull-off on that branch) the result has ``converged=False``. Under
     approach control (``approach``) the contact and cohesive sets are updated together in a
-    primal-dual active-set loop with direct (Cholesky) solves on the contact set, or the
-    preconditioned CG on large sets.
+    primal-dual active-set loop with direct (Cholesky) solves on small contact sets, the
+    preconditioned CG (warm-started) on larger ones.
 
     Examples
     --------
@@ -873,28 +873,42 @@ def _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure,
     return h
 
 
-def _solve_on_set(operator, indices, rhs, tolerance, cap):
+def _solve_on_set(operator, indices, rhs, tolerance, cap, factors=None, guess=None):
     """Pressure on the contact set ``indices`` with a prescribed displacement: A_CC p = rhs [m].
 
-    Cholesky on sets up to ``_APPROACH_DIRECT_MAX`` elements, else the CG preconditioned with the
-    Fourier-space inverse (restricted to the set). Returns the pressure [Pa] and the iterations.
+    Cholesky on sets up to ``_APPROACH_DIRECT_MAX`` elements (larger LAPACK factorisations may go
+    threaded, which is slow on a busy machine; the factor of the last set is kept in the dict ``factors``:
+    the cohesive-zone updates often keep the contact set), else the CG preconditioned with the
+    Fourier-space inverse restricted to the set, from ``guess`` [Pa] (on the set), until the
+    largest displacement residual is at most ``tolerance`` [m]. Returns the pressure [Pa] and
+    the iterations.
     """
     if indices.size <= _APPROACH_DIRECT_MAX:
-        matrix = operator.matrix(indices, operator.green_kernel)
-        try:
-            factor = scipy.linalg.cho_factor(matrix, overwrite_a=True, check_finite=False)
+        key = indices.tobytes()
+        factor = factors.get(key) if factors is not None else None
+        if factor is None:
+            matrix = operator.matrix(indices, operator.green_kernel)
+            try:
+                factor = scipy.linalg.cho_factor(matrix, overwrite_a=True, check_finite=False)
+            except np.linalg.LinAlgError:
+                factor = None
+            if factors is not None and factor is not None:
+                factors.clear()
+                factors[key] = factor
+        if factor is not None:
             return scipy.linalg.cho_solve(factor, rhs, check_finite=False), 1
-        except np.linalg.LinAlgError:
-            pass
     green, stiffness = operator.green, operator.stiffness
-    x = np.zeros(indices.size)
-    r = rhs.copy()
+    if guess is not None:
+        x = guess.copy()
+        r = rhs - operator.restricted(x, indices, green)
+    else:
+        x = np.zeros(indices.size)
+        r = rhs.copy()
     t = None
     G_old = 1.0
     used = 0
-    for used in range(1, cap + 1):
-        if np.abs(r).max() <= tolerance:
-            break
+    while used < cap and np.abs(r).max() > tolerance:
+        used += 1
         z = operator.restricted(r, indices, stiffness)
         G = _dot(r, z)
         t = z if t is None else z + (G / G_old) * t
@@ -909,7 +923,7 @@ def _solve_on_set(operator, indices, rhs, tolerance, cap):
     return x, used
 
 
-def _approach_contact(operator, h, delta, p_start, tolerance_abs, cap):
+def _approach_contact(operator, h, delta, p_start, tolerance_abs, cap, factors=None):
     """Non-adhesive contact at a given approach ``delta`` [m] (gap h + A p - delta): primal-dual active set.
 
     On each contact set C, A_CC p_C = delta - h_C is solved directly (or by the CG); then points
@@ -919,13 +933,14 @@ def _approach_contact(operator, h, delta, p_start, tolerance_abs, cap):
     contact = (p_start > 0.0) if p_start is not None else (h - delta < 0.0)
     iterations = 0
     seen = set()
-    p = np.zeros(h.size)
+    p = np.zeros(h.size) if p_start is None else np.maximum(p_start, 0.0)
     g = h - delta
     for outer in range(1, _ADHESIVE_MAX_OUTER + 1):
         indices = np.flatnonzero(contact)
-        p = np.zeros(h.size)
+        previous, p = p, np.zeros(h.size)
         if indices.size:
-            p[indices], used = _solve_on_set(operator, indices, delta - h[indices], 0.1 * tolerance_abs, cap)
+            p[indices], used = _solve_on_set(operator, indices, delta - h[indices], 0.1 * tolerance_abs, cap, factors,
+                                             previous[indices])
             iterations += used
             g = h + operator.displacement(p) - delta
         else:
@@ -1071,8 +1086,11 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
         scale = float(h.max()) if h.max() > 0 else max(abs(delta), h0, dx)
         control = "approach control"
 
+        factors = {}
+
         def inner(h_eff, extra, guess, tol):
-            p, g, contact, used, outer, settled = _approach_contact(operator, h_eff, delta, guess, tol * scale, cap)
+            p, g, contact, used, outer, settled = _approach_contact(operator, h_eff, delta, guess, tol * scale, cap,
+                                                                    factors)
             # gap error on the contact set, penetration outside it
             residual = max(np.abs(g[contact]).max(initial=0.0), np.maximum(-g[~contact], 0.0).max(initial=0.0)) / scale
             return p, g, contact, delta, used, residual, settled, "the contact set did not settle (it cycles)"
