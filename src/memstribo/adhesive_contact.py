@@ -190,8 +190,11 @@ def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_st
     -----
     The adhered state at zero load is solved under load control (the branch continuous from
     the non-adhesive contact: the surfaces in contact), then the approach is reduced step by
-    step (approach control, warm starts) until the contact is lost; the pull-off load is the
-    largest tension on that curve, refined by a parabola through the three steps around it.
+    step (approach control, warm starts) until the contact is lost (a step that loses it is
+    retried with half the step, down to h0/1000, so the end of the adhered branch is found) or,
+    at small Maugis parameter where the contact shrinks to nothing without a jump, until the
+    tension has fallen below half its maximum; the pull-off load is the largest tension on
+    that curve, refined by a parabola through the three steps around it.
     Under load control the contact would separate there; under approach control it follows
     the curve further, to a jump-out at smaller tension. Compare with
     :func:`memstribo.reference.maugis_dugdale_line_pull_off` and, at large Maugis parameter,
@@ -226,29 +229,44 @@ def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_st
                        f"the adhered state at zero load did not converge: {start.message}")
     pressure, approach = start.pressure, start.approach
     step = 0.25 * h0
+    smallest = 1e-3 * h0
     target = scale / steps
     max_steps = int(max_steps) if max_steps is not None else 4 * int(steps)
     passed = False
     message = ""
     for _ in range(max_steps):
-        approach -= step
-        solution = solve_line_contact(separation, dx, modulus, approach=approach, initial_pressure=pressure, **options)
-        rows.append(_summary(solution))
+        solution = solve_line_contact(separation, dx, modulus, approach=approach - step, initial_pressure=pressure,
+                                      **options)
+        lost = rows[-1][2] > 0 and not solution.contact.any()
+        if (lost or not solution.converged) and step > smallest:
+            # the set iteration may leave the adhered state before it ends (jump-out): retry with
+            # half the step, so that the end of the adhered branch is found to within h0/1000
+            step *= 0.5
+            continue
         if not solution.converged:
-            message = f"an unloading step did not converge: {solution.message}"
+            if passed:  # beyond the maximum tension: the end of the adhered branch
+                message = f"the set iteration finds no adhered state beyond this point ({solution.message})"
+            else:
+                rows.append(_summary(solution))
+                message = f"an unloading step did not converge: {solution.message}"
             break
+        rows.append(_summary(solution))
+        approach -= step
         pressure = solution.pressure
         change = abs(rows[-1][1] - rows[-2][1])
         if len(rows) >= 3 and rows[-1][1] > rows[-2][1]:
             passed = True
-        if not solution.contact.any():
+        if lost and rows[-1][1] > rows[-2][1]:
             message = "the contact was lost (jump-out)"
+            break
+        if passed and (rows[-1][1] >= 0.0 or rows[-1][1] > 0.5 * min(r[1] for r in rows)):
+            message = "the tension fell below half its maximum"
             break
         step *= float(np.clip(target / change, 0.5, 2.0)) if change > 0 else 2.0
     curve = _curve(rows)
     k = int(np.argmin(curve.load))
     load_min, width = float(curve.load[k]), float(curve.half_width[k])
-    if 0 < k < len(curve.load) - 1 and curve.half_width[k + 1] > 0:
+    if 0 < k < len(curve.load) - 1 and (curve.half_width[k + 1] > 0 or curve.half_width[k] == 0):
         d = curve.approach[k - 1:k + 2]
         p = curve.load[k - 1:k + 2]
         coefficients = np.polyfit(d - d[1], p, 2)
