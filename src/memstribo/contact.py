@@ -67,7 +67,9 @@ __all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "str
 _ADHESIVE_MAX_OUTER = 200
 #: The cohesive zone has settled when no element's cohesive fraction changes by more than this.
 _FRACTION_TOLERANCE = 1e-4
-#: Relative tolerance of the inner solves while elements still join or leave the cohesive zone.
+#: Gap accuracy of the inner solves, as a fraction of h0 times the last change of the cohesive fraction.
+_GAP_FRACTION = 0.01
+#: Loosest relative tolerance of the inner solves.
 _LOOSE_TOLERANCE = 1e-4
 #: Contact sets up to this size are solved by Cholesky under approach control (larger: the CG).
 _APPROACH_DIRECT_MAX = 64
@@ -998,7 +1000,9 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
     change = 1.0
     for outer in range(1, max_outer + 1):
         h_eff = h - sigma0 * operator.displacement(fraction) if fraction.any() else h
-        tol = max(tolerance, _LOOSE_TOLERANCE) if change >= 0.5 else tolerance
+        # inexact inner solves: a gap error of _GAP_FRACTION * change * h0 moves a front by a small
+        # part of its last change (no looser than _LOOSE_TOLERANCE; the final solve at ``tolerance``)
+        tol = min(max(tolerance, _GAP_FRACTION * change * h0 / scale), max(tolerance, _LOOSE_TOLERANCE))
         p_plus, gap, contact, approach, used, residual, ok, why = inner(h_eff, sigma0 * fraction.sum(), guess, tol)
         iterations += used
         state = (p_plus - sigma0 * fraction, gap, contact, fraction, approach, iterations, outer, residual)
