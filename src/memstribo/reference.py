@@ -725,7 +725,7 @@ def maugis_dugdale_line_load(half_width, radius, contact_modulus, work_of_adhesi
 
 @cites("maugis_1992", "johnson_1985")
 def maugis_dugdale_line_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_stress):
-    r"""Pull-off of the Maugis-Dugdale line contact under load control: the least load of :func:`maugis_dugdale_line_load`.
+    r"""Pull-off of the Maugis-Dugdale line contact under load control (least load of :func:`maugis_dugdale_line_load`).
 
     Parameters
     ----------

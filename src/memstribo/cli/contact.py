@@ -169,7 +169,8 @@ def register_adhesion(parser):
                             "prints adhesive_load and the Maugis parameter (load may then be negative: tensile)")
     group.add_argument("--pull-off", action="store_true",
                        help="with --flat: unload the smooth cylinder under approach control from zero load to "
-                            "separation; prints pull_off_line_load (N/m, positive), pull_off_half_width, maugis_parameter")
+                            "separation; prints pull_off_line_load (N/m, positive), pull_off_half_width, "
+                            "maugis_parameter")
     group.add_argument("--cohesive-stress", metavar="STRESS",
                        help="Dugdale stress sigma0, e.g. '1.78 GPa' (default: 16 w / (9 sqrt(3) D0) of the parameter "
                             "set, as 'memstribo constants' prints)")
@@ -211,7 +212,8 @@ def run_adhesion(args, params):
     lam = float(maugis_line_parameter(radius, modulus, w, sigma0))
     law = {"cohesive_stress": sigma0, "cohesive_range": h0, "work_of_adhesion": w, "maugis_parameter": lam}
     law_units = {"cohesive_stress": "Pa", "cohesive_range": "m", "work_of_adhesion": "J/m^2", "maugis_parameter": ""}
-    law_note = (f"  Maugis-Dugdale law: sigma0 = {sigma0 / 1e9:.4g} GPa over h0 = {h0 * 1e9:.4g} nm (w = {w:.4g} J/m^2); "
+    law_note = (f"  Maugis-Dugdale law: sigma0 = {sigma0 / 1e9:.4g} GPa over h0 = {h0 * 1e9:.4g} nm "
+                f"(w = {w:.4g} J/m^2); "
                 f"Maugis parameter lambda = 2 sigma0 (R/(pi w E*^2))^(1/3) = {lam:.3g} (R = {radius * 1e6:.4g} um, "
                 f"E* = {modulus / 1e9:.4g} GPa).")
 
@@ -293,5 +295,5 @@ def run_adhesion(args, params):
     notes = [f"  {label}; {'periodic' if args.periodic else 'free-boundary'} half-plane.", law_note,
              "  load = compressive load of the contact - adhesive_load (the tension of the cohesive zone outside it).",
              f"  solver: {solution.message}."]
-    return CommandResult(values=values, units=units, title="adhesive line contact (Maugis-Dugdale, per unit face width)",
-                         notes=notes)
+    return CommandResult(values=values, units=units,
+                         title="adhesive line contact (Maugis-Dugdale, per unit face width)", notes=notes)

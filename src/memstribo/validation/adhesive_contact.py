@@ -49,8 +49,9 @@ def rows() -> list[ValidationRow]:
                          out["load"], "N/m", rtol=1e-8, command=_command(JKR_ARGS)))
     out = _cli_json(HERTZ_ARGS)
     rows_.append(compare(TOPIC, "contact length 2a at vanishing adhesion (sigma0 = 1 kPa, h0 = 1 pm)",
-                         "Hertz line contact, Johnson (4.43)", 2 * float(hertz_line_half_width(1.0, 20e-6, 100e9)) * 1e9,
-                         out["contact_length"] * 1e9, "nm", rtol=1e-2, command=_command(HERTZ_ARGS)))
+                         "Hertz line contact, Johnson (4.43)",
+                         2 * float(hertz_line_half_width(1.0, 20e-6, 100e9)) * 1e9, out["contact_length"] * 1e9,
+                         "nm", rtol=1e-2, command=_command(HERTZ_ARGS)))
     out = _cli_json(RIGID_ARGS)
     rows_.append(compare(TOPIC, f"pull-off line load, small Maugis parameter (lambda = {out['maugis_parameter']:.2f})",
                          "rigid Dugdale limit 2 sigma0 (2 R h0)^(1/2)",
