@@ -67,6 +67,10 @@ __all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "str
 _ADHESIVE_MAX_OUTER = 200
 #: The cohesive zone has settled when no element's cohesive fraction changes by more than this.
 _FRACTION_TOLERANCE = 1e-4
+#: ... or when the cohesive load changes by less than this relative amount (sum of the changes of
+#: the fractions over the zone) and no fraction by more than _ZONE_MAX_CHANGE.
+_ZONE_LOAD_TOLERANCE = 1e-4
+_ZONE_MAX_CHANGE = 0.25
 #: Gap accuracy of the inner solves, as a fraction of h0 times the last change of the cohesive fraction.
 _GAP_FRACTION = 0.01
 #: Loosest relative tolerance of the inner solves.
@@ -74,13 +78,13 @@ _LOOSE_TOLERANCE = 1e-4
 #: Contact sets up to this size are solved by Cholesky under approach control (larger: the CG).
 _APPROACH_DIRECT_MAX = 64
 #: Cohesive-zone updates of a coarse nested level (only a guess).
-_COARSE_MAX_UPDATES = 15
+_COARSE_MAX_UPDATES = 5
 #: Tolerance on the cohesive fraction of the coarse nested levels (only a guess).
 _COARSE_FRACTION_TOLERANCE = 1e-2
 #: Largest convergence ratio used in the Aitken extrapolation of the cohesive-zone updates.
 _AITKEN_MAX_RATIO = 0.95
 #: ... applied only where the measured ratio is at least this (slow, creeping fronts).
-_AITKEN_MIN_RATIO = 0.6
+_AITKEN_MIN_RATIO = 0.8
 
 #: Grids with fewer elements are solved directly (the coarsest level of the nested grids).
 _COARSEST = 512
@@ -1009,8 +1013,14 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
         if not ok and (tol <= tolerance or not np.isfinite(residual)):
             return state + (False, why)
         new = _cohesive_fraction(gap, h0, contact, periodic)
-        change = np.abs(new - fraction).max()
-        if change <= fraction_tolerance:
+        step = np.abs(new - fraction)
+        change = step.max()
+        # settled: no element's fraction moves by more than fraction_tolerance, or (many fronts,
+        # a few of them creeping) the zone's load moves by less than _ZONE_LOAD_TOLERANCE of it
+        # and no element by more than _ZONE_MAX_CHANGE
+        zone = float(new[~contact].sum())
+        if change <= fraction_tolerance or (change <= _ZONE_MAX_CHANGE
+                                            and step.sum() <= _ZONE_LOAD_TOLERANCE * max(zone, 1.0)):
             if tol <= tolerance:
                 return state + (True, "")
             change = 0.0  # settled on a loose solve: once more at the full tolerance
@@ -1062,12 +1072,13 @@ def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, s
 
 def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
                     max_iterations, reference_distance, initial_pressure, precondition, continuation,
-                    cohesive_stress, cohesive_range, fraction_tolerance=_FRACTION_TOLERANCE, internal=False):
+                    cohesive_stress, cohesive_range, fraction_tolerance=None, internal=False):
     """:func:`solve_line_contact` with a Maugis-Dugdale zone and/or under approach control.
 
     ``internal``: return (p+, cohesive fraction, CG iterations) for the nested levels instead.
     """
     start = time.perf_counter()
+    fraction_tolerance = _FRACTION_TOLERANCE if fraction_tolerance is None else fraction_tolerance
     h = _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure, approach, tolerance,
                                max_iterations, reference_distance, initial_pressure, cohesive_stress, cohesive_range)
     n = h.size
