@@ -78,7 +78,9 @@ _LOOSE_TOLERANCE = 1e-4
 #: Contact sets up to this size are solved by Cholesky under approach control (larger: the CG).
 _APPROACH_DIRECT_MAX = 64
 #: Cohesive-zone updates of a coarse nested level (only a guess).
-_COARSE_MAX_UPDATES = 5
+_COARSE_MAX_UPDATES = 15
+#: ... on coarse levels above _SMALL_PROBLEM / 2 elements (their updates cost more than they save).
+_LARGE_COARSE_MAX_UPDATES = 5
 #: Tolerance on the cohesive fraction of the coarse nested levels (only a guess).
 _COARSE_FRACTION_TOLERANCE = 1e-2
 #: Largest convergence ratio used in the Aitken extrapolation of the cohesive-zone updates.
@@ -756,7 +758,10 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     fixed, writing p = p+ - sigma0 on S makes the problem the non-adhesive one for p+ >= 0
     with the gap h - sigma0 A 1_S and the load w + sigma0 dx |S|, which the machinery above
     solves (warm-started from the previous p+); then S is updated to {gap <= h0} until it no
-    longer changes. Under load control the solution need not be unique (jump-in, pull-off):
+    longer changes (each element carries the fraction of it where the interpolated gap is
+    <= h0, so the discrete front is unique; settled when no fraction moves by more than 1e-4,
+    or the zone's load by less than 1e-4 with no fraction moving by more than 0.25; updates of
+    creeping fronts are Aitken-extrapolated). Under load control the solution need not be unique (jump-in, pull-off):
     the state returned is the one the set iteration reaches from ``initial_pressure`` (its
     cohesive set is where it is non-zero: continuation from a previous state), or without it
     from the non-adhesive solution at the same load (w > 0; the adhered, loading-branch
@@ -1161,7 +1166,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
             guess = nested_guess
         (p, gap, contact, fraction, approach_out, iterations, outer, residual, settled,
          why) = _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
-                                    fraction_tolerance, _COARSE_MAX_UPDATES if internal else _ADHESIVE_MAX_OUTER)
+                                    fraction_tolerance, _ADHESIVE_MAX_OUTER if not internal
+                                    else _COARSE_MAX_UPDATES if n <= _SMALL_PROBLEM // 2 else _LARGE_COARSE_MAX_UPDATES)
         if internal:
             ok = np.isfinite(residual)
             return (p + sigma0 * fraction if ok else None), (fraction if ok else None), iterations + coarse[0]
