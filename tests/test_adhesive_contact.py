@@ -166,7 +166,7 @@ def test_rough_free_boundary_consistency():
     # the same state: the zone's load to 1e-4; single front elements within the zone tolerance (0.25)
     assert again.adhesive_load == pytest.approx(sol.adhesive_load, rel=1e-3)
     np.testing.assert_allclose(again.pressure, sol.pressure, atol=0.26 * SIGMA0)
-    assert np.count_nonzero(np.abs(again.pressure - sol.pressure) > 1e-3 * SIGMA0) <= 10
+    assert np.count_nonzero(np.abs(again.pressure - sol.pressure) > 1e-3 * SIGMA0) <= 0.02 * n  # the fronts
 
 
 # ----------------------------------------------------------------------------- instability, pull-off
