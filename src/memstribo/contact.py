@@ -163,11 +163,12 @@ class ContactSolution:
         included in ``iterations``).
     adhesive_load : float
         Tensile line load carried by the Maugis-Dugdale cohesive zone outside the contact,
-        sigma0 * dx * (number of cohesive elements) [N/m], >= 0; 0 without adhesion. The net
-        ``load`` is the compressive load of the contact set minus this.
+        sigma0 * dx * (sum of the cohesive fractions of its elements) [N/m], >= 0; 0 without
+        adhesion. The net ``load`` is the compressive load of the contact set minus this.
     cohesive : numpy.ndarray or None
-        Boolean mask of the cohesive zone: elements out of contact (gap in (0, h0]) on which
-        the Dugdale traction -sigma0 acts; None for the non-adhesive solver (no zone).
+        Boolean mask of the cohesive zone: elements out of contact (gap in (0, h0], the front
+        elements partly) on which the Dugdale traction acts (-sigma0 times the fraction of the
+        element within h0); None for the non-adhesive solver (no zone).
 
     Notes
     -----
@@ -761,15 +762,15 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     longer changes (each element carries the fraction of it where the interpolated gap is
     <= h0, so the discrete front is unique; settled when no fraction moves by more than 1e-4,
     or the zone's load by less than 1e-4 with no fraction moving by more than 0.25; updates of
-    creeping fronts are Aitken-extrapolated). Under load control the solution need not be unique (jump-in, pull-off):
-    the state returned is the one the set iteration reaches from ``initial_pressure`` (its
+    creeping fronts are Aitken-extrapolated). Under load control the solution need not be
+    unique (jump-in, pull-off): the state returned is the one the set iteration reaches from ``initial_pressure`` (its
     cohesive set is where it is non-zero: continuation from a previous state), or without it
     from the non-adhesive solution at the same load (w > 0; the adhered, loading-branch
     state) or from the set {h - min h <= h0} (w <= 0). If the cohesive zone cannot carry a
     tensile load (past pull-off on that branch) the result has ``converged=False``. Under
-    approach control (``approach``) the contact and cohesive sets are updated together in a
-    primal-dual active-set loop with direct (Cholesky) solves on small contact sets, the
-    preconditioned CG (warm-started) on larger ones.
+    approach control (``approach``) the same splitting, the inner problem at the fixed
+    approach solved by a primal-dual active set with direct (Cholesky) solves on small contact
+    sets and the preconditioned CG (warm-started) on larger ones.
 
     Examples
     --------

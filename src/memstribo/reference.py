@@ -609,7 +609,8 @@ def maugis_line_parameter(radius, contact_modulus, work_of_adhesion, cohesive_st
     Notes
     -----
     The definition of Maugis (1992) for spheres, used unchanged for the cylinder (as by
-    Johnson & Greenwood, J. Phys. D 41 (2008) 199802 and Baney & Hui, J. Adhesion Sci. Technol.
+    Johnson & Greenwood, "A Maugis analysis of adhesive line contact", J. Phys. D: Appl. Phys. 41
+    (2008), and Baney & Hui, J. Adhesion Sci. Technol.
     11 (1997) 393, up to their normalisation of the load). Large lambda: JKR; small: the
     rigid (Derjaguin) limit :func:`dugdale_rigid_line_pull_off`. Silicon teeth (E* = 85 GPa,
     R = 10 um, w = 0.445 J/m², sigma0 = 1.78 GPa): lambda = 3.55.
