@@ -81,6 +81,9 @@ _APPROACH_DIRECT_MAX = 64
 _COARSE_MAX_UPDATES = 15
 #: ... on coarse levels above _SMALL_PROBLEM / 2 elements (their updates cost more than they save).
 _LARGE_COARSE_MAX_UPDATES = 5
+#: Largest coarse level solved with adhesion; finer grids start from the non-adhesive nested
+#: guess instead (2^16: 4.4x the plain solve against 5.3x with adhesive levels up to 2^15).
+_LARGEST_ADHESIVE_LEVEL = 2**13
 #: Tolerance on the cohesive fraction of the coarse nested levels (only a guess).
 _COARSE_FRACTION_TOLERANCE = 1e-2
 #: Largest convergence ratio used in the Aitken extrapolation of the cohesive-zone updates.
@@ -1056,7 +1059,7 @@ def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, s
     Returns (None, None, 0) where n is odd or below 2 x ``_COARSEST``.
     """
     n = h.size
-    if n % 2 or n < 2 * _COARSEST:
+    if n % 2 or n < 2 * _COARSEST or n // 2 > _LARGEST_ADHESIVE_LEVEL:
         return None, None, 0
     coarse_mean = None if mean_pressure is None else mean_pressure
     state = _solve_adhesive(h[::2], 2.0 * dx, modulus, load, coarse_mean, None, periodic, _COARSE_TOLERANCE, cap,
