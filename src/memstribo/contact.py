@@ -79,8 +79,6 @@ _LOOSE_TOLERANCE = 1e-4
 _APPROACH_DIRECT_MAX = 64
 #: Cohesive-zone updates of a coarse nested level (only a guess).
 _COARSE_MAX_UPDATES = 15
-#: ... on coarse levels above _SMALL_PROBLEM / 2 elements (their updates cost more than they save).
-_LARGE_COARSE_MAX_UPDATES = 5
 #: Largest coarse level solved with adhesion; finer grids start from the non-adhesive nested
 #: guess instead (2^16: 4.4x the plain solve against 5.3x with adhesive levels up to 2^15).
 _LARGEST_ADHESIVE_LEVEL = 2**13
@@ -1170,8 +1168,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
             guess = nested_guess
         (p, gap, contact, fraction, approach_out, iterations, outer, residual, settled,
          why) = _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
-                                    fraction_tolerance, _ADHESIVE_MAX_OUTER if not internal
-                                    else _COARSE_MAX_UPDATES if n <= _SMALL_PROBLEM // 2 else _LARGE_COARSE_MAX_UPDATES)
+                                    fraction_tolerance, _COARSE_MAX_UPDATES if internal else _ADHESIVE_MAX_OUTER)
         if internal:
             ok = np.isfinite(residual)
             return (p + sigma0 * fraction if ok else None), (fraction if ok else None), iterations + coarse[0]
