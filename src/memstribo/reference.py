@@ -45,6 +45,13 @@ __all__ = [
     "westergaard_mean_pressure",
     "westergaard_contact_half_width",
     "westergaard_pressure",
+    "jkr_line_load",
+    "jkr_line_pull_off_load",
+    "jkr_line_pull_off_half_width",
+    "maugis_line_parameter",
+    "maugis_dugdale_line_load",
+    "maugis_dugdale_line_pull_off",
+    "dugdale_rigid_line_pull_off",
 ]
 
 
@@ -475,3 +482,321 @@ def westergaard_pressure(x, mean_pressure, amplitude, wavelength, contact_modulu
     s_a = np.sin(np.pi * a / wavelength) ** 2
     s_x = np.sin(np.pi * x / wavelength) ** 2
     return 2.0 * p_bar * np.abs(np.cos(np.pi * x / wavelength)) / s_a * np.sqrt(np.clip(s_a - s_x, 0.0, None))
+
+
+# --------------------------------------------------------------------------- adhesive line contact
+
+
+@cites("johnson_1985", "model")
+def jkr_line_load(half_width, radius, contact_modulus, work_of_adhesion):
+    r"""Load of the JKR line contact (cylinder on a flat, plane strain, per unit length) at a half-width.
+
+    Parameters
+    ----------
+    half_width : numeric
+        Contact half-width a [m].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    work_of_adhesion : numeric
+        Work of adhesion w [J/m²].
+
+    Returns
+    -------
+    numeric
+        Net load per unit length P [N/m] (negative: tensile).
+
+    Notes
+    -----
+    .. math:: P = \frac{\pi E^* a^2}{4R} - \sqrt{2\pi E^* w a}
+
+    The Hertz load of half-width a minus the flat-punch load whose edge stress intensity
+    :math:`K = \sqrt{2E^*w}` releases the energy w (Barquins, J. Adhesion 26 (1988) 1;
+    Chaudhury, Weaver, Hui, Kramer, J. Appl. Phys. 80 (1996) 30; docs/model.md §7c).
+
+    Examples
+    --------
+    >>> round(float(jkr_line_load(100e-9, 10e-6, 85e9, 0.445)), 2)
+    -87.4
+    """
+    a = as_array(half_width, "half_width", "m", positive=True)
+    radius = as_array(radius, "radius", "m", positive=True)
+    modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", nonnegative=True)
+    return np.pi * modulus * a**2 / (4.0 * radius) - np.sqrt(2.0 * np.pi * modulus * w * a)
+
+
+@cites("johnson_1985", "model")
+def jkr_line_pull_off_load(radius, contact_modulus, work_of_adhesion):
+    r"""Pull-off load of the JKR line contact under load control, per unit length.
+
+    Parameters
+    ----------
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    work_of_adhesion : numeric
+        Work of adhesion w [J/m²].
+
+    Returns
+    -------
+    numeric
+        The (negative, tensile) load at pull-off [N/m], the minimum of :func:`jkr_line_load`.
+
+    Notes
+    -----
+    .. math:: P_c = -\frac34\left(4\pi E^* w^2 R\right)^{1/3}
+
+    at :math:`a_c = (2 R^2 w / (\pi E^*))^{1/3}` (Chaudhury et al. 1996; docs/model.md §7c).
+
+    Examples
+    --------
+    >>> round(float(jkr_line_pull_off_load(10e-6, 85e9, 0.445)), 2)
+    -96.27
+    """
+    radius = as_array(radius, "radius", "m", positive=True)
+    modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", nonnegative=True)
+    return -0.75 * np.cbrt(4.0 * np.pi * modulus * w**2 * radius)
+
+
+@cites("johnson_1985", "model")
+def jkr_line_pull_off_half_width(radius, contact_modulus, work_of_adhesion):
+    r"""Contact half-width of the JKR line contact at pull-off (load control) [m].
+
+    Parameters
+    ----------
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    work_of_adhesion : numeric
+        Work of adhesion w [J/m²].
+
+    Returns
+    -------
+    numeric
+        :math:`a_c = (2 R^2 w / (\pi E^*))^{1/3}` [m], where dP/da = 0 in :func:`jkr_line_load`.
+    """
+    radius = as_array(radius, "radius", "m", positive=True)
+    modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", nonnegative=True)
+    return np.cbrt(2.0 * radius**2 * w / (np.pi * modulus))
+
+
+@cites("maugis_1992")
+def maugis_line_parameter(radius, contact_modulus, work_of_adhesion, cohesive_stress):
+    r"""Maugis parameter of a line contact [-].
+
+    Parameters
+    ----------
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    work_of_adhesion : numeric
+        Work of adhesion w [J/m²] (w = sigma0 h0).
+    cohesive_stress : numeric
+        Dugdale stress sigma0 [Pa].
+
+    Returns
+    -------
+    numeric
+        :math:`\lambda = 2\sigma_0 \left(\frac{R}{\pi w E^{*2}}\right)^{1/3}`.
+
+    Notes
+    -----
+    The definition of Maugis (1992) for spheres, used unchanged for the cylinder (as by
+    Johnson & Greenwood, "A Maugis analysis of adhesive line contact", J. Phys. D: Appl. Phys. 41
+    (2008), and Baney & Hui, J. Adhesion Sci. Technol.
+    11 (1997) 393, up to their normalisation of the load). Large lambda: JKR; small: the
+    rigid (Derjaguin) limit :func:`dugdale_rigid_line_pull_off`. Silicon teeth (E* = 85 GPa,
+    R = 10 um, w = 0.445 J/m², sigma0 = 1.78 GPa): lambda = 3.55.
+
+    Examples
+    --------
+    >>> round(float(maugis_line_parameter(10e-6, 85e9, 0.445, 1.78e9)), 2)
+    3.55
+    """
+    radius = as_array(radius, "radius", "m", positive=True)
+    modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True)
+    sigma0 = as_array(cohesive_stress, "cohesive_stress", "Pa", nonnegative=True)
+    return 2.0 * sigma0 * np.cbrt(radius / (np.pi * w * modulus**2))
+
+
+def _dugdale_opening_integral(m):
+    """int_1^m ln((T + s)/(T - s)) dxi with T = sqrt(m^2 - 1), s = sqrt(xi^2 - 1) (xi = sqrt(1 + T^2 sin^2 t))."""
+    from scipy.integrate import quad
+
+    t2 = m * m - 1.0
+    if t2 <= 0.0:
+        return 0.0
+
+    def integrand(theta):
+        sine = np.sin(theta)
+        return 2.0 * np.arctanh(min(sine, 1.0 - 1e-16)) * t2 * sine * np.cos(theta) / np.sqrt(1.0 + t2 * sine**2)
+
+    return quad(integrand, 0.0, 0.5 * np.pi, limit=200)[0]
+
+
+def _maugis_line_scalar(a, radius, modulus, w, sigma0):
+    from scipy.optimize import brentq
+
+    h0 = w / sigma0
+
+    def opening(m):  # gap at the end c = m a of the cohesive zone, minus h0
+        t = np.sqrt(m * m - 1.0)
+        return (a * a / (2.0 * radius) * (m * t - np.arccosh(m))
+                + 2.0 * sigma0 * a / (np.pi * modulus) * _dugdale_opening_integral(m) - h0)
+
+    upper = 2.0
+    while opening(upper) < 0.0:
+        upper *= 2.0
+    m = brentq(opening, 1.0, upper, xtol=1e-14, rtol=1e-13)
+    load = np.pi * modulus * a * a / (4.0 * radius) - 2.0 * sigma0 * a * np.sqrt(m * m - 1.0)
+    return load, m * a
+
+
+@cites("maugis_1992", "johnson_1985")
+def maugis_dugdale_line_load(half_width, radius, contact_modulus, work_of_adhesion, cohesive_stress):
+    r"""Maugis-Dugdale line contact (cylinder on a flat, per unit length): load and cohesive zone at a half-width.
+
+    Parameters
+    ----------
+    half_width : numeric
+        Contact half-width a [m].
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    work_of_adhesion : numeric
+        Work of adhesion w [J/m²].
+    cohesive_stress : numeric
+        Dugdale stress sigma0 [Pa]; the range is h0 = w / sigma0.
+
+    Returns
+    -------
+    load : numeric
+        Net load P [N/m] (negative: tensile).
+    cohesive_half_width : numeric
+        End c of the cohesive zone [m] (the Dugdale stress acts on a < |x| < c).
+
+    Notes
+    -----
+    Plane strain, tension -sigma0 on a < |x| < c, bounded stress at the contact edge (the
+    line-contact analogue of Maugis 1992; Baney & Hui 1997; Johnson & Greenwood 2008).
+    With m = c/a, from the inversion of the half-plane equation on |x| < a,
+
+    .. math:: P = \frac{\pi E^* a^2}{4R} - 2\sigma_0 a\sqrt{m^2-1}
+
+    and the gap at c equals h0:
+
+    .. math:: \frac{a^2}{2R}\left[m\sqrt{m^2-1} - \operatorname{arccosh} m\right]
+              + \frac{2\sigma_0 a}{\pi E^*}\int_1^m
+              \ln\frac{\sqrt{m^2-1}+\sqrt{\xi^2-1}}{\sqrt{m^2-1}-\sqrt{\xi^2-1}}\,d\xi = h_0
+
+    (the first term is the Hertz gap of half-width a, the second the opening by the Dugdale
+    tension, whose slope outside the contact is
+    :math:`\frac{2\sigma_0}{\pi E^*}\ln\frac{t_c+b}{t_c-b}`, b = sqrt(x²-a²), t_c = sqrt(c²-a²);
+    derived for memstribo, docs/contact.md). The integral is evaluated by quadrature and m by
+    root finding. As sigma0 -> infinity (w fixed) P tends to :func:`jkr_line_load`
+    (checked in tests/test_adhesive_contact.py).
+
+    Examples
+    --------
+    >>> load, c = maugis_dugdale_line_load(169.2e-9, 10e-6, 85e9, 0.445, 1.78e9)
+    >>> round(float(load), 1), round(float(c) * 1e9, 1)
+    (-0.2, 177.5)
+    """
+    a = as_array(half_width, "half_width", "m", positive=True)
+    radius = float(as_array(radius, "radius", "m", positive=True))
+    modulus = float(as_array(contact_modulus, "contact_modulus", "Pa", positive=True))
+    w = float(as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True))
+    sigma0 = float(as_array(cohesive_stress, "cohesive_stress", "Pa", positive=True))
+    values = [_maugis_line_scalar(float(x), radius, modulus, w, sigma0) for x in np.ravel(a)]
+    load = np.array([v[0] for v in values]).reshape(np.shape(a))
+    c = np.array([v[1] for v in values]).reshape(np.shape(a))
+    if np.ndim(a) == 0:
+        return float(load), float(c)
+    return load, c
+
+
+@cites("maugis_1992", "johnson_1985")
+def maugis_dugdale_line_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_stress):
+    r"""Pull-off of the Maugis-Dugdale line contact under load control (least load of :func:`maugis_dugdale_line_load`).
+
+    Parameters
+    ----------
+    radius : numeric
+        Effective radius R [m].
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+    work_of_adhesion : numeric
+        Work of adhesion w [J/m²].
+    cohesive_stress : numeric
+        Dugdale stress sigma0 [Pa].
+
+    Returns
+    -------
+    load : float
+        The (negative) load at pull-off [N/m].
+    half_width : float
+        The contact half-width there [m].
+
+    Notes
+    -----
+    Minimum over a > 0 of P(a) (bounded scalar minimisation, a from 1e-4 to 10 times the JKR
+    pull-off half-width). As the Maugis parameter grows it tends to
+    :func:`jkr_line_pull_off_load`; as it vanishes, to :func:`dugdale_rigid_line_pull_off`
+    (the minimum then sits at a -> 0).
+    """
+    from scipy.optimize import minimize_scalar
+
+    radius = float(as_array(radius, "radius", "m", positive=True))
+    modulus = float(as_array(contact_modulus, "contact_modulus", "Pa", positive=True))
+    w = float(as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True))
+    sigma0 = float(as_array(cohesive_stress, "cohesive_stress", "Pa", positive=True))
+    scale = float(jkr_line_pull_off_half_width(radius, modulus, w))
+    result = minimize_scalar(lambda s: _maugis_line_scalar(np.exp(s) * scale, radius, modulus, w, sigma0)[0],
+                             bounds=(np.log(1e-4), np.log(10.0)), method="bounded",
+                             options={"xatol": 1e-7})
+    half_width = float(np.exp(result.x) * scale)
+    return float(result.fun), half_width
+
+
+@cites("maugis_1992")
+def dugdale_rigid_line_pull_off(radius, work_of_adhesion, cohesive_stress):
+    r"""Pull-off line load of a rigid cylinder on a rigid flat with a Dugdale law (small Maugis parameter) [N/m].
+
+    Parameters
+    ----------
+    radius : numeric
+        Effective radius R [m].
+    work_of_adhesion : numeric
+        Work of adhesion w [J/m²].
+    cohesive_stress : numeric
+        Dugdale stress sigma0 [Pa] (range h0 = w / sigma0).
+
+    Returns
+    -------
+    numeric
+        Magnitude of the pull-off load per unit length [N/m] (positive).
+
+    Notes
+    -----
+    Derjaguin's approximation at touching contact: the stress sigma0 acts where
+    x²/(2R) <= h0, so
+
+    .. math:: F = 2\sigma_0\sqrt{2 R h_0} = 2\sqrt{2 R \sigma_0 w}
+
+    Unlike the sphere (DMT, 2 pi w R, independent of the law), the 2D limit depends on the
+    range of the law, not on w alone (Johnson & Greenwood 2008; Baney & Hui 1997): there is
+    no law-independent "DMT line contact" (2 w R per unit length is not a line load).
+    """
+    radius = as_array(radius, "radius", "m", positive=True)
+    w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", nonnegative=True)
+    sigma0 = as_array(cohesive_stress, "cohesive_stress", "Pa", positive=True)
+    return 2.0 * np.sqrt(2.0 * radius * sigma0 * w)

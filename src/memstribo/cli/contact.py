@@ -35,6 +35,7 @@ def register(subparsers, parents):
     parser.add_argument("--max-iterations", type=int, default=None, help="iteration cap of the solver")
     parser.add_argument("--allow-unconverged", action="store_true",
                         help="print an unconverged result (flagged converged=false) instead of exiting with status 2")
+    register_adhesion(parser)
     parser.set_defaults(handler=run)
 
 
@@ -115,6 +116,8 @@ def contact_problem(args, params):
 
 
 def run(args, params):
+    if getattr(args, "adhesion", False) or getattr(args, "pull_off", False):
+        return run_adhesion(args, params)
     from ..contact import solve_line_contact
     from ..errors import ConvergenceError, InputError
     from ..reference import hertz_line_half_width, hertz_line_peak_pressure
@@ -153,3 +156,144 @@ def run(args, params):
     ]
     return CommandResult(values=values, units=units, title="line contact (plane strain, per unit face width)",
                          notes=notes)
+
+
+# --------------------------------------------------------------------------- adhesion (Maugis-Dugdale)
+
+
+def register_adhesion(parser):
+    """The ``--adhesion`` options of ``memstribo contact`` (docs/contact.md, "Adhesive contact")."""
+    group = parser.add_argument_group("adhesion (Maugis-Dugdale cohesive zone, docs/contact.md)")
+    group.add_argument("--adhesion", action="store_true",
+                       help="solve with a Maugis-Dugdale cohesive zone: tension sigma0 where the gap is in (0, h0]; "
+                            "prints adhesive_load and the Maugis parameter (load may then be negative: tensile)")
+    group.add_argument("--pull-off", action="store_true",
+                       help="with --flat: unload the smooth cylinder under approach control from zero load to "
+                            "separation; prints pull_off_line_load (N/m, positive), pull_off_half_width, "
+                            "maugis_parameter")
+    group.add_argument("--cohesive-stress", metavar="STRESS",
+                       help="Dugdale stress sigma0, e.g. '1.78 GPa' (default: 16 w / (9 sqrt(3) D0) of the parameter "
+                            "set, as 'memstribo constants' prints)")
+    group.add_argument("--cohesive-range", metavar="LENGTH",
+                       help="range h0 of the Dugdale stress, e.g. '0.25 nm' (default: w / sigma0); the work of "
+                            "adhesion is sigma0 h0")
+
+
+def cohesive_law(args, params):
+    """sigma0 [Pa], h0 [m] and w = sigma0 h0 [J/m^2]: the parameter set's Maugis values unless overridden."""
+    from ..adhesion import nanoscale_constants
+
+    constants = nanoscale_constants(params)
+    sigma0 = (_positive(args.cohesive_stress, "Pa", "--cohesive-stress") if args.cohesive_stress is not None
+              else float(constants.maugis_stress))
+    if args.cohesive_range is not None:
+        h0 = _positive(args.cohesive_range, "m", "--cohesive-range")
+    elif args.cohesive_stress is not None:
+        h0 = float(constants.work_of_adhesion) / sigma0  # keep w, change the stress
+    else:
+        h0 = float(constants.maugis_range)
+    return sigma0, h0, sigma0 * h0
+
+
+def run_adhesion(args, params):
+    """``memstribo contact --adhesion [--pull-off]``: the adhesive line contact and its pull-off."""
+    import argparse
+
+    import numpy as np
+
+    from ..errors import ConvergenceError, InputError
+    from ..reference import (jkr_line_pull_off_load, maugis_dugdale_line_pull_off, maugis_line_parameter)
+
+    sigma0, h0, w = cohesive_law(args, params)
+    need_defaults = args.modulus is None or args.radius is None or args.load is None
+    modulus, radius, load = _defaults(params) if need_defaults else (None, None, None)
+    modulus = _positive(args.modulus, "Pa", "--modulus") if args.modulus is not None else modulus
+    radius = _positive(args.radius, "m", "--radius") if args.radius is not None else radius
+    lam = float(maugis_line_parameter(radius, modulus, w, sigma0))
+    law = {"cohesive_stress": sigma0, "cohesive_range": h0, "work_of_adhesion": w, "maugis_parameter": lam}
+    law_units = {"cohesive_stress": "Pa", "cohesive_range": "m", "work_of_adhesion": "J/m^2", "maugis_parameter": ""}
+    law_note = (f"  Maugis-Dugdale law: sigma0 = {sigma0 / 1e9:.4g} GPa over h0 = {h0 * 1e9:.4g} nm "
+                f"(w = {w:.4g} J/m^2); "
+                f"Maugis parameter lambda = 2 sigma0 (R/(pi w E*^2))^(1/3) = {lam:.3g} (R = {radius * 1e6:.4g} um, "
+                f"E* = {modulus / 1e9:.4g} GPa).")
+
+    if args.pull_off:
+        from ..adhesive_contact import line_contact_pull_off
+
+        if not args.flat:
+            raise InputError("--pull-off needs --flat (a smooth cylinder on a flat)")
+        length = _positive(args.length, "m", "--length") if args.length is not None else None
+        if args.points < 64:
+            raise InputError(f"--points must be at least 64 for --pull-off, got {args.points}")
+        result = line_contact_pull_off(radius, modulus, w, sigma0, points=args.points, length=length,
+                                       tolerance=args.tolerance, periodic=args.periodic)
+        if not result.converged and not args.allow_unconverged:
+            raise ConvergenceError(f"the pull-off search did not finish: {result.message}. Use more --points, a "
+                                   "longer --length, or --allow-unconverged to print the result anyway")
+        reference, reference_width = maugis_dugdale_line_pull_off(radius, modulus, w, sigma0)
+        jkr = -float(jkr_line_pull_off_load(radius, modulus, w))
+        values = {"pull_off_line_load": result.pull_off_line_load, "pull_off_half_width": result.pull_off_half_width,
+                  **law, "maugis_dugdale_pull_off_line_load": -reference,
+                  "maugis_dugdale_pull_off_half_width": reference_width, "jkr_pull_off_line_load": jkr,
+                  "unloading_steps": int(len(result.curve.load) - 1), "converged": result.converged}
+        units = {"pull_off_line_load": "N/m", "pull_off_half_width": "m", **law_units,
+                 "maugis_dugdale_pull_off_line_load": "N/m", "maugis_dugdale_pull_off_half_width": "m",
+                 "jkr_pull_off_line_load": "N/m", "unloading_steps": "", "converged": ""}
+        notes = [law_note,
+                 f"  smooth cylinder, {args.points} elements over {result.length * 1e9:.4g} nm, "
+                 f"{'periodic' if args.periodic else 'free-boundary'} half-plane; unloaded under approach control.",
+                 f"  closed forms: Maugis-Dugdale cylinder (Baney & Hui 1997) {-reference:.4g} N/m, JKR line contact "
+                 f"(3/4)(4 pi E* w^2 R)^(1/3) = {jkr:.4g} N/m.",
+                 f"  {result.message}."]
+        return CommandResult(values=values, units=units, title="adhesive line contact: pull-off (per unit face width)",
+                             notes=notes)
+
+    from ..contact import solve_line_contact
+
+    from ..reference import hertz_line_half_width
+    from ..units import to_si
+
+    # the load may be tensile (negative) with adhesion; the grid checks of contact_problem use the
+    # Hertz load whose half-width is the larger of Hertz's at |load| and JKR's at zero load
+    applied = to_si(args.load, "N/m", "--load") if args.load is not None else load
+    a_zero = float(np.cbrt(32.0 * radius**2 * w / (np.pi * modulus)))
+    a_hertz = float(hertz_line_half_width(abs(applied), radius, modulus)) if applied else 0.0
+    size_load = np.pi * modulus * max(a_hertz, a_zero) ** 2 / (4.0 * radius)
+    overrides = {"load": f"{size_load} N/m", "modulus": f"{modulus} Pa", "radius": f"{radius} m"}
+    if args.flat and args.length is None:  # wider than Hertz's contact: 5 JKR half-widths at zero load
+        overrides["length"] = f"{max(8.0 * a_hertz, 5.0 * a_zero)} m"
+    separation, dx, modulus, radius, _, label = contact_problem(argparse.Namespace(**{**vars(args), **overrides}),
+                                                                params)
+    load = applied
+    solution = solve_line_contact(separation, dx, modulus, load=load, periodic=args.periodic,
+                                  tolerance=args.tolerance, max_iterations=args.max_iterations,
+                                  cohesive_stress=sigma0, cohesive_range=h0)
+    if not solution.converged and not args.allow_unconverged:
+        raise ConvergenceError(f"the adhesive contact solve did not converge: {solution.message}. Raise "
+                               "--max-iterations, loosen --tolerance, or use --allow-unconverged to print it anyway")
+    if not args.periodic and (solution.contact[0] or solution.contact[-1] or solution.cohesive[0]
+                              or solution.cohesive[-1]):
+        raise InputError("the contact or its cohesive zone reaches the end of the domain: the free-boundary result "
+                         "would be wrong; use a longer profile (or --length) or a smaller load")
+    values = {
+        "contact_length": solution.contact_length,
+        "cohesive_length": float(np.count_nonzero(solution.cohesive) * dx),
+        "adhesive_load": solution.adhesive_load,
+        "load": solution.load,
+        "max_pressure": solution.max_pressure,
+        "min_pressure": float(solution.pressure.min()),
+        "approach": solution.approach,
+        **law,
+        "converged": solution.converged,
+        "iterations": solution.iterations,
+        "residual": solution.residual,
+        "solve_time": solution.solve_time,
+    }
+    units = {"contact_length": "m", "cohesive_length": "m", "adhesive_load": "N/m", "load": "N/m",
+             "max_pressure": "Pa", "min_pressure": "Pa", "approach": "m", **law_units, "converged": "",
+             "iterations": "", "residual": "", "solve_time": "s"}
+    notes = [f"  {label}; {'periodic' if args.periodic else 'free-boundary'} half-plane.", law_note,
+             "  load = compressive load of the contact - adhesive_load (the tension of the cohesive zone outside it).",
+             f"  solver: {solution.message}."]
+    return CommandResult(values=values, units=units,
+                         title="adhesive line contact (Maugis-Dugdale, per unit face width)", notes=notes)

@@ -1,0 +1,67 @@
+"""Validation rows of the adhesive (Maugis-Dugdale) line contact against closed forms (MODEL §7c)."""
+
+from __future__ import annotations
+
+from .rows import ValidationRow, compare
+from .contact import _cli_json
+
+TOPIC = "adhesive contact"
+SILICON = ["--modulus", "85 GPa", "--cohesive-stress", "1.78 GPa", "--cohesive-range", "0.25 nm"]
+PULL_OFF_ARGS = ["contact", "--flat", "--radius", "10 um", "--points", "1024", "--adhesion", "--pull-off", *SILICON]
+JKR_ARGS = ["contact", "--flat", "--radius", "100 um", "--points", "2048", "--length", "3.5 um", "--load", "-100 N/m",
+            "--adhesion", *SILICON]
+HERTZ_ARGS = ["contact", "--flat", "--radius", "20 um", "--load", "1 N/m", "--modulus", "100 GPa", "--points", "2048",
+              "--length", "127.7 nm", "--adhesion", "--cohesive-stress", "1 kPa", "--cohesive-range", "1 pm"]
+RIGID_ARGS = ["contact", "--flat", "--radius", "10 um", "--points", "1024", "--adhesion", "--pull-off",
+              "--modulus", "85 GPa", "--cohesive-stress", "50 MPa", "--cohesive-range", "8.9 nm"]
+
+
+def _rounded(value, digits):
+    """The cohesive zone settles to ~1e-4: shown to 2-3 significant digits, the same on every machine."""
+    return float(f"{value:.{digits}g}")
+
+
+def _command(argv):
+    return "memstribo " + " ".join(f"'{a}'" if " " in a else a for a in argv) + " --json"
+
+
+def rows() -> list[ValidationRow]:
+    from scipy.optimize import brentq
+
+    from ..reference import (dugdale_rigid_line_pull_off, hertz_line_half_width, jkr_line_load,
+                             jkr_line_pull_off_load, maugis_dugdale_line_pull_off)
+
+    w = 1.78e9 * 0.25e-9
+    out = _cli_json(PULL_OFF_ARGS)
+    reference, width = maugis_dugdale_line_pull_off(10e-6, 85e9, w, 1.78e9)
+    rows_ = [
+        compare(TOPIC, f"pull-off line load, Si/Si cylinder R = 10 um (lambda = {out['maugis_parameter']:.2f})",
+                "Maugis-Dugdale cylinder (Baney & Hui 1997), docs/contact.md", -reference,
+                _rounded(out["pull_off_line_load"], 3), "N/m", rtol=5e-3, command=_command(PULL_OFF_ARGS)),
+        compare(TOPIC, "pull-off half-width, same", "Maugis-Dugdale cylinder (Baney & Hui 1997)", width * 1e9,
+                _rounded(out["pull_off_half_width"] * 1e9, 2), "nm", rtol=5e-2, command=_command(PULL_OFF_ARGS),
+                note="the contact length counts whole elements (0.85 nm)"),
+        compare(TOPIC, "pull-off line load, same", "JKR line contact (3/4)(4 pi E* w^2 R)^(1/3)",
+                -float(jkr_line_pull_off_load(10e-6, 85e9, w)), _rounded(out["pull_off_line_load"], 3), "N/m",
+                rtol=1e-2, command=_command(PULL_OFF_ARGS)),
+    ]
+    out = _cli_json(JKR_ARGS)
+    a_jkr = brentq(lambda a: float(jkr_line_load(a, 100e-6, 85e9, w)) + 100.0, 300e-9, 2e-6)
+    rows_.append(compare(TOPIC, f"half-width at -100 N/m, R = 100 um (lambda = {out['maugis_parameter']:.2f})",
+                         "JKR line contact P = pi E* a^2/(4R) - (2 pi E* w a)^(1/2)", a_jkr * 1e9,
+                         _rounded(out["contact_length"] / 2 * 1e9, 3), "nm", rtol=2e-2, command=_command(JKR_ARGS)))
+    rows_.append(compare(TOPIC, "load balance dx*sum(p) with the cohesive zone", "imposed load -100 N/m", -100.0,
+                         out["load"], "N/m", rtol=1e-8, command=_command(JKR_ARGS)))
+    out = _cli_json(HERTZ_ARGS)
+    rows_.append(compare(TOPIC, "contact length 2a at vanishing adhesion (sigma0 = 1 kPa, h0 = 1 pm)",
+                         "Hertz line contact, Johnson (4.43)",
+                         2 * float(hertz_line_half_width(1.0, 20e-6, 100e9)) * 1e9, out["contact_length"] * 1e9,
+                         "nm", rtol=1e-2, command=_command(HERTZ_ARGS)))
+    out = _cli_json(RIGID_ARGS)
+    rows_.append(compare(TOPIC, f"pull-off line load, small Maugis parameter (lambda = {out['maugis_parameter']:.2f})",
+                         "rigid Dugdale limit 2 sigma0 (2 R h0)^(1/2)",
+                         float(dugdale_rigid_line_pull_off(10e-6, 50e6 * 8.9e-9, 50e6)),
+                         _rounded(out["pull_off_line_load"], 3),
+                         "N/m", rtol=3e-2, command=_command(RIGID_ARGS),
+                         note="the 2D small-lambda limit depends on the law's range; no 'DMT' 2 w R per unit length"))
+    return rows_

@@ -1,0 +1,292 @@
+"""Adhesive (Maugis-Dugdale) line contact: solver, closed forms, pull-off, CLI (docs/contact.md, model §7c)."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from memstribo.adhesive_contact import line_contact_pull_off, load_approach_curve
+from memstribo.contact import solve_line_contact
+from memstribo.errors import InputError
+from memstribo.reference import (dugdale_rigid_line_pull_off, hertz_line_half_width, jkr_line_load,
+                                 jkr_line_pull_off_half_width, jkr_line_pull_off_load, maugis_dugdale_line_load,
+                                 maugis_dugdale_line_pull_off, maugis_line_parameter)
+
+# silicon teeth (docs/model.md §2, §3): E* = 85 GPa, w = A/(12 pi D0^2), sigma0 = 16 w/(9 sqrt 3 D0), h0 = w/sigma0
+E_STAR, W, SIGMA0 = 85e9, 0.445, 1.78e9
+H0 = W / SIGMA0
+
+
+def cylinder(n, length, radius):
+    dx = length / n
+    x = (np.arange(n) - 0.5 * (n - 1)) * dx
+    return x**2 / (2.0 * radius), dx
+
+
+def rough(n, dx, rms, seed=1):
+    rng = np.random.default_rng(seed)
+    q = 2 * np.pi * np.fft.rfftfreq(n, dx)
+    amplitude = np.zeros_like(q)
+    amplitude[1:] = q[1:] ** -1.3
+    z = np.fft.irfft(amplitude * (rng.normal(size=q.size) + 1j * rng.normal(size=q.size)), n)
+    z *= rms / z.std()
+    return z.max() - z
+
+
+# ----------------------------------------------------------------------------- closed forms
+
+
+def test_jkr_line_closed_forms():
+    R = 10e-6
+    a_c = float(jkr_line_pull_off_half_width(R, E_STAR, W))
+    p_c = float(jkr_line_pull_off_load(R, E_STAR, W))
+    assert p_c == pytest.approx(float(jkr_line_load(a_c, R, E_STAR, W)), rel=1e-12)
+    # the minimum of P(a)
+    for factor in (0.9, 1.1):
+        assert float(jkr_line_load(factor * a_c, R, E_STAR, W)) > p_c
+    # w = 0: Hertz
+    a = float(hertz_line_half_width(3.0, R, E_STAR))
+    assert float(jkr_line_load(a, R, E_STAR, 0.0)) == pytest.approx(3.0, rel=1e-12)
+
+
+def test_maugis_dugdale_line_limits():
+    R = 10e-6
+    assert float(maugis_line_parameter(R, E_STAR, W, SIGMA0)) == pytest.approx(3.548, abs=1e-3)
+    # large sigma0 (JKR): the load at a half-width and the pull-off tend to JKR
+    load, c = maugis_dugdale_line_load(100e-9, R, E_STAR, W, 100 * SIGMA0)
+    assert load == pytest.approx(float(jkr_line_load(100e-9, R, E_STAR, W)), rel=1e-4)
+    assert 100e-9 < c < 100.1e-9
+    pull, width = maugis_dugdale_line_pull_off(R, E_STAR, W, 100 * SIGMA0)
+    assert pull == pytest.approx(float(jkr_line_pull_off_load(R, E_STAR, W)), rel=1e-4)
+    assert width == pytest.approx(float(jkr_line_pull_off_half_width(R, E_STAR, W)), rel=1e-3)
+    # small sigma0 (rigid Derjaguin limit, 2 sigma0 sqrt(2 R h0)), lambda = 0.002
+    pull, width = maugis_dugdale_line_pull_off(R, E_STAR, W, 1e6)
+    assert -pull == pytest.approx(float(dugdale_rigid_line_pull_off(R, W, 1e6)), rel=1e-3)
+
+
+# ----------------------------------------------------------------------------- solver: limits and balance
+
+
+def test_no_adhesion_is_the_plain_solver():
+    h, dx = cylinder(1024, 200e-9, 20e-6)
+    plain = solve_line_contact(h, dx, 100e9, load=1.0)
+    assert plain.adhesive_load == 0.0 and plain.cohesive is None
+    zero = solve_line_contact(h, dx, 100e9, load=1.0, cohesive_stress=0.0, cohesive_range=0.0)
+    assert zero.converged and zero.adhesive_load == 0.0 and not zero.cohesive.any()
+    np.testing.assert_allclose(zero.pressure, plain.pressure, rtol=0, atol=1e-6 * plain.max_pressure)
+    assert zero.approach == pytest.approx(plain.approach, rel=1e-6)
+    # a vanishing work of adhesion (sigma0 -> 0 at fixed h0) tends to Hertz
+    weak = solve_line_contact(h, dx, 100e9, load=1.0, cohesive_stress=1e3, cohesive_range=H0)
+    assert weak.converged
+    assert weak.contact_length == pytest.approx(plain.contact_length, abs=2.1 * dx)
+    assert weak.contact_length / 2 == pytest.approx(float(hertz_line_half_width(1.0, 20e-6, 100e9)), rel=0.03)
+
+
+def test_approach_control_reproduces_load_control():
+    h, dx = cylinder(1024, 200e-9, 20e-6)
+    plain = solve_line_contact(h, dx, 100e9, load=1.0)
+    controlled = solve_line_contact(h, dx, 100e9, approach=plain.approach)
+    assert controlled.converged
+    assert controlled.load == pytest.approx(1.0, rel=1e-6)
+    adhesive = solve_line_contact(h, dx, E_STAR, load=5.0, cohesive_stress=SIGMA0, cohesive_range=H0)
+    back = solve_line_contact(h, dx, E_STAR, approach=adhesive.approach, cohesive_stress=SIGMA0, cohesive_range=H0,
+                              initial_pressure=adhesive.pressure)
+    assert back.converged
+    assert back.load == pytest.approx(5.0, abs=1e-3 * adhesive.adhesive_load)
+
+
+@pytest.mark.parametrize("load", [60.0, 0.0, -60.0])
+def test_silicon_cylinder_against_maugis_dugdale(load):
+    """Si/Si tooth, R = 10 um, lambda = 3.55: the half-width at a load matches Baney-Hui's cylinder."""
+    R = 10e-6
+    h, dx = cylinder(2048, 1000e-9, R)
+    sol = solve_line_contact(h, dx, E_STAR, load=load, cohesive_stress=SIGMA0, cohesive_range=H0)
+    assert sol.converged, sol.message
+    # force balance: net load = dx sum(p) = imposed load
+    assert sol.load == pytest.approx(load, abs=1e-10 * sol.adhesive_load)
+    assert abs(sol.load - dx * sol.pressure.sum()) <= 1e-12 * sol.adhesive_load
+    a = sol.contact_length / 2
+    a_md = brentq(lambda s: maugis_dugdale_line_load(s, R, E_STAR, W, SIGMA0)[0] - load, 30e-9, 500e-9)
+    assert a == pytest.approx(a_md, abs=2.1 * dx)  # contact_length counts whole elements
+    # Dugdale law: p >= -sigma0; the tensile zone beyond the contact
+    assert sol.pressure.min() >= -SIGMA0 * (1 + 1e-12)
+    assert sol.adhesive_load == pytest.approx(SIGMA0 * dx * -sol.pressure[sol.cohesive].sum() / SIGMA0, rel=1e-12)
+    outside = ~sol.contact
+    assert np.all(sol.gap[outside & (sol.pressure == 0)] > H0 * (1 - 1e-6))
+    assert np.all(sol.gap[outside & (sol.pressure == -SIGMA0)] <= H0 * (1 + 1e-6))
+    # JKR is 3-6 % off at lambda = 3.55 (neither JKR nor DMT, model §7c)
+    a_jkr = brentq(lambda s: float(jkr_line_load(s, R, E_STAR, W)) - load, 70e-9, 500e-9)
+    assert 0.01 < 1 - a / a_jkr < 0.08
+
+
+def test_large_maugis_parameter_matches_jkr():
+    """R = 100 um (lambda = 7.6): load vs half-width within 1.5 % of JKR in a."""
+    R = 100e-6
+    h, dx = cylinder(2048, 3e-6, R)
+    for load in (-100.0,):
+        sol = solve_line_contact(h, dx, E_STAR, load=load, cohesive_stress=SIGMA0, cohesive_range=H0)
+        assert sol.converged, sol.message
+        a_jkr = brentq(lambda s: float(jkr_line_load(s, R, E_STAR, W)) - load, 300e-9, 2e-6)
+        assert sol.contact_length / 2 == pytest.approx(a_jkr, rel=0.015)
+
+
+def test_periodic_and_free_boundary():
+    R = 10e-6
+    h, dx = cylinder(2048, 1000e-9, R)
+    free = solve_line_contact(h, dx, E_STAR, load=0.0, cohesive_stress=SIGMA0, cohesive_range=H0)
+    periodic = solve_line_contact(h, dx, E_STAR, load=0.0, cohesive_stress=SIGMA0, cohesive_range=H0, periodic=True)
+    assert periodic.converged and periodic.periodic
+    assert abs(periodic.load) <= 1e-10 * periodic.adhesive_load
+    # the periodic images (one cylinder per micrometre) change the half-width by a few per cent only
+    assert periodic.contact_length == pytest.approx(free.contact_length, rel=0.05)
+
+
+def test_rough_free_boundary_consistency():
+    n, dx = 2048, 0.25e-9
+    h = rough(n, dx, 1e-9)
+    load = 0.05 * E_STAR * n * dx * 0.05
+    plain = solve_line_contact(h, dx, E_STAR, load=load)
+    sol = solve_line_contact(h, dx, E_STAR, load=load, cohesive_stress=SIGMA0, cohesive_range=H0)
+    assert sol.converged, sol.message
+    assert sol.load == pytest.approx(load, rel=1e-10)
+    assert sol.contact.sum() > plain.contact.sum()  # adhesion pulls more of the surfaces into contact
+    assert sol.pressure.min() >= -SIGMA0 * (1 + 1e-12)
+    outside = ~sol.contact
+    assert np.all(sol.gap[outside & (sol.pressure == 0)] > H0 * (1 - 1e-6))
+    assert np.all(sol.gap[outside & (sol.pressure == -SIGMA0)] <= H0 * (1 + 1e-6))
+    # warm start from the solution: the same state, at once
+    again = solve_line_contact(h, dx, E_STAR, load=load, cohesive_stress=SIGMA0, cohesive_range=H0,
+                               initial_pressure=sol.pressure)
+    assert again.converged
+    # the same state: the zone's load to 1e-4; single front elements within the zone tolerance (0.25)
+    assert again.adhesive_load == pytest.approx(sol.adhesive_load, rel=1e-3)
+    np.testing.assert_allclose(again.pressure, sol.pressure, atol=0.26 * SIGMA0)
+    assert np.count_nonzero(np.abs(again.pressure - sol.pressure) > 1e-3 * SIGMA0) <= 0.02 * n  # the fronts
+
+
+# ----------------------------------------------------------------------------- instability, pull-off
+
+
+def test_load_approach_hysteresis():
+    """Jump-in on loading, adhered unloading below zero load down to pull-off: the branches differ."""
+    h, dx = cylinder(1024, 600e-9, 10e-6)
+    # free-boundary datum: without load the surfaces touch at approach 0; start 2 h0 apart
+    approaches = np.linspace(-2 * H0, 1.5e-9, 12)
+    loading, state = load_approach_curve(h, dx, E_STAR, approaches, cohesive_stress=SIGMA0, cohesive_range=H0)
+    assert loading.converged.all()
+    assert loading.half_width[0] == 0.0 and loading.load[0] == 0.0  # apart: no force
+    jump = int(np.flatnonzero(loading.half_width > 0)[0])
+    assert loading.half_width[jump] > 100e-9 and loading.load[jump] < -30.0  # jump-in: a wide contact at once
+    assert np.all(loading.half_width[:jump] == 0.0)
+    unloading, _ = load_approach_curve(h, dx, E_STAR, approaches[::-1], cohesive_stress=SIGMA0, cohesive_range=H0,
+                                       initial_pressure=state)
+    assert unloading.converged.all()
+    back_load, back_width = unloading.load[::-1], unloading.half_width[::-1]
+    # hysteresis: before the jump-in point the unloading branch is still in contact, under tension
+    assert np.all(back_width[:jump] > 100e-9) and np.all(back_load[:jump] < -40.0)
+    # where both are in contact they are the same state (up to one element at the contact edges)
+    np.testing.assert_allclose(back_width[jump:], loading.half_width[jump:], atol=1.01 * dx)
+    np.testing.assert_allclose(back_load[jump:], loading.load[jump:], atol=1.0)
+
+
+def test_pull_off_silicon():
+    result = line_contact_pull_off(10e-6, E_STAR, W, SIGMA0, points=1024)
+    assert result.converged, result.message
+    assert result.maugis_parameter == pytest.approx(3.548, abs=1e-3)
+    reference, width = maugis_dugdale_line_pull_off(10e-6, E_STAR, W, SIGMA0)
+    assert result.pull_off_line_load == pytest.approx(-reference, rel=0.005)
+    assert result.pull_off_half_width == pytest.approx(width, rel=0.05)
+    assert result.pull_off_line_load == pytest.approx(-float(jkr_line_pull_off_load(10e-6, E_STAR, W)), rel=0.01)
+    assert np.all(np.diff(result.curve.approach) < 0)  # unloading
+
+
+def test_pull_off_small_maugis_parameter_is_rigid_dugdale():
+    """lambda = 0.1: the 2D 'DMT' limit is the rigid Dugdale pull-off 2 sigma0 sqrt(2 R h0) (not 2 w R)."""
+    sigma0 = 5e7
+    result = line_contact_pull_off(10e-6, E_STAR, W, sigma0, points=1024)
+    assert result.converged, result.message
+    assert result.maugis_parameter == pytest.approx(0.0997, abs=1e-3)
+    reference, _ = maugis_dugdale_line_pull_off(10e-6, E_STAR, W, sigma0)
+    assert result.pull_off_line_load == pytest.approx(-reference, rel=0.005)
+    assert result.pull_off_line_load == pytest.approx(float(dugdale_rigid_line_pull_off(10e-6, W, sigma0)), rel=0.03)
+
+
+def test_past_pull_off_under_load_control_is_reported():
+    h, dx = cylinder(1024, 800e-9, 10e-6)
+    sol = solve_line_contact(h, dx, E_STAR, load=-200.0, cohesive_stress=SIGMA0, cohesive_range=H0)
+    assert not sol.converged
+    assert "NOT converged" in sol.message
+
+
+# ----------------------------------------------------------------------------- input errors
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    (dict(cohesive_stress=-1.0, cohesive_range=H0), "cohesive_stress"),
+    (dict(cohesive_stress=SIGMA0, cohesive_range=-1e-10), "cohesive_range"),
+    (dict(cohesive_stress=SIGMA0), "cohesive_range"),
+    (dict(cohesive_stress=np.nan, cohesive_range=H0), "cohesive_stress"),
+])
+def test_bad_cohesive_input(kwargs, name):
+    h, dx = cylinder(256, 200e-9, 10e-6)
+    with pytest.raises(InputError, match=name):
+        solve_line_contact(h, dx, E_STAR, load=1.0, **kwargs)
+
+
+def test_bad_control_input():
+    h, dx = cylinder(256, 200e-9, 10e-6)
+    with pytest.raises(InputError, match="exactly one"):
+        solve_line_contact(h, dx, E_STAR, load=1.0, approach=0.0, cohesive_stress=SIGMA0, cohesive_range=H0)
+    with pytest.raises(InputError, match="load"):
+        solve_line_contact(h, dx, E_STAR, load=-1.0)  # tensile load without adhesion
+    with pytest.raises(InputError, match="initial_pressure"):
+        solve_line_contact(h, dx, E_STAR, load=1.0, cohesive_stress=SIGMA0, cohesive_range=H0,
+                           initial_pressure=np.full(256, -2 * SIGMA0))
+    with pytest.raises(InputError, match="cohesive_stress"):
+        line_contact_pull_off(10e-6, E_STAR, W, -1.0)
+
+
+# ----------------------------------------------------------------------------- CLI
+
+
+def _cli(argv):
+    from memstribo.cli.main import main
+
+    buffer = io.StringIO()
+    with contextlib.redirect_stdout(buffer):
+        code = main(list(argv) + ["--json"])
+    return code, buffer.getvalue()
+
+
+def test_cli_adhesion_json():
+    code, text = _cli(["contact", "--flat", "--radius", "10 um", "--modulus", "85 GPa", "--load", "10 N/m",
+                       "--points", "1024", "--length", "800 nm", "--adhesion"])
+    assert code == 0, text
+    out = json.loads(text)
+    assert out["adhesive_load"] > 0 and out["load"] == pytest.approx(10.0, rel=1e-8)
+    assert out["maugis_parameter"] == pytest.approx(3.55, abs=0.02)
+    assert out["cohesive_stress"] == pytest.approx(SIGMA0, rel=0.01)
+
+
+def test_cli_pull_off_json():
+    code, text = _cli(["contact", "--flat", "--radius", "10 um", "--modulus", "85 GPa", "--points", "1024",
+                       "--adhesion", "--pull-off"])
+    assert code == 0, text
+    out = json.loads(text)
+    for key in ("pull_off_line_load", "maugis_parameter", "pull_off_half_width"):
+        assert key in out
+    assert out["pull_off_line_load"] == pytest.approx(96.24, rel=0.01)
+
+
+def test_cli_bad_cohesive_override():
+    from memstribo.cli.main import main
+
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()) as err:
+        code = main(["contact", "--flat", "--radius", "10 um", "--adhesion", "--cohesive-stress", "-1 GPa", "--json"])
+    assert code != 0
+    assert "--cohesive-stress" in err.getvalue()
