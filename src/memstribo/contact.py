@@ -1198,3 +1198,30 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
                            residual=float(residual), converged=converged, solve_time=time.perf_counter() - start,
                            message=message, dx=dx, periodic=bool(periodic), coarse_iterations=coarse[0],
                            adhesive_load=adhesive_load, cohesive=cohesive)
+
+
+def cylinder_on_flat(radius, length, points):
+    """Undeformed gap of a smooth cylinder on a flat, ``h(x) = x^2 / (2R)`` (Johnson 1985 §4.3).
+
+    Parameters
+    ----------
+    radius : float
+        Radius R of the cylinder (the effective radius of two cylinders) [m], > 0.
+    length : float
+        Length of the domain [m], > 0, centred on the apex.
+    points : int
+        Number of elements, >= 2.
+
+    Returns
+    -------
+    (ndarray, float)
+        The separation at the element centres [m] and the element width [m].
+    """
+    if not (np.isfinite(radius) and radius > 0 and np.isfinite(length) and length > 0):
+        raise InputError(f"cylinder_on_flat: radius and length must be positive lengths, got {radius!r}, {length!r}.")
+    if int(points) < 2:
+        raise InputError(f"cylinder_on_flat: at least 2 elements are needed, got {points!r}.")
+    n = int(points)
+    dx = float(length) / n
+    x = (np.arange(n) - 0.5 * (n - 1)) * dx
+    return x**2 / (2.0 * float(radius)), dx

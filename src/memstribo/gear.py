@@ -617,3 +617,14 @@ def gear_summary(params) -> tuple[dict, dict]:
              "contact_ratio": "", "single_tooth_zone": "m", "effective_radius_pitch": "m", "contact_modulus": "Pa",
              "hertz_half_width": "m", "hertz_peak_pressure": "Pa", "tangential_force": "N"}
     return values, units
+
+
+def pitch_point_line_contact(params) -> tuple[float, float, float]:
+    """Contact modulus E* [Pa], effective radius R_ef at the pitch point [m] (4-11) and the line load
+    ``normal_load / face_width`` [N/m] of the parameter set: the default line contact of ``memstribo contact``."""
+    from .adhesion import contact_modulus
+
+    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
+                              params["counter_poisson_ratio"])
+    pair = GearPair.from_parameters(params)
+    return float(modulus), float(pair.effective_radius(0.0)), params["normal_load"] / params["face_width"]

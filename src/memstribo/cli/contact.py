@@ -40,13 +40,9 @@ def register(subparsers, parents):
 
 
 def _defaults(params):
-    from ..adhesion import contact_modulus
-    from ..gear import GearPair
+    from ..gear import pitch_point_line_contact
 
-    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
-                              params["counter_poisson_ratio"])
-    pair = GearPair.from_parameters(params)
-    return float(modulus), float(pair.effective_radius(0.0)), params["normal_load"] / params["face_width"]
+    return pitch_point_line_contact(params)
 
 
 def _positive(text, unit, name):
@@ -79,7 +75,7 @@ def contact_problem(args, params):
         length = _positive(args.length, "m", "--length") if args.length is not None else 8.0 * half_width
         n = args.points
         dx = length / n
-        heights = np.zeros(n)
+        heights = np.zeros(n)  # the gap is the library's cylinder_on_flat (the same x grid below)
         label = f"smooth cylinder on a flat, {n} elements over {length * 1e9:.4g} nm"
     else:
         from ..readers import read_topography

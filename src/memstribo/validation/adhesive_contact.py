@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
+from .contact import smooth_cylinder
 from .rows import ValidationRow, compare
-from .contact import _cli_json
 
 TOPIC = "adhesive contact"
 SILICON = ["--modulus", "85 GPa", "--cohesive-stress", "1.78 GPa", "--cohesive-range", "0.25 nm"]
@@ -21,6 +21,27 @@ def _rounded(value, digits):
     return float(f"{value:.{digits}g}")
 
 
+def _pull_off(radius, modulus, sigma0, h0, points):
+    """What ``memstribo contact --flat --adhesion --pull-off ...`` prints, through the library."""
+    from ..adhesive_contact import line_contact_pull_off
+    from ..reference import maugis_line_parameter
+
+    w = sigma0 * h0
+    result = line_contact_pull_off(radius, modulus, w, sigma0, points=points, length=None, tolerance=1e-8,
+                                   periodic=False)
+    return {"pull_off_line_load": result.pull_off_line_load, "pull_off_half_width": result.pull_off_half_width,
+            "maugis_parameter": float(maugis_line_parameter(radius, modulus, w, sigma0))}
+
+
+def _adhesive(radius, length, points, modulus, load, sigma0, h0):
+    """What ``memstribo contact --flat --adhesion --load ...`` prints, through the library."""
+    from ..reference import maugis_line_parameter
+
+    out = smooth_cylinder(radius, length, points, modulus, load, cohesive_stress=sigma0, cohesive_range=h0)
+    out["maugis_parameter"] = float(maugis_line_parameter(radius, modulus, sigma0 * h0, sigma0))
+    return out
+
+
 def _command(argv):
     return "memstribo " + " ".join(f"'{a}'" if " " in a else a for a in argv) + " --json"
 
@@ -32,7 +53,7 @@ def rows() -> list[ValidationRow]:
                              jkr_line_pull_off_load, maugis_dugdale_line_pull_off)
 
     w = 1.78e9 * 0.25e-9
-    out = _cli_json(PULL_OFF_ARGS)
+    out = _pull_off(10e-6, 85e9, 1.78e9, 0.25e-9, 1024)
     reference, width = maugis_dugdale_line_pull_off(10e-6, 85e9, w, 1.78e9)
     rows_ = [
         compare(TOPIC, f"pull-off line load, Si/Si cylinder R = 10 um (lambda = {out['maugis_parameter']:.2f})",
@@ -45,19 +66,19 @@ def rows() -> list[ValidationRow]:
                 -float(jkr_line_pull_off_load(10e-6, 85e9, w)), _rounded(out["pull_off_line_load"], 3), "N/m",
                 rtol=1e-2, command=_command(PULL_OFF_ARGS)),
     ]
-    out = _cli_json(JKR_ARGS)
+    out = _adhesive(100e-6, 3.5e-6, 2048, 85e9, -100.0, 1.78e9, 0.25e-9)
     a_jkr = brentq(lambda a: float(jkr_line_load(a, 100e-6, 85e9, w)) + 100.0, 300e-9, 2e-6)
     rows_.append(compare(TOPIC, f"half-width at -100 N/m, R = 100 um (lambda = {out['maugis_parameter']:.2f})",
                          "JKR line contact P = pi E* a^2/(4R) - (2 pi E* w a)^(1/2)", a_jkr * 1e9,
                          _rounded(out["contact_length"] / 2 * 1e9, 3), "nm", rtol=2e-2, command=_command(JKR_ARGS)))
     rows_.append(compare(TOPIC, "load balance dx*sum(p) with the cohesive zone", "imposed load -100 N/m", -100.0,
                          out["load"], "N/m", rtol=1e-8, command=_command(JKR_ARGS)))
-    out = _cli_json(HERTZ_ARGS)
+    out = _adhesive(20e-6, 127.7e-9, 2048, 100e9, 1.0, 1e3, 1e-12)
     rows_.append(compare(TOPIC, "contact length 2a at vanishing adhesion (sigma0 = 1 kPa, h0 = 1 pm)",
                          "Hertz line contact, Johnson (4.43)",
                          2 * float(hertz_line_half_width(1.0, 20e-6, 100e9)) * 1e9, out["contact_length"] * 1e9,
                          "nm", rtol=1e-2, command=_command(HERTZ_ARGS)))
-    out = _cli_json(RIGID_ARGS)
+    out = _pull_off(10e-6, 85e9, 50e6, 8.9e-9, 1024)
     rows_.append(compare(TOPIC, f"pull-off line load, small Maugis parameter (lambda = {out['maugis_parameter']:.2f})",
                          "rigid Dugdale limit 2 sigma0 (2 R h0)^(1/2)",
                          float(dugdale_rigid_line_pull_off(10e-6, 50e6 * 8.9e-9, 50e6)),

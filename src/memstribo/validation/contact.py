@@ -2,10 +2,6 @@
 
 from __future__ import annotations
 
-import contextlib
-import io
-import json
-
 from .rows import ValidationRow, compare
 
 HERTZ_ARGS = ["contact", "--flat", "--radius", "20 um", "--load", "1 N/m", "--modulus", "100 GPa",
@@ -13,26 +9,24 @@ HERTZ_ARGS = ["contact", "--flat", "--radius", "20 um", "--load", "1 N/m", "--mo
 DEFAULT_ARGS = ["contact", "--flat", "--points", "4000", "--length", "400 nm"]
 
 
-def _cli_json(argv):
-    """What ``memstribo <argv> --json`` prints, parsed (run in-process)."""
-    from ..cli.main import main
+def smooth_cylinder(radius, length, points, modulus, load, **keywords):
+    """What ``memstribo contact --flat ...`` solves and prints, through the library (never the command line)."""
+    from ..contact import cylinder_on_flat, solve_line_contact
 
-    buffer = io.StringIO()
-    with contextlib.redirect_stdout(buffer):
-        code = main(list(argv) + ["--json"])
-    if code != 0:
-        raise RuntimeError(f"memstribo {' '.join(argv)} --json exited with status {code}")
-    return json.loads(buffer.getvalue())
+    separation, dx = cylinder_on_flat(radius, length, points)
+    solution = solve_line_contact(separation, dx, modulus, load=load, tolerance=1e-8, **keywords)
+    return {"contact_length": solution.contact_length, "max_pressure": solution.max_pressure,
+            "approach": solution.approach, "load": solution.load, "solution": solution}
 
 
 def rows() -> list[ValidationRow]:
-    from ..cli.contact import _defaults
+    from ..gear import pitch_point_line_contact
     from ..parameters import get_parameter_values
     from ..reference import hertz_line_approach, hertz_line_half_width, hertz_line_peak_pressure
 
     R, E, W = 20e-6, 100e9, 1.0
     command = "memstribo " + " ".join(f"'{a}'" if " " in a else a for a in HERTZ_ARGS) + " --json"
-    out = _cli_json(HERTZ_ARGS)
+    out = smooth_cylinder(R, 127.7e-9, 2048, E, W)
     a = float(hertz_line_half_width(W, R, E))
     rows_ = [
         compare("contact", "contact length 2a, smooth cylinder (2048 elements, 512 across 2a)",
@@ -49,8 +43,8 @@ def rows() -> list[ValidationRow]:
                 command=command),
     ]
     params = get_parameter_values()
-    modulus, radius, load = _defaults(params)
-    out = _cli_json(DEFAULT_ARGS)
+    modulus, radius, load = pitch_point_line_contact(params)
+    out = smooth_cylinder(radius, 400e-9, 4000, modulus, load)
     rows_.append(compare(
         "contact", "contact length 2a, thesis gear case at the pitch point (smooth, 25 uN)",
         "Hertz (4-24) with E*, R_ef, w = F/b of the parameter set", 2 * float(hertz_line_half_width(load, radius, modulus))
