@@ -229,7 +229,7 @@ KEYS = {"contact_length", "max_pressure", "mean_pressure", "load", "approach", "
 def test_cli_flat_matches_hertz(cli):
     out = cli.json("contact", "--flat", "--radius", "20 um", "--load", "1 N/m", "--modulus", "100 GPa",
                    "--points", "2048")
-    assert set(out) == KEYS
+    assert set(out) - {"warnings"} == KEYS and out["warnings"] == []
     a = ref.hertz_line_half_width(W, R, E)
     assert out["contact_length"] == pytest.approx(2 * a, rel=0.01)
     assert out["max_pressure"] == pytest.approx(ref.hertz_line_peak_pressure(W, R, E), rel=0.01)
