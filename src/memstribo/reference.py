@@ -475,3 +475,37 @@ def westergaard_pressure(x, mean_pressure, amplitude, wavelength, contact_modulu
     s_a = np.sin(np.pi * a / wavelength) ** 2
     s_x = np.sin(np.pi * x / wavelength) ** 2
     return 2.0 * p_bar * np.abs(np.cos(np.pi * x / wavelength)) / s_a * np.sqrt(np.clip(s_a - s_x, 0.0, None))
+
+
+# ------------------------------------------------------ bi-sinusoidal surface, full contact
+
+
+@cites("johnson_1985")
+def wavy_surface_full_contact_amplitude(amplitude, wavelength, contact_modulus):
+    r"""Pressure amplitude of a bi-sinusoidal surface in full contact.
+
+    Parameters
+    ----------
+    amplitude : numeric
+        Amplitude Δ [m] of :math:`h(x, y) = -\Delta\cos(2\pi x/\lambda)\cos(2\pi y/\lambda)`.
+    wavelength : numeric
+        Wavelength λ [m] along x and y.
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
+        p* = sqrt(2) π E* Δ / λ [Pa]: in full contact p = p̄ + p* cos(2πx/λ) cos(2πy/λ).
+
+    Notes
+    -----
+    The half-space response to a surface mode of wavenumber :math:`|q| = \sqrt2\,2\pi/\lambda`
+    is :math:`p_q = E^*|q| u_q / 2` (Johnson & Greenwood's bi-sinusoidal surface, Johnson,
+    Greenwood, Higginson, Int. J. Mech. Sci. 27 (1985) 383; the 1D Westergaard case has
+    p* = π E* Δ/λ, Eq. (13.6) in [1]_).
+    """
+    contact_modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    amplitude = as_array(amplitude, "amplitude", "m", positive=True)
+    return np.sqrt(2.0) * np.pi * contact_modulus * amplitude / as_array(wavelength, "wavelength", "m",
+                                                                          positive=True)
