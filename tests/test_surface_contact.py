@@ -273,3 +273,12 @@ def test_cli_surface_bad_input(cli, npy_map, argv, match):
 def test_cli_surface_profile_is_refused(cli, afm_dir):
     code, out, err = cli("contact", "--surface", afm_dir / "si_profile_linescan.txt", "--load", "1 uN")
     assert code == 2 and "not a 2D map" in err
+
+
+def test_validation_rows_agree():
+    from memstribo.validation.surface_contact import rows
+
+    table = rows()
+    assert len(table) == 9
+    assert all(row.agrees for row in table), [row for row in table if not row.agrees]
+    assert all(row.command.startswith("python ") for row in table)
