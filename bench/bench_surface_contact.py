@@ -67,11 +67,11 @@ def problem(exponent, seed=0):
     return h, STEP, mean_pressure
 
 
-def run_memstribo(h, dx, mean_pressure, tol):
+def run_memstribo(h, dx, mean_pressure, tol, periodic=True):
     from memstribo.surface_contact import solve_surface_contact
 
     start = time.perf_counter()
-    sol = solve_surface_contact(h, dx, dx, MODULUS, mean_pressure=mean_pressure, periodic=True, tolerance=tol,
+    sol = solve_surface_contact(h, dx, dx, MODULUS, mean_pressure=mean_pressure, periodic=periodic, tolerance=tol,
                                 max_iterations=20000)
     return dict(time=time.perf_counter() - start, iterations=f"{sol.iterations}+{sol.coarse_iterations}",
                 pressure=sol.pressure, converged=sol.converged)
@@ -148,12 +148,12 @@ def kkt_residual(h, dx, pressure):
 SOLVERS = {"memstribo": run_memstribo, "tamaas": run_tamaas, "contactmechanics": run_contactmechanics}
 
 
-def memory(exponent, tol):
+def memory(exponent, tol, periodic=True):
     """Peak resident memory [MiB] of a fresh process that builds the problem and solves it with memstribo only."""
     code = (f"import sys, resource; sys.path.insert(0, {str(Path(__file__).resolve().parent)!r}); "
             f"import bench_surface_contact as b; import numpy as np; h, dx, p = b.problem({exponent}); "
             "base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss; "
-            f"r = b.run_memstribo(h, dx, p, {tol!r}); "
+            f"r = b.run_memstribo(h, dx, p, {tol!r}, {periodic!r}); "
             "print(base / 1024, resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, r['time'], r['iterations'])")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     return float(out[0]), float(out[1]), float(out[2]), out[3]
@@ -167,11 +167,13 @@ def main(argv=None):
     parser.add_argument("--repeat", type=int, default=1, help="best of this many runs")
     parser.add_argument("--json", help="append the rows to this JSON-lines file")
     parser.add_argument("--memory", type=int, nargs="+", help="only: peak RSS of memstribo alone at these exponents")
+    parser.add_argument("--free-boundary", action="store_true",
+                        help="with --memory: the same surface on the free-boundary half-space (memstribo only)")
     args = parser.parse_args(argv)
     if args.memory:
         for exponent in args.memory:
-            base, peak, elapsed, iterations = memory(exponent, args.tolerance)
-            print(f"n = {2**exponent}^2: peak RSS {peak:.0f} MiB (problem set up: {base:.0f} MiB); "
+            base, peak, elapsed, iterations = memory(exponent, args.tolerance, not args.free_boundary)
+            print(f"n = {2**exponent}^2{' (free boundary)' if args.free_boundary else ''}: peak RSS {peak:.0f} MiB (problem set up: {base:.0f} MiB); "
                   f"solve {elapsed:.3g} s, iterations {iterations}", flush=True)
         return
 

@@ -242,13 +242,15 @@ class HalfSpace:
             green[q > 0] = 2.0 / (contact_modulus * q[q > 0])
             self.green = green
         else:
-            oy = np.arange(my, dtype=float)
-            oy[my - ny + 1:] -= my  # negative offsets at the end (wrap)
-            ox = np.arange(mx, dtype=float)
-            ox[mx - nx + 1:] -= mx
-            kernel = rectangle_influence(ox[None, :] * dx, oy[:, None] * dy, 0.5 * dx, 0.5 * dy, contact_modulus)
-            kernel[ny:my - ny + 1, :] = 0.0  # offsets that never reach a collocation point
-            kernel[:, nx:mx - nx + 1] = 0.0
+            # Love's coefficients at the offsets 0..n-1 (they are even in x and y), mirrored into
+            # the wrapped layout of the padded grid; the offsets in between never reach a
+            # collocation point and stay zero
+            quarter = rectangle_influence(np.arange(nx)[None, :] * dx, np.arange(ny)[:, None] * dy, 0.5 * dx,
+                                          0.5 * dy, contact_modulus)
+            kernel = np.zeros((my, mx))
+            kernel[:ny, :nx] = quarter
+            kernel[my - ny + 1:, :nx] = quarter[:0:-1]
+            kernel[:, mx - nx + 1:] = kernel[:, nx - 1:0:-1]
             self.green = scipy.fft.rfft2(kernel, workers=FFT_WORKERS)
         self.green.flags.writeable = False
         self.stiffness.flags.writeable = False
