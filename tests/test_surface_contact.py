@@ -282,3 +282,8 @@ def test_validation_rows_agree():
     assert len(table) == 9
     assert all(row.agrees for row in table), [row for row in table if not row.agrees]
     assert all(row.command.startswith("python ") for row in table)
+
+
+def test_cli_surface_options_refused_for_line_contact(cli):
+    code, out, err = cli("contact", "--flat", "--mean-pressure", "1 GPa")
+    assert code == 2 and "--mean-pressure go(es) with --surface" in err

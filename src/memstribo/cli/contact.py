@@ -118,6 +118,7 @@ def contact_problem(args, params):
 def run(args, params):
     if getattr(args, "surface", None) is not None:
         return run_surface(args, params)
+    _refuse_surface_options(args)
     from ..contact import solve_line_contact
     from ..errors import ConvergenceError, InputError
     from ..reference import hertz_line_half_width, hertz_line_peak_pressure
@@ -174,6 +175,16 @@ def register_surface(parser, source):
     parser.add_argument("--mean-pressure", metavar="P", help="nominal pressure with --surface, e.g. '50 MPa'")
     parser.add_argument("--out", metavar="DIR",
                         help="with --surface: write pressure and gap (NetCDF) and a figure (PNG) to DIR")
+
+
+def _refuse_surface_options(args):
+    """The --surface options make no sense for a line contact: say so rather than ignore them."""
+    from ..errors import InputError
+
+    given = [flag for flag, name in (("--physical-size", "physical_size"), ("--mean-pressure", "mean_pressure"),
+                                     ("--out", "out")) if getattr(args, name, None) is not None]
+    if given:
+        raise InputError(f"{', '.join(given)} go(es) with --surface FILE only, not with --profile or --flat")
 
 
 def _physical_size(text):
