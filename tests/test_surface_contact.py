@@ -287,3 +287,17 @@ def test_validation_rows_agree():
 def test_cli_surface_options_refused_for_line_contact(cli):
     code, out, err = cli("contact", "--flat", "--mean-pressure", "1 GPa")
     assert code == 2 and "--mean-pressure go(es) with --surface" in err
+
+
+def test_fallback_to_polonsky_keer_when_the_set_does_not_settle(monkeypatch):
+    import memstribo.surface_contact as module
+
+    n, length = 64, 1e-6
+    z = _rough(n, length, 1e-9, seed=3)
+    h = z.max() - z
+    reference_solution = solve_surface_contact(h, length / n, length / n, E, mean_pressure=2e8, periodic=True)
+    monkeypatch.setattr(module, "_MAX_OUTER", 1)
+    sol = solve_surface_contact(h, length / n, length / n, E, mean_pressure=2e8, periodic=True)
+    assert "polonsky-keer" in sol.message and sol.converged
+    assert np.array_equal(sol.contact, reference_solution.contact)
+    assert np.abs(sol.pressure - reference_solution.pressure).max() < 1e-5 * sol.max_pressure
