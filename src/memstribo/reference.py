@@ -502,6 +502,23 @@ def jkr_line_load(half_width, radius, contact_modulus, work_of_adhesion):
     work_of_adhesion : numeric
         Work of adhesion w [J/m²].
 
+
+# ------------------------------------------------------ bi-sinusoidal surface, full contact
+
+
+@cites("johnson_1985")
+def wavy_surface_full_contact_amplitude(amplitude, wavelength, contact_modulus):
+    r"""Pressure amplitude of a bi-sinusoidal surface in full contact.
+
+    Parameters
+    ----------
+    amplitude : numeric
+        Amplitude Δ [m] of :math:`h(x, y) = -\Delta\cos(2\pi x/\lambda)\cos(2\pi y/\lambda)`.
+    wavelength : numeric
+        Wavelength λ [m] along x and y.
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
     Returns
     -------
     numeric
@@ -800,3 +817,18 @@ def dugdale_rigid_line_pull_off(radius, work_of_adhesion, cohesive_stress):
     w = as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", nonnegative=True)
     sigma0 = as_array(cohesive_stress, "cohesive_stress", "Pa", positive=True)
     return 2.0 * np.sqrt(2.0 * radius * sigma0 * w)
+
+
+        p* = sqrt(2) π E* Δ / λ [Pa]: in full contact p = p̄ + p* cos(2πx/λ) cos(2πy/λ).
+
+    Notes
+    -----
+    The half-space response to a surface mode of wavenumber :math:`|q| = \sqrt2\,2\pi/\lambda`
+    is :math:`p_q = E^*|q| u_q / 2` (Johnson & Greenwood's bi-sinusoidal surface, Johnson,
+    Greenwood, Higginson, Int. J. Mech. Sci. 27 (1985) 383; the 1D Westergaard case has
+    p* = π E* Δ/λ, Eq. (13.6) in [1]_).
+    """
+    contact_modulus = as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
+    amplitude = as_array(amplitude, "amplitude", "m", positive=True)
+    return np.sqrt(2.0) * np.pi * contact_modulus * amplitude / as_array(wavelength, "wavelength", "m",
+                                                                          positive=True)

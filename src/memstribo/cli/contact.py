@@ -22,6 +22,7 @@ def register(subparsers, parents):
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--profile", metavar="PATH", help="profile file (any format readers.read_topography reads)")
     source.add_argument("--flat", action="store_true", help="smooth flat counter surface (Hertz check)")
+    register_surface(parser, source)
     parser.add_argument("--channel", help="channel of a multi-channel file")
     parser.add_argument("--row", type=int, default=0, help="line scan (row) of a 2D map to use (default 0)")
     parser.add_argument("--length", help="domain length with --flat, e.g. '400 nm' (default: 8 Hertz half-widths)")
@@ -112,6 +113,9 @@ def contact_problem(args, params):
 
 
 def run(args, params):
+    if getattr(args, "surface", None) is not None:
+        return run_surface(args, params)
+    _refuse_surface_options(args)
     if getattr(args, "adhesion", False) or getattr(args, "pull_off", False):
         return run_adhesion(args, params)
     from ..contact import solve_line_contact
@@ -293,3 +297,161 @@ def run_adhesion(args, params):
              f"  solver: {solution.message}."]
     return CommandResult(values=values, units=units,
                          title="adhesive line contact (Maugis-Dugdale, per unit face width)", notes=notes)
+
+
+# ---------------------------------------------------------------- surface (3D) contact: --surface
+
+
+def register_surface(parser, source):
+    """Options of the surface (3D) contact: ``--surface FILE`` and its companions."""
+    source.add_argument("--surface", metavar="FILE",
+                        help="rough surface (3D) contact of a 2D height map against a flat: any map "
+                        "readers.read_topography reads, or a NumPy .npy 2D array of heights in m (then "
+                        "--physical-size is needed). With --surface, give --mean-pressure P or --load W (the "
+                        "normal force in N); --periodic uses the periodic half-space")
+    parser.add_argument("--physical-size", metavar="SIZE",
+                        help="lateral size of the --surface map: one length for a square ('10um') or 'LXxLY' "
+                        "('10umx5um'); needed for .npy files, overrides the file's own size")
+    parser.add_argument("--mean-pressure", metavar="P", help="nominal pressure with --surface, e.g. '50 MPa'")
+    parser.add_argument("--out", metavar="DIR",
+                        help="with --surface: write pressure and gap (NetCDF) and a figure (PNG) to DIR")
+
+
+def _refuse_surface_options(args):
+    """The --surface options make no sense for a line contact: say so rather than ignore them."""
+    from ..errors import InputError
+
+    given = [flag for flag, name in (("--physical-size", "physical_size"), ("--mean-pressure", "mean_pressure"),
+                                     ("--out", "out")) if getattr(args, name, None) is not None]
+    if given:
+        raise InputError(f"{', '.join(given)} go(es) with --surface FILE only, not with --profile or --flat")
+
+
+def _physical_size(text):
+    """'10um' -> (1e-5, 1e-5); '10umx5um' or '10 um x 5 um' -> (1e-5, 5e-6) [m]."""
+    import re
+
+    from ..errors import InputError
+
+    parts = [part.strip() for part in re.split(r"(?<=[a-zA-Zµ.\d])\s*[xX×]\s*(?=[\d.])", text.strip())]
+    if len(parts) not in (1, 2):
+        raise InputError(f"--physical-size must be one length (square) or 'LXxLY', e.g. '10um' or '10umx5um'; "
+                         f"got {text!r}")
+    sizes = [_positive(part, "m", "--physical-size") for part in parts]
+    return (sizes[0], sizes[0]) if len(sizes) == 1 else (sizes[0], sizes[1])
+
+
+def surface_problem(args):
+    """Heights [m] (ny, nx), dx, dy [m] and a description of the ``--surface`` map."""
+    from pathlib import Path
+
+    import numpy as np
+
+    from ..errors import InputError
+
+    path = Path(args.surface)
+    size = _physical_size(args.physical_size) if args.physical_size is not None else None
+    if path.suffix.lower() == ".npy":
+        if not path.is_file():
+            raise InputError(f"--surface {path}: no such file")
+        try:
+            heights = np.load(path, allow_pickle=False)
+        except ValueError as error:
+            raise InputError(f"--surface {path}: not a plain NumPy array file ({error})") from None
+        if heights.ndim != 2 or min(heights.shape) < 2 or not np.issubdtype(heights.dtype, np.number):
+            raise InputError(f"--surface {path}: a .npy file must hold a 2D numeric array of heights [m] with at "
+                             f"least 2 x 2 points, got shape {heights.shape} ({heights.dtype})")
+        heights = np.asarray(heights, dtype=float)
+        if not np.all(np.isfinite(heights)):
+            raise InputError(f"--surface {path}: the heights [m] contain NaN or infinite values")
+        if size is None:
+            raise InputError(f"--surface {path}: a .npy array has no lateral size: give --physical-size, e.g. "
+                             "'1um' (square) or '2umx1um' (LX x LY)")
+        name = path.name
+        source = f"{path} (NumPy array, heights in m)"
+    else:
+        from ..readers import read_topography
+
+        data = read_topography(path, channel=args.channel)
+        if not hasattr(data, "heights"):
+            raise InputError(f"--surface {path}: the file holds a line profile, not a 2D map; use --profile")
+        heights = np.asarray(data.heights, dtype=float)
+        if size is None:
+            if not (np.isfinite(data.dx) and np.isfinite(data.dy) and data.dx > 0 and data.dy > 0):
+                raise InputError(f"--surface {path}: the file gives no lateral size; give --physical-size")
+            size = (data.dx * heights.shape[1], data.dy * heights.shape[0])
+        name, source = data.name, data.source
+    ny, nx = heights.shape
+    dx, dy = size[0] / nx, size[1] / ny
+    heights = heights - heights.mean()
+    label = (f"surface '{name}' ({source}), {nx} x {ny} elements of {dx * 1e9:.4g} nm x {dy * 1e9:.4g} nm "
+             f"({size[0] * 1e6:.4g} um x {size[1] * 1e6:.4g} um)")
+    return heights, dx, dy, label
+
+
+def run_surface(args, params):
+    """``memstribo contact --surface FILE``: a rough (or measured) surface pressed on a flat."""
+    from ..errors import ConvergenceError, InputError
+    from ..surface_contact import solve_surface_contact
+
+    if (args.mean_pressure is None) == (args.load is None):
+        raise InputError("with --surface give exactly one of --mean-pressure P (e.g. '50 MPa') and --load W "
+                         "(the normal force, e.g. '10 uN')")
+    heights, dx, dy, label = surface_problem(args)
+    modulus = _positive(args.modulus, "Pa", "--modulus") if args.modulus is not None else _defaults(params)[0]
+    keywords = ({"mean_pressure": _positive(args.mean_pressure, "Pa", "--mean-pressure")}
+                if args.mean_pressure is not None else {"load": _positive(args.load, "N", "--load")})
+    # the gap to a flat: the highest point touches first
+    separation = heights.max() - heights
+    solution = solve_surface_contact(separation, dx, dy, modulus, periodic=args.periodic, tolerance=args.tolerance,
+                                     max_iterations=args.max_iterations, **keywords)
+    if not solution.converged and not args.allow_unconverged:
+        raise ConvergenceError(f"the surface contact solver did not converge: {solution.message}. Raise "
+                               "--max-iterations, loosen --tolerance, or use --allow-unconverged")
+    values = {
+        "contact_fraction": solution.contact_fraction,
+        "max_pressure": solution.max_pressure,
+        "mean_gap": solution.mean_gap,
+        "approach": solution.approach,
+        "iterations": solution.iterations,
+        "residual": solution.residual,
+        "solve_seconds": solution.solve_time,
+    }
+    units = {"contact_fraction": "", "max_pressure": "Pa", "mean_gap": "m", "approach": "m", "iterations": "",
+             "residual": "", "solve_seconds": "s"}
+    notes = [
+        f"  {label}; {'periodic' if args.periodic else 'free-boundary'} half-space, E* = {modulus / 1e9:.4g} GPa, "
+        f"load {solution.load:.4g} N (mean pressure {solution.load / (heights.size * dx * dy) / 1e6:.4g} MPa).",
+        "  the map's highest point touches the flat first; approach from that first touch "
+        + ("(zero mean elastic displacement)." if args.periodic else "(undisplaced far field)."),
+        f"  converged: {solution.converged}; solver: {solution.message}.",
+    ]
+    if args.out:
+        written = write_surface_outputs(solution, args.out)
+        notes.append("  wrote " + ", ".join(str(path) for path in written))
+    return CommandResult(values=values, units=units, title="surface contact (elastic half-space, flat counter face)",
+                         notes=notes)
+
+
+def write_surface_outputs(solution, folder):
+    """Pressure and gap as NetCDF (units attrs) and a PNG figure of pressure and contact; returns the paths."""
+    import numpy as np
+
+    from ..output import new_figure, save_figure, write_dataset
+
+    dataset = solution.to_xarray()
+    written = write_dataset(dataset, folder, "surface_contact", csv=False)
+    figure, axes = new_figure(1, 2, figsize=(9.6, 4.2))
+    ny, nx = solution.pressure.shape
+    extent = (0.0, nx * solution.dx * 1e6, 0.0, ny * solution.dy * 1e6)
+    image = axes[0].imshow(solution.pressure / 1e9, origin="lower", extent=extent, cmap="viridis")
+    figure.colorbar(image, ax=axes[0], label="pressure [GPa]")
+    axes[0].set_title("contact pressure")
+    axes[1].imshow(np.where(solution.contact, 1.0, 0.0), origin="lower", extent=extent, cmap="Greys",
+                   vmin=0.0, vmax=1.0)
+    axes[1].set_title(f"contact (black), A/A0 = {solution.contact_fraction:.3g}")
+    for axis in axes:
+        axis.set_xlabel("x [um]")
+        axis.set_ylabel("y [um]")
+    written += save_figure(figure, folder, "surface_contact", formats=("png",))
+    return written
