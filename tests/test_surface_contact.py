@@ -234,7 +234,7 @@ def npy_map(tmp_path_factory):
 def test_cli_surface_npy(cli, npy_map, tmp_path):
     out = cli.json("contact", "--surface", npy_map, "--physical-size", "1um", "--mean-pressure", "300 MPa",
                    "--modulus", "100 GPa", "--periodic", "--out", tmp_path)
-    assert set(out) == KEYS
+    assert set(out) - {"warnings"} == KEYS
     assert 0 < out["contact_fraction"] < 1 and out["residual"] <= 1e-8
     z = np.load(npy_map)
     direct = solve_surface_contact(z.max() - z, 1e-6 / 64, 1e-6 / 64, E, mean_pressure=3e8, periodic=True)
@@ -249,13 +249,13 @@ def test_cli_surface_npy(cli, npy_map, tmp_path):
 
 def test_cli_surface_rectangular_size_and_load(cli, npy_map):
     out = cli.json("contact", "--surface", npy_map, "--physical-size", "2umx1um", "--load", "0.5 mN")
-    assert set(out) == KEYS and out["iterations"] >= 1
+    assert set(out) - {"warnings"} == KEYS and out["iterations"] >= 1
 
 
 def test_cli_surface_measured_map(cli, afm_dir):
     out = cli.json("contact", "--surface", afm_dir / "IgorIBWReader_P0089OP0027.ibw", "--mean-pressure", "200 MPa",
                    "--periodic")
-    assert set(out) == KEYS and 0 < out["contact_fraction"] < 0.5 and out["residual"] <= 1e-8
+    assert set(out) - {"warnings"} == KEYS and 0 < out["contact_fraction"] < 0.5 and out["residual"] <= 1e-8
 
 
 @pytest.mark.parametrize("argv, match", [

@@ -32,6 +32,7 @@ from memstribo.errors import InputError
 from memstribo.references import cites
 
 __all__ = [
+    "wavy_surface_full_contact_amplitude",
     "hertz_line_half_width",
     "hertz_line_peak_pressure",
     "hertz_line_pressure",
@@ -502,23 +503,6 @@ def jkr_line_load(half_width, radius, contact_modulus, work_of_adhesion):
     work_of_adhesion : numeric
         Work of adhesion w [J/m²].
 
-
-# ------------------------------------------------------ bi-sinusoidal surface, full contact
-
-
-@cites("johnson_1985")
-def wavy_surface_full_contact_amplitude(amplitude, wavelength, contact_modulus):
-    r"""Pressure amplitude of a bi-sinusoidal surface in full contact.
-
-    Parameters
-    ----------
-    amplitude : numeric
-        Amplitude Δ [m] of :math:`h(x, y) = -\Delta\cos(2\pi x/\lambda)\cos(2\pi y/\lambda)`.
-    wavelength : numeric
-        Wavelength λ [m] along x and y.
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
-
     Returns
     -------
     numeric
@@ -819,6 +803,25 @@ def dugdale_rigid_line_pull_off(radius, work_of_adhesion, cohesive_stress):
     return 2.0 * np.sqrt(2.0 * radius * sigma0 * w)
 
 
+# ------------------------------------------------------ bi-sinusoidal surface, full contact
+
+
+@cites("johnson_1985")
+def wavy_surface_full_contact_amplitude(amplitude, wavelength, contact_modulus):
+    r"""Pressure amplitude of a bi-sinusoidal surface in full contact.
+
+    Parameters
+    ----------
+    amplitude : numeric
+        Amplitude Δ [m] of :math:`h(x, y) = -\Delta\cos(2\pi x/\lambda)\cos(2\pi y/\lambda)`.
+    wavelength : numeric
+        Wavelength λ [m] along x and y.
+    contact_modulus : numeric
+        Contact modulus E* [Pa].
+
+    Returns
+    -------
+    numeric
         p* = sqrt(2) π E* Δ / λ [Pa]: in full contact p = p̄ + p* cos(2πx/λ) cos(2πy/λ).
 
     Notes

@@ -586,9 +586,9 @@ def solve_surface_contact(separation, dx, dy, contact_modulus, *, load=None, mea
     Notes
     -----
     Minimises :math:`\frac12 p^T A p + p^T h` subject to :math:`p \ge 0` and
-    :math:`dx\,dy\sum p = W` ([2]_). On a fixed contact set C the equations
+    :math:`dx\,dy\sum p = W` (Polonsky and Keer 1999). On a fixed contact set C the equations
     :math:`A_{CC} p_C - \delta = -h_C` with the load fixed are solved by a CG preconditioned
-    with :math:`P_C\,\mathcal F^{-1}\frac{E^*|q|}{2}\mathcal F\,P_C` ([4]_); then C is updated
+    with :math:`P_C\,\mathcal F^{-1}\frac{E^*|q|}{2}\mathcal F\,P_C` (Vollebregt 2014); then C is updated
     (p < 0 leave, penetrating points join) until it settles. Convergence: the largest gap
     error on C or penetration outside it, relative to ptp(h), at most ``tolerance``.
 
