@@ -450,3 +450,15 @@ def test_sliding_axis_turns_a_map(params, afm_dir):
     along_x = summarize(simulate_mesh(params, afm_dir / "di-3.di", steps=11))
     along_y = summarize(simulate_mesh(params, afm_dir / "di-3.di", steps=11, sliding_axis="y"))
     assert along_x["cof_mean"] != along_y["cof_mean"]
+
+
+def test_adhesion_inside_the_contact_solve(params):
+    """MODEL 7c: with contact_adhesion = maugis the attraction is the cohesive zone's load of the contact solve
+    (much smaller than the sum of block pull-off forces (3-31) at the torque's load), and the JSON says so."""
+    plain = summarize(simulate_mesh(params, steps=21))
+    adhesive = summarize(simulate_mesh(params.updated({"contact_adhesion": "maugis"}), steps=21))
+    assert adhesive["contact_adhesion"] == "maugis" and plain["contact_adhesion"] == "none"
+    assert 0 < adhesive["adhesion_force_mean"] < plain["adhesion_force_mean"]
+    assert adhesive["unconverged_steps"] == 0
+    # less adhesion in the denominator, and at least the same bonds: a higher COF
+    assert adhesive["cof_mean"] > plain["cof_mean"]
