@@ -141,8 +141,27 @@ def _configure_logging(args, progress: bool) -> None:
         level = logging.WARNING
     logger = logging.getLogger("memstribo")
     logger.setLevel(level)
-    if not any(getattr(h, "_memstribo", False) for h in logger.handlers):
-        handler = logging.StreamHandler(sys.stderr)
+    if not any(isinstance(h, _StderrHandler) for h in logger.handlers):
+        handler = _StderrHandler()
         handler.setFormatter(logging.Formatter("memstribo run: %(message)s"))
-        handler._memstribo = True
         logger.addHandler(handler)
+
+
+def _stderr_handler_class():
+    import logging
+
+    class StderrHandler(logging.StreamHandler):
+        """Writes to whatever ``sys.stderr`` is at the time of the record (not the one at creation)."""
+
+        @property
+        def stream(self):
+            return sys.stderr
+
+        @stream.setter
+        def stream(self, value):  # StreamHandler.__init__ sets it; the property always follows sys.stderr
+            pass
+
+    return StderrHandler
+
+
+_StderrHandler = _stderr_handler_class()
