@@ -292,3 +292,20 @@ def test_run_exits_non_zero_when_a_stage_fails(cli, tmp_path, monkeypatch):
 def test_run_checks_the_coating_before_the_first_stage():
     with pytest.raises(InputError, match="unknown coating"):
         RunOptions.from_table({"coating": "PTFE"})
+
+
+def test_a_run_on_a_2d_map_shows_the_map_and_its_measured_rows(tmp_path):
+    """#14: 'memstribo run' with a 2D map for the meshing cycle works end to end; the report shows the map
+    and says which rows are measured and which synthesised."""
+    from memstribo.parameters import get_parameter_values
+
+    scan = REPO / "data" / "afm" / "di-3.di"
+    options = options_for_test(roughness_files=(str(scan),), mesh_roughness=0,
+                               stages=("roughness", "geometry", "gear", "mesh"), realisations=1)
+    result = RunChain(get_parameter_values(), tmp_path / "out", options).run()
+    assert all(r.status == "done" for r in result.stages if r.name in options.stages), result.stages
+    assert (tmp_path / "out" / "figures" / "roughness_map_1.png").exists()
+    rows = result.verdict["bare_roughness_rows"]
+    assert "measured scan lines" in rows and "synthesised" in rows
+    page = (tmp_path / "out" / "report.html").read_text(encoding="utf-8")
+    assert "roughness_map_1" in page and "measured scan lines" in page

@@ -332,6 +332,8 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
             out[f"{label}_cof_mean"] = summary["cof_mean"]
             out[f"{label}_mesh_efficiency"] = summary.get("mesh_efficiency")
             out[f"{label}_warnings"] = list(summary.get("warnings", []))
+            if "roughness_rows" in summary:
+                out[f"{label}_roughness_rows"] = summary["roughness_rows"]
             for key in ("step_converged", "step_change_margin", "step_change_cof", "realisations",
                         "stiction_probability", "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95",
                         "cof_mean_median", "cof_mean_p05", "cof_mean_p95"):
@@ -366,6 +368,23 @@ def plot_profiles(profiles):
         ax.set_title(profile.name if label in profile.name else f"{profile.name} ({label})", fontsize=9)
         ax.set_ylabel("z [nm]")
     axes[-1, 0].set_xlabel("x [µm]")
+    figure.tight_layout()
+    return figure
+
+
+def plot_map(surface):
+    """A measured 2D map as an image (heights [nm] over x, y [um]), with the scan lines along x."""
+    from .output import new_figure
+
+    heights = np.asarray(surface.heights) * 1e9
+    ny, nx = heights.shape
+    figure, ax = new_figure(figsize=(6, 5))
+    image = ax.imshow(heights - np.mean(heights), origin="lower", cmap="viridis", aspect="equal",
+                      extent=(0, nx * surface.dx * 1e6, 0, ny * surface.dy * 1e6))
+    figure.colorbar(image, ax=ax, label="height - mean [nm]")
+    ax.set_xlabel("x [µm] (scan lines, along the flank by default)")
+    ax.set_ylabel("y [µm]")
+    ax.set_title(f"{surface.name} (measured map)", fontsize=9)
     figure.tight_layout()
     return figure
 
@@ -651,7 +670,14 @@ class RunChain:
                         "Rq": s.Rq, "Ra": s.Ra, "rms_slope": s.rms_slope, "n_points": s.n_points,
                         "sample_spacing": s.sample_spacing} for p, s in zip(profiles, statistics)]
         self._figure(plot_profiles(profiles), "roughness_profiles",
-                     "Roughness profiles after levelling (the default is synthetic, seeded; measured files as named).")
+                     "Roughness profiles after levelling (the default is synthetic, seeded; measured files as named; "
+                     "a map's middle scan line).")
+        for i, surface in enumerate(surfaces):
+            if surface is not None and hasattr(surface, "line_scans"):
+                self._figure(plot_map(surface), f"roughness_map_{i}",
+                             f"The measured map '{surface.name}' ({surface.heights.shape[1]} x {surface.heights.shape[0]} "
+                             "pixels): its scan lines become nanoblock rows of the meshing cycle when it is the meshing "
+                             "surface.")
         self.results["profiles"] = profiles
         choice = self.options.mesh_roughness
         index = 0 if choice == "synthetic" else 1 + int(choice)

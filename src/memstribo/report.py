@@ -120,6 +120,8 @@ def _verdict_html(result) -> str:
                          f"{v['bare_step_change_cof'] * 100:.2g} % "
                          f"({'converged' if v['bare_step_converged'] else '<span class=bad>NOT converged</span>'}, "
                          "goal &lt; 2 %).</li>")
+        if v.get("bare_roughness_rows"):
+            items.append(f"<li>Roughness of the nanoblock rows (first realisation): {_e(v['bare_roughness_rows'])}.</li>")
         for text in v.get("bare_warnings", []):
             items.append(f"<li><span class='bad'>Warning</span>: {_e(text)}.</li>")
     if "coated_stiction" in v:
