@@ -309,3 +309,15 @@ def test_a_run_on_a_2d_map_shows_the_map_and_its_measured_rows(tmp_path):
     assert "measured scan lines" in rows and "synthesised" in rows
     page = (tmp_path / "out" / "report.html").read_text(encoding="utf-8")
     assert "roughness_map_1" in page and "measured scan lines" in page
+
+
+def test_run_takes_the_load_case(cli, tmp_path):
+    config = tmp_path / "small.toml"
+    config.write_text('[run]\nstages = ["roughness", "geometry", "mesh"]\nvalidation = false\nsteps = 11\n'
+                      'realisations = 1\n')
+    code, out, err = cli("run", config, "--out", tmp_path / "out", "--load-case", "thesis", "--json", "--progress",
+                         "off")
+    import json
+
+    values = json.loads(out)
+    assert code == 0 and values["load_case"] == "thesis"

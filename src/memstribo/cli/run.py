@@ -45,6 +45,9 @@ def register(subparsers, parents):
                         help="a measured profile or AFM file to analyse as well (repeatable)")
     parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                         help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    parser.add_argument("--load-case", choices=("torque", "thesis"),
+                        help="normal load of the meshing stages: 'torque' (F_t / cos alpha, default) or 'thesis' "
+                             "(normal_load, 25 uN); the load sweep always uses the thesis case")
     parser.add_argument("--overwrite", action="store_true",
                         help="write into DIR although it holds files (stale files of an earlier run are removed "
                              "first); without it a non-empty DIR is refused")
@@ -73,6 +76,8 @@ def run(args, params):
             from ..parameters import parse_assignment
 
             params = params.updated(dict(parse_assignment(t) for t in args.overrides), origin="--set")
+    if args.load_case:
+        params = params.updated({"load_case": args.load_case}, origin="--load-case")
     options = RunOptions.from_table(table, base)
     if args.steps is not None:
         if args.steps < 3:
