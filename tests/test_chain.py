@@ -74,6 +74,11 @@ def test_mesh_stages(small_run):
     assert bare["realisations"] == 3 and 0.0 <= bare["stiction_probability"] <= 1.0
     assert bare["stiction_margin"] == bare["tangential_force"] - bare["resisting_force_max"]
     assert "step_converged" in bare and small_run.verdict["bare_realisations"] == 3
+    # the run's bare cycle is exactly what 'memstribo mesh' computes (the same independent synthetic rows)
+    from memstribo.mesh import simulate_mesh, summarize
+
+    alone = summarize(simulate_mesh(small_run.params, steps=8))
+    assert bare["cof_mean"] == alone["cof_mean"] and bare["stiction_margin"] == alone["stiction_margin"]
     # the energy split adds up (mesh.summarize: cof_x = energy_x / integral (F_N + F_adh) ds)
     assert bare["energy_dissipated"] == pytest.approx(bare["energy_chemical"] + bare["energy_vdw"]
                                                       + bare["energy_elastic"], rel=1e-12)

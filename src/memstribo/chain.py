@@ -682,7 +682,10 @@ class RunChain:
         choice = self.options.mesh_roughness
         index = 0 if choice == "synthetic" else 1 + int(choice)
         # the meshing stages get the whole surface (a map's rows become nanoblock rows)
-        self.results["mesh_profile"] = profiles[index] if surfaces[index] is None else surfaces[index]
+        self.results["mesh_profile"] = profiles[index]  # one line: the sliding stage and the provenance
+        # the meshing stages get the whole surface (a map's rows become nanoblock rows), or None for the
+        # synthetic default: independent seeded lines, exactly as 'memstribo mesh' makes them
+        self.results["mesh_roughness"] = surfaces[index]
         self.results["mesh_profile_measured"] = index > 0
         for i, item in enumerate(self.inputs):
             item["meshing"] = i == index
@@ -707,7 +710,7 @@ class RunChain:
         # of every stage after this one (as 'memstribo nanoblock --from' derives it)
         used = "parameters"
         if self.results.get("mesh_profile_measured"):
-            surface = self.results["mesh_profile"]
+            surface = self.results["mesh_roughness"]
             name = getattr(surface, "name", "measured surface")
             try:
                 derived = geometry.nanoblock_geometry_from_profile(surface)
@@ -776,7 +779,7 @@ class RunChain:
             from .coating import get_coating
 
             coating_object = get_coating(coating, params)
-        return mesh.simulate_mesh(params, self.results["mesh_profile"], steps=self.options.steps,
+        return mesh.simulate_mesh(params, self.results["mesh_roughness"], steps=self.options.steps,
                                   coating=coating_object, wear=wear)
 
     def _tangential_force(self):
@@ -791,12 +794,12 @@ class RunChain:
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
         summary = cycle_summary(dataset)
-        summary.update(mesh.step_convergence(self.model_params, self.results["mesh_profile"], steps=self.options.steps,
+        summary.update(mesh.step_convergence(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
                                              baseline=summary))
         count = self.options.realisations
         if count > 1:
             first = dict(summary, realisation=0, seed=[int(self.model_params["roughness_seed"]), 0])
-            others = [mesh._ensemble_point(self.model_params, self.results["mesh_profile"], self.options.steps, None, 1.0, k)
+            others = [mesh._ensemble_point(self.model_params, self.results["mesh_roughness"], self.options.steps, None, 1.0, k)
                       for k in self._tick(range(1, count), "roughness realisations")]
             ensemble = mesh.ensemble_summary([first] + others)
             self.results["ensemble"] = ensemble
@@ -817,7 +820,7 @@ class RunChain:
     def load_sweep(self):
         """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
         from . import mesh
-        summaries = [mesh.sweep(self.model_params, "load", [load], self.results["mesh_profile"], steps=self.options.steps)[0]
+        summaries = [mesh.sweep(self.model_params, "load", [load], self.results["mesh_roughness"], steps=self.options.steps)[0]
                      for load in self._tick(self.options.loads, "load sweep")]
         dataset = _sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
         self._dataset(dataset, "load_sweep")
@@ -833,7 +836,7 @@ class RunChain:
         nanoblocks share the load.
         """
         from . import mesh
-        summaries = [mesh.sweep(self.model_params, "area", [k], self.results["mesh_profile"], steps=self.options.steps)[0]
+        summaries = [mesh.sweep(self.model_params, "area", [k], self.results["mesh_roughness"], steps=self.options.steps)[0]
                      for k in self._tick(self.options.areas, "area sweep")]
         dataset = _sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
         self._dataset(dataset, "area_sweep")
@@ -861,7 +864,7 @@ class RunChain:
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
         from . import coating
         dataset = coating.wear_sweep(self.model_params, self.options.coating, list(self.options.wear),
-                                     roughness=self.results["mesh_profile"], steps=self.options.steps)
+                                     roughness=self.results["mesh_roughness"], steps=self.options.steps)
         self._dataset(dataset, "wear_sweep")
         self.results["wear_sweep"] = dataset
         self.summaries["wear_sweep"] = {**_columns(dataset), "critical_wear": coating.critical_wear(dataset)}
