@@ -473,3 +473,19 @@ def test_dissimilar_materials_converge_or_say_so(params, counter_modulus):
     converged = bool(ds.attrs["friction_fixed_point_converged"])
     assert converged or any("fixed point" in text for text in summary["warnings"])
     assert np.all(np.isfinite(ds.cof.values)) and 0 < summary["cof_mean"] < 5
+
+
+def test_surface_contact_of_the_strip_couples_the_rows(params):
+    """#14 item 4: mesh_contact = surface solves the face width's strip as one surface contact per step; the
+    rows then share the load elastically (no longer equal line loads), the whole load is still carried."""
+    line = simulate_mesh(params, steps=11)
+    strip = simulate_mesh(params.updated({"mesh_contact": "surface"}), steps=11)
+    assert strip.attrs["mesh_contact"] == "surface" and summarize(strip)["unconverged_steps"] == 0
+    for flank in ("pinion", "gear"):
+        loads = strip.block_load.where(strip.block_flank == flank, drop=True).sum("block")
+        np.testing.assert_allclose(loads, strip.normal_force, rtol=1e-6)
+    per_row = strip.block_load.where(strip.block_flank == "pinion", drop=True).groupby("block_row").sum().sum("step")
+    line_rows = line.block_load.where(line.block_flank == "pinion", drop=True).groupby("block_row").sum().sum("step")
+    assert float(per_row.std() / per_row.mean()) > float(line_rows.std() / line_rows.mean())
+    with pytest.raises(InputError, match="surface"):
+        simulate_mesh(params.updated({"mesh_contact": "surface", "contact_adhesion": "maugis"}), steps=11)

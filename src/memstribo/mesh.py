@@ -91,7 +91,7 @@ SUMMARY_UNITS = {
     "unconverged_steps": "", "window_exceeded_steps": "", "max_contact_pressure": "Pa",
     "steps_above_elastic_limit": "", "resisting_force_max": "N", "normal_force_total": "N", "mesh_efficiency": "",
     "mesh_efficiency_min": "", "max_shear_stress": "Pa", "load_case": "", "interface_model": "",
-    "contact_adhesion": "", "roughness_rows": "", "warnings": "", "step_converged": "", "step_change_margin": "",
+    "contact_adhesion": "", "mesh_contact": "", "roughness_rows": "", "warnings": "", "step_converged": "", "step_change_margin": "",
     "step_change_cof": "", "steps_checked": "", "realisations": "", "stiction_probability": "",
     "stiction_margin_median": "N", "stiction_margin_p05": "N", "stiction_margin_p95": "N", "cof_mean_median": "",
     "cof_mean_p05": "", "cof_mean_p95": "", "mesh_efficiency_median": "", "mesh_efficiency_p05": "",
@@ -376,6 +376,48 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar)
     return pressure, gap, info
 
 
+def _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar):
+    """The strip of the face width under the window as one surface (3D) contact per step (rows interact).
+
+    Each nanoblock row is ``k = round(w_adh / dx)`` element rows wide across the face width and
+    carries its own roughness line (the same line over its k element rows); the free-boundary
+    half-space solve (:func:`memstribo.surface_contact.solve_surface_contact`) carries the pair's
+    whole load. Returns per-row pressure and gap (means over each row's element rows), shapes
+    (rows, steps, n), and the solver info per step (converged, residual, iterations, approach).
+    """
+    from .surface_contact import solve_surface_contact
+
+    grid = setup.grid
+    dx = setup.grid_spacing
+    rows = len(setup.pinion_profiles)
+    w_adh = setup.effective_face_width / setup.rows
+    k = max(1, int(round(w_adh / dx)))
+    dy = w_adh / k
+    n_steps, n = s1.size, grid.size
+    lines = np.empty((rows, n_steps, n))
+    for row in range(rows):
+        z1 = _heights(setup.pinion_profiles[row], s1[:, None] - grid[None, :])
+        z2 = _heights(setup.gear_profiles[row], s2[:, None] + grid[None, :])
+        lines[row] = grid[None, :] ** 2 / (2 * r_ef[:, None]) - z1 - z2
+    pressure = np.zeros((rows, n_steps, n))
+    gap = np.zeros((rows, n_steps, n))
+    info = np.zeros((n_steps, 5))
+    previous = None
+    for i in range(n_steps):
+        separation = np.repeat(lines[:, i, :], k, axis=0)  # (rows * k, n)
+        solution = solve_surface_contact(separation, dx, dy, modulus, load=float(setup.load[i]), periodic=False,
+                                         tolerance=params["mesh_contact_tolerance"], initial_pressure=previous)
+        field_p = solution.pressure.reshape(rows, k, n)
+        field_g = solution.gap.reshape(rows, k, n)
+        pressure[:, i, :] = field_p.mean(axis=1)
+        gap[:, i, :] = field_g.mean(axis=1)
+        info[i] = (solution.converged, solution.residual, solution.iterations, solution.approach, 0.0)
+        previous = solution.pressure if solution.converged and np.any(solution.pressure > 0) else None
+        if pbar is not None:
+            pbar.update(rows)
+    return pressure, gap, info
+
+
 def vdw_gap_factor(gap, cutoff_distance, vdw_cutoff):
     """Share of a block's contact vdW energy at local gap D: (D0 / max(D, D0))^2, 0 beyond the cut-off.
 
@@ -478,8 +520,17 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                                               "iterations", "window_exceeded", "approach", "rigid_atomic_blocks",
                                               "vdw_edge")}
     block_loads = []
+    surface = params["mesh_contact"] == "surface"
+    if surface:
+        if beta != 0.0 or params["contact_adhesion"] != "none":
+            raise InputError("mesh_contact = 'surface' solves identical, non-adhesive teeth only (Dundurs beta 0, "
+                             "contact_adhesion 'none'); use mesh_contact = 'line' for the others.")
+        strip_pressure, strip_gap, strip_info = _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar)
     for row in range(n_rows_solved):
-        if beta != 0.0 and mu_previous is not None:
+        if surface:
+            pressure, gap = strip_pressure[row], strip_gap[row]
+            info = strip_info  # one solve for all rows
+        elif beta != 0.0 and mu_previous is not None:
             pressure, gap, info = _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
                                                     slip, pbar)
         else:
@@ -892,6 +943,7 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "load_case": params["load_case"],
         "interface_model": params["interface_model"],
         "contact_adhesion": params["contact_adhesion"],
+        "mesh_contact": params["mesh_contact"],
         "vdw_cutoff": float(params["vdw_cutoff"]),
         "friction_averaging_distance": float(averaging),
         "realisation": int(realisation),
@@ -1012,6 +1064,7 @@ def summarize(dataset) -> dict:
         "load_case": str(dataset.attrs["load_case"]),
         "interface_model": str(dataset.attrs["interface_model"]),
         "contact_adhesion": str(dataset.attrs["contact_adhesion"]),
+        "mesh_contact": str(dataset.attrs.get("mesh_contact", "line")),
         "roughness_rows": str(dataset.attrs["roughness_rows"]),
         "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
     }

@@ -49,6 +49,10 @@ def add_common_arguments(parser):
     parser.add_argument("--steps", type=int, metavar="N", help="positions along the path of contact (default: "
                                                                "the parameter mesh_steps)")
     parser.add_argument("--coating", metavar="NAME", help="SAM coating of the teeth (e.g. OTS); default: bare silicon")
+    parser.add_argument("--contact", choices=("line", "surface"),
+                        help="contact solve per step: 'line' (one line contact per nanoblock row, default) or "
+                             "'surface' (the face width's strip as one surface contact: rows interact); sets the "
+                             "parameter mesh_contact")
     parser.add_argument("--sliding-axis", choices=("x", "y"), default="x",
                         help="axis of a 2D map along the flank (the sliding direction): x = the scan lines "
                              "(default), y = the map's columns")
@@ -87,9 +91,11 @@ def roughness_of(args):
 
 
 def apply_load_case(args, params):
-    """The parameter set with ``--load-case`` applied (unchanged without it)."""
+    """The parameter set with ``--load-case`` and ``--contact`` applied (unchanged without them)."""
     if getattr(args, "load_case", None):
-        return params.updated({"load_case": args.load_case}, origin="--load-case")
+        params = params.updated({"load_case": args.load_case}, origin="--load-case")
+    if getattr(args, "contact", None):
+        params = params.updated({"mesh_contact": args.contact}, origin="--contact")
     return params
 
 

@@ -230,6 +230,10 @@ _SPECS = [
     _range("vdw_cutoff", "m", "Local gap beyond which vdW bonds are neglected (interface_model 'gap'); a "
            "numerical parameter: doubling it changes the mean COF by less than 1 %", 1e-10, 1e-6,
            "from about the contact separation D0 to 1 um (the attraction is 1e-9 of its contact value there)"),
+    ParameterSpec("mesh_contact", "", "Contact solve of the meshing cycle: 'line' (a plane-strain line contact per "
+                  "nanoblock row, rows carry equal line loads) or 'surface' (the strip of the face width under the "
+                  "window as one surface contact per step: rows share the load elastically)", kind="str",
+                  choices=("line", "surface")),
     ParameterSpec("contact_adhesion", "", "Adhesion inside the rough contact solve of the meshing cycle: 'maugis' "
                   "(Maugis-Dugdale cohesive zone, sigma0 and h0 from the constants; MODEL 7c) or 'none'",
                   kind="str", choices=("maugis", "none")),
