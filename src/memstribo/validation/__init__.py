@@ -12,16 +12,16 @@ from .rows import ValidationRow, compare  # noqa: F401  (the public names of thi
 
 
 #: The topic modules of this package, in the order of the table (one ``rows()`` each).
-TOPICS = ("adhesion", "adhesive_contact", "coating", "contact", "damage", "friction", "gear", "mesh", "roughness", "run",
+TOPICS = ("adhesion", "adhesive_contact", "capillary", "coating", "contact", "damage", "friction", "gear", "mesh", "roughness", "run",
           "stresses", "surface_contact")
 
 
 def all_rows() -> list[ValidationRow]:
     """Rows of every topic module in :data:`TOPICS`, in that order."""
-    from . import (adhesion, adhesive_contact, coating, contact, damage, friction, gear, mesh, roughness, run, stresses,
+    from . import (adhesion, adhesive_contact, capillary, coating, contact, damage, friction, gear, mesh, roughness, run, stresses,
                    surface_contact)
 
-    modules = {"adhesion": adhesion, "adhesive_contact": adhesive_contact, "coating": coating, "contact": contact, "damage": damage, "friction": friction,
+    modules = {"adhesion": adhesion, "adhesive_contact": adhesive_contact, "capillary": capillary, "coating": coating, "contact": contact, "damage": damage, "friction": friction,
                "gear": gear, "mesh": mesh, "roughness": roughness, "run": run, "stresses": stresses, "surface_contact": surface_contact}
     rows: list[ValidationRow] = []
     for name in TOPICS:

@@ -1,0 +1,180 @@
+"""Capillary condensation between hydrophilic surfaces in humid air (beyond the thesis: MODEL §10, issue #17).
+
+In air, water condenses wherever the gap between two surfaces is narrower than the capillary
+condensation height. The meniscus's curvature is set by the Kelvin equation; its Laplace
+pressure pulls the surfaces together over the wetted area. For a sphere on a flat with
+r_K << R the force is 4 pi R gamma cos(theta) whatever the humidity; for a cylinder it grows as
+sqrt(R / r_K). These are the building blocks of the humid-air model: every function takes the
+local gap of a contact solution, so the same relations serve the line contact, the surface
+contact and the meshing cycle.
+
+The model: the circular-meniscus (Laplace-Kelvin) approximation with the meniscus at
+equilibrium with the vapour (Fisher and Israelachvili 1981; Butt and Kappl 2009), the
+condensation height ``h_c = r_K (cos theta_1 + cos theta_2)``, the Laplace pressure
+``gamma / r_K`` acting over the wetted area, and no meniscus on a hydrophobic pair
+(``cos theta_1 + cos theta_2 <= 0``). Valid when r_K is well above a molecular size (RH above
+about 0.1); the adsorbed-film regime below is not modelled (say so where it matters).
+
+References
+----------
+.. [1] L. R. Fisher, J. N. Israelachvili, "Direct measurement of the effect of meniscus forces on
+   adhesion", Colloids Surf. 3 (1981) 303-319.
+.. [2] H.-J. Butt, M. Kappl, "Normal capillary forces", Adv. Colloid Interface Sci. 146 (2009)
+   48-60. :doi:`10.1016/j.cis.2008.10.002`
+.. [3] J. N. Israelachvili, Intermolecular and Surface Forces, 3rd ed., Academic Press, 2011,
+   chapter 17.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .checks import as_array
+from .errors import InputError
+from .references import cites
+
+__all__ = ["GAS_CONSTANT", "WATER", "kelvin_radius", "condensation_height", "laplace_pressure",
+           "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap"]
+
+#: Molar gas constant R [J/(mol K)] (CODATA 2018, exact).
+GAS_CONSTANT = 8.314462618
+
+#: Water at 25 degC: surface tension [N/m] and molar volume [m^3/mol] (Israelachvili 2011, Table 17.1).
+WATER = {"surface_tension": 0.072, "molar_volume": 18.07e-6}
+
+
+def _humidity(relative_humidity):
+    rh = np.asarray(relative_humidity, dtype=float)
+    if np.any(~np.isfinite(rh)) or np.any(rh < 0) or np.any(rh >= 1):
+        raise InputError(f"relative_humidity must lie in [0, 1) (1 is saturation: no finite Kelvin radius), got "
+                         f"{relative_humidity!r}.")
+    return rh
+
+
+def _angles(*theta):
+    out = [np.asarray(t, dtype=float) for t in theta]
+    for t in out:
+        if np.any(~np.isfinite(t)) or np.any(t < 0) or np.any(t > math.pi):
+            raise InputError("water contact angles must lie in [0, pi] rad (0 to 180 deg).")
+    return out
+
+
+@cites("israelachvili_2011")
+def kelvin_radius(relative_humidity, temperature=298.15, surface_tension=WATER["surface_tension"],
+                  molar_volume=WATER["molar_volume"]):
+    """Kelvin radius of a water meniscus, ``r_K = gamma V_m / (R T ln(1/RH))``, Eq. (17.21) in [3]_.
+
+    Parameters
+    ----------
+    relative_humidity : numeric
+        RH = p / p_sat [-], in [0, 1).
+    temperature : numeric
+        T [K], > 0.
+    surface_tension : numeric
+        gamma of the liquid [N/m].
+    molar_volume : numeric
+        V_m of the liquid [m^3/mol].
+
+    Returns
+    -------
+    numeric
+        r_K [m] (positive: the meniscus is concave); 0 at RH = 0 (no meniscus can form).
+
+    Examples
+    --------
+    >>> print(f"{float(kelvin_radius(1 / math.e)) * 1e9:.3f}")  # gamma V_m / (R T) at 25 degC [nm]
+    0.525
+    """
+    rh = _humidity(relative_humidity)
+    t = as_array(temperature, "temperature", "K", positive=True)
+    gamma = as_array(surface_tension, "surface_tension", "N/m", positive=True)
+    volume = as_array(molar_volume, "molar_volume", "m^3/mol", positive=True)
+    scale = gamma * volume / (GAS_CONSTANT * t)
+    with np.errstate(divide="ignore"):
+        log = np.where(rh > 0, np.log(1.0 / np.where(rh > 0, rh, 1.0)), np.inf)
+    result = np.where(rh > 0, scale / log, 0.0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
+def condensation_height(kelvin, contact_angle_1, contact_angle_2=None):
+    """Largest gap that fills with condensed water, ``h_c = r_K (cos theta_1 + cos theta_2)`` [m], [2]_.
+
+    ``contact_angle_2`` defaults to ``contact_angle_1`` (two like surfaces: ``2 r_K cos theta``).
+    Zero (no meniscus) for a hydrophobic pair, ``cos theta_1 + cos theta_2 <= 0``.
+    """
+    r = as_array(kelvin, "kelvin", "m", nonnegative=True)
+    t1, t2 = _angles(contact_angle_1, contact_angle_1 if contact_angle_2 is None else contact_angle_2)
+    result = r * np.maximum(np.cos(t1) + np.cos(t2), 0.0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
+def laplace_pressure(kelvin, surface_tension=WATER["surface_tension"]):
+    """Laplace pressure of the meniscus, ``gamma / r_K`` [Pa] (attractive), Eq. (17.3) in [3]_; 0 where r_K = 0."""
+    r = as_array(kelvin, "kelvin", "m", nonnegative=True)
+    gamma = as_array(surface_tension, "surface_tension", "N/m", positive=True)
+    result = np.divide(gamma, r, out=np.zeros(np.broadcast(gamma, r).shape), where=r > 0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
+@cites("israelachvili_2011")
+def capillary_force_sphere(radius, contact_angle_1, contact_angle_2=None, surface_tension=WATER["surface_tension"]):
+    """Capillary force of a sphere on a flat, ``2 pi R gamma (cos theta_1 + cos theta_2)`` [N], [1]_, [2]_.
+
+    The limit r_K << R: ``4 pi R gamma cos theta`` for like surfaces, independent of humidity.
+    """
+    r = as_array(radius, "radius", "m", positive=True)
+    gamma = as_array(surface_tension, "surface_tension", "N/m", positive=True)
+    t1, t2 = _angles(contact_angle_1, contact_angle_1 if contact_angle_2 is None else contact_angle_2)
+    result = 2 * math.pi * r * gamma * np.maximum(np.cos(t1) + np.cos(t2), 0.0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
+def capillary_force_cylinder(radius, kelvin, contact_angle_1, contact_angle_2=None,
+                             surface_tension=WATER["surface_tension"]):
+    """Capillary force per unit length of a cylinder on a flat [N/m] (r_K << R), [2]_.
+
+    The meniscus fills the gap ``x^2 / (2R) <= h_c``, a width ``2 sqrt(2 R h_c)``; the Laplace
+    pressure ``gamma / r_K`` over it gives ``2 gamma sqrt(2 R h_c) / r_K``
+    = ``2 gamma sqrt(2 R (cos theta_1 + cos theta_2) / r_K)``: it grows as the humidity falls
+    (r_K smaller), unlike the sphere's.
+    """
+    r = as_array(radius, "radius", "m", positive=True)
+    k = as_array(kelvin, "kelvin", "m", nonnegative=True)
+    gamma = as_array(surface_tension, "surface_tension", "N/m", positive=True)
+    h = condensation_height(k, contact_angle_1, contact_angle_2)
+    result = np.divide(2 * gamma * np.sqrt(2 * r * h), k, out=np.zeros(np.broadcast(r, k, gamma).shape),
+                       where=k > 0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
+def capillary_pressure(gap, kelvin, contact_angle_1, contact_angle_2=None, surface_tension=WATER["surface_tension"]):
+    """Attractive meniscus pressure at each local gap [Pa]: ``gamma / r_K`` where ``gap <= h_c``, else 0.
+
+    Parameters
+    ----------
+    gap : array_like
+        Local gap between the surfaces [m] (0 in contact: the contact spots are wetted around).
+    kelvin : float
+        r_K [m].
+    contact_angle_1, contact_angle_2 : float
+        Water contact angles of the two surfaces [rad].
+    surface_tension : float
+        [N/m].
+    """
+    g = np.asarray(gap, dtype=float)
+    if np.any(~np.isfinite(g)):
+        raise InputError("gap contains NaN or infinite values.")
+    h_c = condensation_height(kelvin, contact_angle_1, contact_angle_2)
+    return np.where((g <= h_c) & (h_c > 0), laplace_pressure(kelvin, surface_tension), 0.0)
+
+
+def capillary_force_from_gap(gap, area_per_element, kelvin, contact_angle_1, contact_angle_2=None,
+                             surface_tension=WATER["surface_tension"]):
+    """Capillary force [N] of a gap field: the meniscus pressure summed over the wetted elements.
+
+    ``area_per_element`` [m^2] (e.g. dx dy for a surface, dx times the width for a line).
+    """
+    area = as_array(area_per_element, "area_per_element", "m^2", positive=True)
+    return float(np.sum(capillary_pressure(gap, kelvin, contact_angle_1, contact_angle_2, surface_tension)) * area)
