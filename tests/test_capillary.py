@@ -76,3 +76,32 @@ def test_laplace_pressure_and_bad_input():
         condensation_height(1e-9, 4.0)
     with pytest.raises(InputError, match="gap"):
         capillary_pressure([np.nan], 1e-9, 0.3)
+
+
+def test_humid_air_in_the_meshing_cycle():
+    """Issue #17: vacuum is untouched; in air the menisci add attraction to F_adh and a capillary part to the
+    COF split (which still adds up); dry air equals vacuum; OTS-coated teeth (hydrophobic) form no menisci."""
+    from memstribo.coating import get_coating
+    from memstribo.mesh import simulate_mesh, summarize
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    vacuum = summarize(simulate_mesh(params, steps=21))
+    assert vacuum["environment"] == "vacuum" and vacuum["cof_capillary"] == 0.0
+    dry = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.0}), steps=21))
+    assert dry["cof_mean"] == vacuum["cof_mean"] and dry["stiction_margin"] == vacuum["stiction_margin"]
+    humid = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=21))
+    assert humid["cof_capillary"] > 0 and humid["energy_capillary"] > 0
+    assert humid["adhesion_force_mean"] > vacuum["adhesion_force_mean"]
+    assert humid["cof_mean"] == pytest.approx(humid["cof_chemical"] + humid["cof_vdw"] + humid["cof_elastic"]
+                                              + humid["cof_capillary"], rel=1e-12)
+    coated = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=21,
+                                     coating=get_coating("OTS"), wear=0.0))
+    # the pinion is bare (30 deg) and the gear OTS (112 deg): cos 30 + cos 112 > 0, a weak meniscus remains
+    assert 0 < coated["cof_capillary"] < humid["cof_capillary"]
+
+
+def test_cli_sweep_humidity(cli):
+    out = cli.json("sweep", "humidity", "--values", "0,0.7", "--steps", "11")
+    dry, wet = out["points"]
+    assert dry["relative_humidity"] == 0.0 and dry["cof_capillary"] == 0.0 and wet["cof_capillary"] > 0

@@ -91,7 +91,8 @@ SUMMARY_UNITS = {
     "unconverged_steps": "", "window_exceeded_steps": "", "max_contact_pressure": "Pa",
     "steps_above_elastic_limit": "", "resisting_force_max": "N", "normal_force_total": "N", "mesh_efficiency": "",
     "mesh_efficiency_min": "", "max_shear_stress": "Pa", "load_case": "", "interface_model": "",
-    "contact_adhesion": "", "mesh_contact": "", "roughness_rows": "", "warnings": "", "step_converged": "", "step_change_margin": "",
+    "contact_adhesion": "", "mesh_contact": "", "environment": "", "relative_humidity": "", "cof_capillary": "",
+    "energy_capillary": "J", "roughness_rows": "", "warnings": "", "step_converged": "", "step_change_margin": "",
     "step_change_cof": "", "steps_checked": "", "realisations": "", "stiction_probability": "",
     "stiction_margin_median": "N", "stiction_margin_p05": "N", "stiction_margin_p95": "N", "cof_mean_median": "",
     "cof_mean_p05": "", "cof_mean_p95": "", "mesh_efficiency_median": "", "mesh_efficiency_p05": "",
@@ -518,7 +519,17 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     out = {key: np.zeros(n_steps) for key in ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh",
                                               "contact_width", "max_pressure", "unconverged", "residual",
                                               "iterations", "window_exceeded", "approach", "rigid_atomic_blocks",
-                                              "vdw_edge")}
+                                              "vdw_edge", "f_cap", "f_cap_adh", "wetted")}
+    humid = params["environment"] == "air"
+    if humid:
+        from . import capillary
+
+        r_kelvin = capillary.kelvin_radius(params["relative_humidity"], params["temperature"])
+        theta_bare = float(params["water_contact_angle"])
+        theta_coat = theta_bare
+        if coating is not None and math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
+            theta_coat = math.radians(coating.water_contact_angle_deg)
+        renewal = params["meniscus_renewal_distance"] or params["atomic_pitch"]
     block_loads = []
     surface = params["mesh_contact"] == "surface"
     if surface:
@@ -627,6 +638,16 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         out["vdw_bonds"] += n_vdw.sum(axis=1)
         out["f_vdw"] += friction.friction_force(
             friction.bond_breaking_energy(n_vdw, u_vdw_x, bond, bond).sum(axis=1), bond)
+        if humid:  # capillary menisci where the gap is below the condensation height (docs/humidity.md)
+            theta_gear = np.where(bare_x, theta_bare, theta_coat) if coating is not None else theta_bare
+            height = capillary.condensation_height(r_kelvin, theta_bare, theta_gear)
+            wet = (gap <= height) & (height > 0)
+            area = wet * (w_adh * dx)
+            out["wetted"] += area.sum(axis=1)
+            out["f_cap_adh"] += capillary.laplace_pressure(r_kelvin) * area.sum(axis=1)  # attraction
+            # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
+            rupture = capillary.WATER["surface_tension"] * (np.cos(theta_bare) + np.cos(theta_gear))
+            out["f_cap"] += (area * rupture).sum(axis=1) / renewal
         # elastic interlocking (3-25) on material blocks, both flanks, times the sliding fraction
         e_el = np.zeros(n_steps)
         for (k, (_, _, _, _, comp_at, comp_adh)) in zip((k1, k2), flank_states):
@@ -828,8 +849,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress)
         sliding = kin["sliding"]
         f_el = np.divide(out["e_el"], sliding, out=np.zeros_like(sliding), where=sliding > 0)
-        friction = out["f_chem"] + out["f_vdw"] + f_el
-        mu_new = friction / (setup.load + out["f_adh"])
+        friction = out["f_chem"] + out["f_vdw"] + f_el + out["f_cap"]
+        mu_new = friction / (setup.load + out["f_adh"] + out["f_cap_adh"])
         if beta == 0.0:
             break
         if friction_old is not None and np.max(np.abs(friction - friction_old)) <= 1e-3 * max(friction.max(), 1e-300):
@@ -840,15 +861,17 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         mu = mu_new if mu is None else 0.5 * (mu + mu_new)
         friction_old = friction
 
+    out["f_adh"] = out["f_adh"] + out["f_cap_adh"]  # menisci pull the flanks together too (issue #17)
     denominator = setup.load + out["f_adh"]
     e_chem, e_vdw = out["f_chem"] * sliding, out["f_vdw"] * sliding
     e_el = f_el * sliding
-    energy = e_chem + e_vdw + e_el
+    e_cap = out["f_cap"] * sliding
+    energy = e_chem + e_vdw + e_el + e_cap
     averaging = params["friction_averaging_distance"] or params["atomic_pitch"]
     # every part averaged alike (the average is linear), so the parts add up to the friction force
-    f_chem_avg, f_vdw_avg, f_el_avg = (sliding_average(f, sliding, averaging) for f in (out["f_chem"], out["f_vdw"],
-                                                                                       f_el))
-    friction_avg = f_chem_avg + f_vdw_avg + f_el_avg
+    f_chem_avg, f_vdw_avg, f_el_avg, f_cap_avg = (sliding_average(f, sliding, averaging) for f in (
+        out["f_chem"], out["f_vdw"], f_el, out["f_cap"]))
+    friction_avg = f_chem_avg + f_vdw_avg + f_el_avg + f_cap_avg
     resisting = resisting_force(setup.positions, friction_avg, pair.first_contact, pair.last_contact, pair.base_pitch)
     margin = f_t - resisting
     # mesh efficiency: friction power of all pairs in mesh over the input power T omega1 (MODEL 7b)
@@ -907,8 +930,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "friction_force_chemical": var(out["f_chem"], "N", "friction force of the chemical bonds"),
         "friction_force_vdw": var(out["f_vdw"], "N", "friction force of the vdW bonds"),
         "friction_force_elastic": var(f_el, "N", "friction force of elastic interlocking (3-25)"),
-        "friction_force_instantaneous": var(friction, "N", "friction force of the step's bond population and "
-                                                           "interlocking (3-1)"),
+        "friction_force_instantaneous": var(friction, "N", "friction force of the step's bond population, "
+                                                           "interlocking and menisci (3-1)"),
         "friction_force": var(friction_avg, "N", "friction force F_f of the pair: dissipated energy per sliding "
                                                  "distance over friction_averaging_distance (3-1, MODEL 7b)"),
         "resisting_force": var(resisting, "N", "resisting force R(c): friction of every pair in mesh (MODEL 7b)"),
@@ -917,6 +940,11 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "cof_chemical": var(f_chem_avg / denominator, "1", "COF from chemical bonds (3-8)"),
         "cof_vdw": var(f_vdw_avg / denominator, "1", "COF from vdW bonds (3-8)"),
         "cof_elastic": var(f_el_avg / denominator, "1", "COF from elastic interlocking (3-9)"),
+        "cof_capillary": var(f_cap_avg / denominator, "1", "COF from breaking capillary menisci (humid air)"),
+        "friction_force_capillary": var(out["f_cap"], "N", "friction force of breaking capillary menisci"),
+        "capillary_force": var(out["f_cap_adh"], "N", "attraction of the capillary menisci (part of F_adh)"),
+        "wetted_area": var(out["wetted"], "m^2", "area under capillary menisci"),
+        "energy_capillary": var(e_cap, "J", "energy dissipated by breaking capillary menisci in the step"),
         "energy_chemical": var(e_chem, "J", "energy dissipated by chemical bonds in the step"),
         "energy_vdw": var(e_vdw, "J", "energy dissipated by vdW bonds in the step"),
         "energy_elastic": var(e_el, "J", "energy dissipated by elastic interlocking in the step"),
@@ -942,6 +970,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         "title": "memstribo meshing-cycle simulation (thesis 4.6, 4.9)",
         "load_case": params["load_case"],
         "interface_model": params["interface_model"],
+        "environment": params["environment"],
+        "relative_humidity": float(params["relative_humidity"]) if params["environment"] == "air" else 0.0,
         "contact_adhesion": params["contact_adhesion"],
         "mesh_contact": params["mesh_contact"],
         "vdw_cutoff": float(params["vdw_cutoff"]),
@@ -1029,7 +1059,8 @@ def summarize(dataset) -> dict:
     sliding = np.asarray(dataset["sliding_distance"])
     denominator = np.asarray(dataset["normal_force"] + dataset["adhesion_force"])
     work = float((denominator * sliding).sum())
-    energy = {k: float(dataset[k].sum()) for k in ("energy_chemical", "energy_vdw", "energy_elastic")}
+    energy = {k: float(dataset[k].sum()) for k in ("energy_chemical", "energy_vdw", "energy_elastic",
+                                                   "energy_capillary") if k in dataset}
     split = {f"cof_{k.split('_')[1]}": (v / work if work > 0 else 0.0) for k, v in energy.items()}
     friction = np.asarray(dataset["friction_force"])
     resisting = np.asarray(dataset["resisting_force"])
@@ -1037,7 +1068,7 @@ def summarize(dataset) -> dict:
     margin = f_t - float(resisting.max())
     efficiency = np.asarray(dataset["mesh_efficiency"])
     return {
-        "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"],
+        "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split.get("cof_capillary", 0.0),
         "cof_max": float(dataset["cof"].max()),
         **split,
         "friction_force_mean": float((friction * weights).sum()),
@@ -1062,6 +1093,8 @@ def summarize(dataset) -> dict:
         "steps_above_elastic_limit": int((np.asarray(dataset["max_contact_pressure"])
                                           > dataset.attrs.get("elastic_limit_pressure", np.inf)).sum()),
         "load_case": str(dataset.attrs["load_case"]),
+        "environment": str(dataset.attrs.get("environment", "vacuum")),
+        "relative_humidity": float(dataset.attrs.get("relative_humidity", 0.0)),
         "interface_model": str(dataset.attrs["interface_model"]),
         "contact_adhesion": str(dataset.attrs["contact_adhesion"]),
         "mesh_contact": str(dataset.attrs.get("mesh_contact", "line")),
@@ -1204,8 +1237,8 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
     values = [float(v) for v in values]
     if not values:
         raise InputError("a sweep needs at least one value.")
-    if parameter not in ("load", "torque", "area"):
-        raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load', 'torque' or 'area'.")
+    if parameter not in ("load", "torque", "area", "humidity"):
+        raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load', 'torque', 'area' or 'humidity'.")
     iterator = values
     if progress:
         from tqdm.auto import tqdm
@@ -1218,6 +1251,11 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
                 raise InputError(f"sweep load values must be positive forces, got {value!r} N.")
             point_params = params.updated({"normal_load": value, "load_case": "thesis"}, origin="sweep")
             head = {"normal_load": value}
+        elif parameter == "humidity":
+            if not 0.0 <= value <= 0.99:
+                raise InputError(f"sweep humidity values are relative humidities from 0 to 0.99, got {value!r}.")
+            point_params = params.updated({"environment": "air", "relative_humidity": value}, origin="sweep")
+            head = {"relative_humidity": value}
         elif parameter == "torque":
             if value <= 0:
                 raise InputError(f"sweep torque values must be positive torques, got {value!r} N m.")

@@ -9,9 +9,10 @@ HELP = ("meshing cycles over loads (sweep load), drive torques (sweep torque) or
         "thesis 4.9.3-4.9.4")
 ORDER = 55
 
-_DEFAULTS = {"load": "25uN:300uN:25uN", "torque": "0.2e-7:2e-7:0.2e-7", "area": "1:10:1"}
-_UNITS = {"load": "N", "torque": "N*m", "area": ""}
-_HEAD = {"load": ["normal_load"], "torque": ["drive_torque"], "area": ["area_multiple", "area"]}
+_DEFAULTS = {"load": "25uN:300uN:25uN", "torque": "0.2e-7:2e-7:0.2e-7", "area": "1:10:1", "humidity": "0:0.95:0.05"}
+_UNITS = {"load": "N", "torque": "N*m", "area": "", "humidity": ""}
+_HEAD = {"load": ["normal_load"], "torque": ["drive_torque"], "area": ["area_multiple", "area"],
+         "humidity": ["relative_humidity"]}
 
 
 def register(subparsers, parents):
@@ -22,7 +23,7 @@ def register(subparsers, parents):
         description=HELP + ". VALUES is START:STOP:STEP (STOP included) or a comma list; loads carry units "
         "('25uN:300uN:25uN'), areas are whole multiples of A_adh = w_adh^2 (the face width is set to that many "
         "nanoblock rows).")
-    parser.add_argument("parameter", choices=("load", "torque", "area"),
+    parser.add_argument("parameter", choices=("load", "torque", "area", "humidity"),
                         help="what to sweep (load: the thesis load case; torque: the torque load case)")
     parser.add_argument("--values", metavar="VALUES",
                         help="default: load 25uN:300uN:25uN, torque 0.2e-7:2e-7:0.2e-7 (N m; or with units, e.g. 20nN*m), area 1:10:1")
@@ -78,6 +79,7 @@ def run(args, params):
     head = _HEAD[args.parameter]
     extra = ["stiction_probability", "stiction_margin_p05", "stiction_margin_median", "stiction_margin_p95",
              "cof_mean_p05", "cof_mean_median", "cof_mean_p95"] if args.realisations > 1 else []
+    extra += ["cof_capillary", "energy_capillary"] if args.parameter == "humidity" else []
     points = [{key: point[key] for key in head + list(MESH_KEYS) + ["energy_dissipated", "energy_chemical",
                                                                      "energy_vdw", "energy_elastic",
                                                                      "unconverged_steps"] + extra}
@@ -98,6 +100,7 @@ def run(args, params):
              + (f" {'P(stiction)':>11}" if args.realisations > 1 else "")]
     for p in points:
         swept = (f"{p['normal_load'] * 1e6:.4g} uN" if args.parameter == "load" else
+                 f"RH {p['relative_humidity']:.2f}" if args.parameter == "humidity" else
                  f"{p['drive_torque']:.3g} N m" if args.parameter == "torque" else f"{p['area_multiple']} A_adh")
         lines.append(f"  {swept:>13} {p['cof_mean']:9.4g} {p['cof_chemical']:9.4g} {p['cof_vdw']:9.4g} "
                      f"{p['cof_elastic']:9.2g} {p['friction_force_mean'] * 1e6:7.4g} uN "
@@ -106,7 +109,8 @@ def run(args, params):
                      + (f" {p['stiction_probability']:11.2f}" if args.realisations > 1 else ""))
     return CommandResult(values={}, title=f"sweep over {args.parameter}" + {"load": " (thesis 4.9.3, load case thesis)",
                                                                       "area": " (thesis 4.9.4)",
-                                                                      "torque": " (load case torque)"}[args.parameter],
+                                                                      "torque": " (load case torque)",
+                                                                      "humidity": " (humid air)"}[args.parameter],
                          notes=lines + notes)
 
 
@@ -128,7 +132,7 @@ def _write(parameter, points, folder, provenance=None) -> list[str]:
                                                               "long_name": dim.replace("_", " ")})})
     written = write_dataset(dataset, folder, f"sweep_{parameter}", provenance=provenance)
     x = coordinate * (1e6 if parameter == "load" else 1.0)
-    xlabel = {"load": "external load [uN]", "torque": "drive torque [N m]",
+    xlabel = {"load": "external load [uN]", "torque": "drive torque [N m]", "humidity": "relative humidity [-]",
               "area": "nominal contact area [A_adh]"}[parameter]
     figure, ax = new_figure(figsize=(5.6, 3.6))
     ax.plot(x, dataset["cof_mean"], "o-", label="COF (cycle mean)")

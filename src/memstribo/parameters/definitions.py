@@ -230,6 +230,17 @@ _SPECS = [
     _range("vdw_cutoff", "m", "Local gap beyond which vdW bonds are neglected (interface_model 'gap'); a "
            "numerical parameter: doubling it changes the mean COF by less than 1 %", 1e-10, 1e-6,
            "from about the contact separation D0 to 1 um (the attraction is 1e-9 of its contact value there)"),
+    ParameterSpec("environment", "", "Environment of the teeth: 'vacuum' (the thesis) or 'air' (water condenses in "
+                  "narrow gaps: capillary menisci, issue #17)", kind="str", choices=("vacuum", "air")),
+    _range("relative_humidity", "", "Relative humidity of the air (environment 'air')", 0.0, 0.99,
+           "0 (dry) to 0.99 (the Kelvin radius diverges at saturation)", exclusive_minimum=False),
+    _range("temperature", "K", "Temperature of the air and the teeth (environment 'air')", 200.0, 400.0,
+           "liquid water at the surfaces: -73 to 127 degC"),
+    _range("water_contact_angle", "rad", "Water contact angle of the bare (oxidised) silicon surface; a coating's "
+           "own angle replaces it on coated blocks", 0.0, math.pi, "0 to 180 deg", exclusive_minimum=False),
+    _range("meniscus_renewal_distance", "m", "Sliding distance after which a meniscus has broken and re-formed "
+           "(its rupture energy is dissipated once per distance); unset: atomic_pitch", 1e-10, 1e-5,
+           "from an atomic distance to 10 um", optional=True),
     ParameterSpec("mesh_contact", "", "Contact solve of the meshing cycle: 'line' (a plane-strain line contact per "
                   "nanoblock row, rows carry equal line loads) or 'surface' (the strip of the face width under the "
                   "window as one surface contact per step: rows share the load elastically)", kind="str",
