@@ -87,3 +87,15 @@ def test_config_errors(tmp_path):
     unknown.write_text('normal_lod = "25 uN"\n')
     with pytest.raises(InputError, match="Did you mean 'normal_load'"):
         read_config(unknown)
+
+
+def test_a_set_with_a_base_changes_only_what_it_lists():
+    """silicon_oxide_air (issue #17) names silicon_thesis as its base and changes a few values, each sourced."""
+    from memstribo.parameters import available_parameter_sets, get_parameter_values
+
+    assert "silicon_oxide_air" in available_parameter_sets()
+    oxide, base = get_parameter_values("silicon_oxide_air"), get_parameter_values("silicon_thesis")
+    assert oxide["environment"] == "air" and oxide["bond_energy"] < base["bond_energy"]
+    assert "Israelachvili" in oxide.source("hamaker_constant")
+    assert oxide["youngs_modulus"] == base["youngs_modulus"]
+    assert oxide.source("youngs_modulus") == base.source("youngs_modulus")

@@ -245,6 +245,13 @@ def get_parameter_values(name: str = DEFAULT_SET) -> Parameters:
     text = (resources.files(__package__) / "sets" / f"{name}.toml").read_text(encoding="utf-8")
     data = tomllib.loads(text)
     values, sources = {}, {}
+    base = data.get("meta", {}).get("base")
+    if base:  # a set may change a few values of another and name it as its base
+        if base == name:
+            raise InputError(f"parameter set '{name}' names itself as its base.")
+        parent = get_parameter_values(base)
+        values = {key: parent[key] for key in parent}
+        sources = {key: parent.source(key) for key in parent}
     for key, entry in data.get("parameters", {}).items():
         values[key] = coerce_value(key, entry.get("value"))
         sources[key] = entry.get("source", "")
