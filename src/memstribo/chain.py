@@ -891,7 +891,7 @@ class RunChain:
     def _tick(self, values, label):
         if not self.progress:
             return values
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
         return tqdm(values, desc=f"  {label}", leave=False, file=sys.stderr, unit="pt")
 
@@ -924,7 +924,7 @@ class RunChain:
 
     def run(self) -> RunResult:
         """All stages in order; parameters, references, run.json and report.html after each."""
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
         from .references import reset_used_references
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import CommandResult
+from .common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "run"
 HELP = "the main job: roughness -> nanoblocks -> meshing cycle -> sweeps -> coating -> wear -> damage, with report.html"
@@ -43,8 +43,7 @@ def register(subparsers, parents):
                         help="positions along the path of contact per meshing simulation (overrides [run] steps)")
     parser.add_argument("--roughness", action="append", default=[], metavar="FILE",
                         help="a measured profile or AFM file to analyse as well (repeatable)")
-    parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
-                        help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    add_progress_argument(parser)
     parser.add_argument("--load-case", choices=("torque", "thesis"),
                         help="normal load of the meshing stages: 'torque' (F_t / cos alpha, default) or 'thesis' "
                              "(normal_load, 25 uN); the load sweep always uses the thesis case")
@@ -86,7 +85,7 @@ def run(args, params):
     if args.roughness:
         extra = RunOptions.from_table({"roughness_files": args.roughness}, Path.cwd()).roughness_files
         options = replace(options, roughness_files=options.roughness_files + extra)
-    progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
+    progress = progress_enabled(args)
     _prepare_folder(Path(args.out), args.overwrite)
     _configure_logging(args, progress)
     result = RunChain(params, args.out, options, progress=progress).run()
