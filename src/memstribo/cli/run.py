@@ -50,6 +50,10 @@ def register(subparsers, parents):
     parser.add_argument("--overwrite", action="store_true",
                         help="write into DIR although it holds files (stale files of an earlier run are removed "
                              "first); without it a non-empty DIR is refused")
+    parser.add_argument("--resume", action="store_true",
+                        help="continue the run in DIR (killed, or with failed stages): stages run.json records as "
+                             "done are read back, not recomputed; failed and missing stages (and those after them "
+                             "that use them) run again; give the same config and options as that run")
     loudness = parser.add_mutually_exclusive_group()
     loudness.add_argument("--quiet", action="store_true", help="no log lines on stderr (errors only)")
     loudness.add_argument("--verbose", action="store_true", help="more log lines on stderr (each stage's files)")
@@ -86,19 +90,32 @@ def run(args, params):
         extra = RunOptions.from_table({"roughness_files": args.roughness}, Path.cwd()).roughness_files
         options = replace(options, roughness_files=options.roughness_files + extra)
     progress = progress_enabled(args)
-    _prepare_folder(Path(args.out), args.overwrite)
+    if args.resume:
+        if args.overwrite:
+            raise InputError("--resume and --overwrite together: --resume continues the run in --out, --overwrite "
+                             "starts it again from nothing; give one of them.")
+        if not (Path(args.out) / "run.json").is_file():
+            raise InputError(f"--resume: {args.out} holds no run.json (no run of memstribo to continue); run without "
+                             "--resume.")
+    else:
+        _prepare_folder(Path(args.out), args.overwrite)
+    chain = RunChain(params, args.out, options, progress=progress, resume=args.resume)
     _configure_logging(args, progress)
-    result = RunChain(params, args.out, options, progress=progress).run()
+    result = chain.run()
     failed = {s.name: s.message for s in result.stages if s.status == "failed"
               or (s.status == "skipped" and s.name in options.stages)}
     values = {"folder": str(result.folder), "report": str(result.folder / "report.html"),
               "elapsed": result.elapsed, "complete": result.ok and not failed,
               "stages": {s.name: s.status for s in result.stages}, "failed_stages": failed, **result.verdict}
+    if args.resume:
+        values["kept_stages"] = list(result.kept)
     units = {"elapsed": "s", "tangential_force": "N", "bare_resisting_force_max": "N", "bare_stiction_margin": "N",
              "coated_resisting_force_max": "N", "coated_stiction_margin": "N", "bare_stiction_margin_median": "N",
              "bare_stiction_margin_p05": "N", "bare_stiction_margin_p95": "N"}
     notes = [f"  {s.name}: {s.status}{' - ' + s.message if s.message else ''}" for s in result.stages
              if s.status != "done" or s.message]
+    if args.resume:
+        notes.append(f"  resumed: kept {', '.join(result.kept) or 'no stage'} from the earlier run; ran the others again")
     notes.append(f"  open {result.folder / 'report.html'} in a browser")
     if failed:
         notes.append(f"  {len(failed)} requested stage(s) did not finish: exit status 1")
