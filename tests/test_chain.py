@@ -412,3 +412,21 @@ def test_cli_resume_errors(cli, tmp_path):
     assert code == 2 and "other options (stages)" in err
     code, _, err = cli("run", config, "--out", tmp_path / "out", "--resume", "--set", "normal_load=50 uN")
     assert code == 2 and "other parameters (normal_load)" in err
+
+
+def test_resume_after_a_kill_runs_the_unfinished_stages(params, tmp_path, monkeypatch):
+    """Ctrl-C (or a kill) in the coated stage: run.json says 'pending' for it; --resume runs it and keeps the rest."""
+    options = options_for_test(stages=("roughness", "gear", "coated"), realisations=1)
+
+    def interrupt(self):
+        raise KeyboardInterrupt
+
+    real_coated = RunChain.coated
+    monkeypatch.setattr(RunChain, "coated", interrupt)
+    with pytest.raises(KeyboardInterrupt):
+        RunChain(params, tmp_path / "out", options).run()
+    monkeypatch.setattr(RunChain, "coated", real_coated)
+    resumed = RunChain(params, tmp_path / "out", options, resume=True).run()
+    assert resumed.kept == ["roughness", "gear"] and resumed.ok
+    assert (tmp_path / "out" / "data" / "mesh_coated.nc").is_file()
+    assert resumed.verdict["coated_stiction_margin"] == resumed.summaries["coated"]["stiction_margin"]
