@@ -3,6 +3,8 @@
 import subprocess
 import sys
 
+import pytest
+
 from memstribo import __version__
 
 
@@ -62,3 +64,44 @@ def test_format_quantity_handles_every_kind_of_value():
     assert format_quantity(None, "N") == "-"
     assert format_value([36.85e-6, 147.4e-6], "m") == "[36.85 um, 147.4 um]"
     assert format_value({"corner": 1.0}, "") == "corner: 1"
+
+
+# --- one --progress auto|on|off on every long command (issue #15) -------------------------------------------------
+@pytest.mark.parametrize("command", ["mesh", "sweep", "coating", "damage", "study", "run"])
+@pytest.mark.parametrize("argv, expected", [
+    ((), "auto"), (("--progress",), "on"), (("--progress", "on"), "on"), (("--progress=off",), "off"),
+    (("--progress", "auto"), "auto"),
+])
+def test_every_long_command_takes_the_same_progress_option(command, argv, expected):
+    from memstribo.cli.main import build_parser
+
+    positional = {"sweep": ["load"], "study": ["spec.toml"]}.get(command, [])
+    args = build_parser().parse_args([command, *positional, *argv])
+    assert args.progress == expected
+
+
+def test_progress_enabled_follows_the_choice_and_the_terminal():
+    import argparse
+    import io
+
+    from memstribo.cli.common import progress_enabled
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    for choice, terminal, expected in (("on", False, True), ("off", True, False), ("auto", True, True),
+                                       ("auto", False, False)):
+        stream = Terminal() if terminal else io.StringIO()
+        assert progress_enabled(argparse.Namespace(progress=choice), stream) is expected
+    assert progress_enabled(argparse.Namespace(progress=True), io.StringIO()) is True  # the old flag's namespace
+    assert progress_enabled(argparse.Namespace(), io.StringIO()) is False  # no option: auto, not a terminal
+
+
+def test_a_bad_progress_value_is_a_clean_usage_error(capsys):
+    from memstribo.cli.main import main
+
+    with pytest.raises(SystemExit) as exc:
+        main(["mesh", "--progress", "sometimes"])
+    err = capsys.readouterr().err
+    assert exc.value.code == 2 and "--progress" in err and "choose from 'auto', 'on', 'off'" in err

@@ -181,3 +181,58 @@ def test_cli_gear_outer_diameters(cli):
     assert code == 2 and "two lengths" in err and "Traceback" not in err
     code, out, err = cli("gear", "--outer-diameters=-81um,303um")
     assert code == 2 and "Traceback" not in err
+
+
+# --- design checks in ISO 21771 terms (issue #15) ----------------------------------------------------------------
+def test_tip_thickness_closed_form_and_the_thesis_pair_has_no_warning(pair):
+    from memstribo.gear import involute_function, tip_tooth_thickness
+
+    # s_a = d_a (s/d + inv alpha - inv alpha_a), s = pi m / 2 (ISO 21771:2007)
+    m, z, alpha = pair.module, pair.teeth_pinion, pair.pressure_angle
+    d, d_a = m * z, m * z + 2 * m
+    alpha_a = math.acos(d * math.cos(alpha) / d_a)
+    expected = d_a * (math.pi * m / 2 / d + (math.tan(alpha) - alpha) - (math.tan(alpha_a) - alpha_a))
+    assert pair.tip_thickness[0] == pytest.approx(expected, rel=1e-12)
+    assert tip_tooth_thickness(z, m, alpha) == pytest.approx(expected, rel=1e-12)
+    assert involute_function(math.radians(20)) == pytest.approx(0.014904383867336446, rel=1e-12)
+    # a rack-like tooth (many teeth) tends to the rack's tip thickness pi m / 2 - 2 h_a m tan(alpha)
+    assert tip_tooth_thickness(100000, m, alpha) / m == pytest.approx(math.pi / 2 - 2 * math.tan(alpha), rel=1e-3)
+    assert pair.tip_thickness[0] / m == pytest.approx(0.6886, abs=1e-3)
+    assert pair.centre_distance == pytest.approx(m * (19 + 76) / 2)
+    assert pair.warnings == []
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(pressure_angle=math.radians(89)), "pinion's teeth are pointed"),
+    (dict(addendum_coefficient=1.6), r"pointed: the tooth thickness at the tip \(ISO 21771 s_a\) is -0.111"),
+    (dict(addendum_coefficient=2.0), "Lower the addendum"),
+])
+def test_pointed_teeth_are_refused_with_the_reason(kwargs, match):
+    args = dict(teeth_pinion=19, teeth_gear=76, module=3.8788e-6, pressure_angle=math.radians(20), face_width=2e-6)
+    with pytest.raises(InputError, match=match):
+        GearPair(**{**args, **kwargs})
+
+
+def test_marginal_designs_warn():
+    from memstribo.gear import design_warnings
+
+    thin = GearPair(30, 60, 3.88e-6, math.radians(35), 2e-6)  # meshes, but s_a = 0.09 m on the pinion
+    found = design_warnings(thin)
+    assert thin.warnings == found
+    assert any("pinion's tooth thickness at the tip is 0.090 x module" in w for w in found)
+    short = GearPair(19, 76, 3.88e-6, math.radians(20), 2e-6, addendum_coefficient=0.65)  # contact ratio 1.14
+    assert [w for w in short.warnings if "contact ratio 1.143 is below 1.2" in w]
+    assert not [w for w in short.warnings if "tip" in w]
+
+
+def test_cli_gear_json_has_tip_thickness_and_design_warnings(cli):
+    values = cli.json("gear")
+    assert len(values["tip_thickness"]) == 2 and values["tip_thickness"][0] > 0.25 * values["module"]
+    assert values["warnings"] == [] and "design_warnings" not in values
+    warned = cli.json("gear", "--set", "pressure_angle=35 deg", "--set", "teeth_pinion=30", "--set", "teeth_gear=60")
+    assert any("tooth thickness at the tip" in w for w in warned["warnings"])
+    code, out, err = cli("gear", "--set", "pressure_angle=35 deg", "--set", "teeth_pinion=30", "--set",
+                         "teeth_gear=60")
+    assert code == 0 and "WARNING: the pinion's tooth thickness at the tip" in out
+    code, out, err = cli("gear", "--set", "addendum_coefficient=1.6")
+    assert code == 2 and "pointed" in err and "Traceback" not in err

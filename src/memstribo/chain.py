@@ -65,6 +65,15 @@ DEPENDS: dict[str, tuple[str, ...]] = {
     "coated": ("roughness", "geometry"), "wear_sweep": ("roughness", "geometry"), "damage": ("coated",),
 }
 
+#: Inputs a stage takes when they exist, beyond :data:`DEPENDS` (the damage stage uses the wear sweep when it ran;
+#: the meshing stages draw F_t of the gear stage in their figures). ``--resume`` reruns a stage whose
+#: dependencies or inputs are run again.
+USES: dict[str, tuple[str, ...]] = {"mesh": ("gear",), "coated": ("gear",), "wear_sweep": ("gear",),
+                                    "damage": ("gear", "wear_sweep")}
+
+#: The datasets a resumed run reads back from ``DIR/data`` for the stages after them (stage: (result key, stem)).
+RELOADED: dict[str, tuple[str, str]] = {"coated": ("coated", "mesh_coated"), "wear_sweep": ("wear_sweep", "wear_sweep")}
+
 from .parameters import RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR  # noqa: E402
 from .parameters import RUN_KEYS as _RUN_KEYS  # noqa: E402  (the [run] table's keys live with the config reader)
 
@@ -285,6 +294,8 @@ class RunResult:
     verdict: dict[str, Any]
     inputs: list[dict[str, Any]]
     elapsed: float = 0.0
+    #: stages a resumed run kept from the earlier run in the folder (read back, not recomputed)
+    kept: list[str] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
@@ -573,6 +584,10 @@ def _columns(dataset) -> dict[str, list]:
             if dataset[name].dtype.kind in "fiub"}
 
 
+_GEOMETRY_FIELDS = ("atomic_width", "atomic_height", "adhesive_width", "adhesive_height", "atomic_pitch",
+                    "atomic_per_side", "bulk_height")
+
+
 # --- the chain --------------------------------------------------------------------------------------------------
 
 class RunChain:
@@ -588,9 +603,22 @@ class RunChain:
         What to run (default: everything, thesis settings).
     progress : bool
         Progress bar over the stages on stderr.
+    resume : bool
+        Continue the run in ``out`` (``memstribo run --resume``): stages that ``run.json`` records as done are
+        not recomputed (their record, figures and summary are read back, and the datasets later stages need,
+        ``data/mesh_coated.nc`` and ``data/wear_sweep.nc``); failed, skipped or missing stages run again, and so
+        does every stage after one that runs again and uses it (:data:`DEPENDS`, :data:`USES`). The inputs of
+        the ``roughness`` and ``geometry`` stages (the default profile, the measured files, the derived
+        geometry) are re-read without writing their files. The parameters and options must be those of the
+        earlier run.
+
+    Raises
+    ------
+    InputError
+        With ``resume``: no ``run.json`` in ``out``, or other parameters or options than the earlier run's.
     """
 
-    def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False):
+    def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False, resume: bool = False):
         self.params = params
         #: the parameters of the model stages: ``params`` with the geometry derived from a measured profile
         self.model_params = params
@@ -603,6 +631,99 @@ class RunChain:
         self.inputs: list[dict[str, Any]] = []
         self.records = {name: StageRecord(name, title) for name, title in STAGES.items()}
         self._current: StageRecord | None = None
+        self.kept: list[str] = []
+        self.previous = self._read_previous() if resume else None
+
+    # resuming ------------------------------------------------------------------------------------
+    def _read_previous(self) -> dict[str, Any]:
+        """``run.json`` of the earlier run in the folder, checked against these parameters and options."""
+        import json
+
+        from .parameters import read_config
+
+        manifest_path = self.folder / "run.json"
+        if not manifest_path.is_file():
+            raise InputError(f"--resume: {self.folder} holds no run.json, so there is no run to continue; "
+                             "run without --resume.")
+        try:
+            manifest = json.loads(manifest_path.read_text(encoding="utf-8"))
+            stages = {s["name"]: s for s in manifest["stages"]}
+        except (ValueError, KeyError, TypeError) as exc:
+            raise InputError(f"--resume: {manifest_path} is not a run.json of memstribo ({exc}); run again with "
+                             "--overwrite.") from None
+        options = json.loads(dumps_json(to_jsonable(self.options.__dict__)))
+        if manifest.get("options") != options:
+            changed = sorted(k for k in set(options) | set(manifest.get("options") or {})
+                             if options.get(k) != (manifest.get("options") or {}).get(k))
+            raise InputError(f"--resume: the run in {self.folder} had other options ({', '.join(changed)}); give the "
+                             "same config file and options as the run to continue, or --overwrite.")
+        parameters_path = self.folder / "parameters.toml"
+        if parameters_path.is_file():
+            earlier = self.params.updated(read_config(parameters_path)["parameters"], origin="earlier run")
+            changed = [k for k, v in self.params.to_dict().items() if earlier.to_dict().get(k) != v]
+            if changed:
+                raise InputError(f"--resume: the run in {self.folder} had other parameters ({', '.join(changed[:5])}); "
+                                 "give the same parameters as the run to continue, or --overwrite.")
+        manifest["stages_by_name"] = stages
+        return manifest
+
+    def _keep(self, name: str, rerun: set[str]) -> bool:
+        """Whether a resumed run keeps stage ``name`` from the earlier run: done then, and nothing it uses reruns."""
+        if self.previous is None or name not in self.options.stages:
+            return False
+        earlier = self.previous["stages_by_name"].get(name)
+        if not earlier or earlier.get("status") != "done":
+            return False
+        return not (set(DEPENDS[name]) | set(USES.get(name, ()))) & rerun
+
+    def _restore(self, name: str) -> StageRecord:
+        """Read stage ``name`` back from the folder: record, figures, summary, and what later stages need."""
+        import xarray as xr
+
+        earlier = self.previous["stages_by_name"][name]
+        record = StageRecord(name, STAGES[name], earlier["status"], float(earlier.get("seconds", 0.0)),
+                             list(earlier.get("files", [])), earlier.get("message", ""))
+        self._current = record
+        for file in record.files:
+            if not (self.folder / file).is_file():
+                raise InputError(f"file {file} of the earlier run is missing")
+        if name == "roughness":
+            profiles, surfaces = self._read_roughness()
+            self._set_roughness_results(profiles, surfaces)
+            self.inputs = list(self.previous.get("inputs", []))
+        if name == "geometry":
+            self._restore_geometry(self.previous["summaries"]["geometry"])
+        if name in RELOADED:
+            key, stem = RELOADED[name]
+            with xr.open_dataset(self.folder / "data" / f"{stem}.nc") as dataset:
+                self.results[key] = dataset.load()
+        if name in self.previous.get("summaries", {}):
+            self.summaries[name] = self.previous["summaries"][name]
+        self.figures.extend(FigureRecord(**f) for f in self.previous.get("figures", []) if f.get("stage") == name)
+        self.records[name] = record
+        return record
+
+    def _restore_geometry(self, summary):
+        """The model parameters of the geometry stage from its summary (the geometry used downstream)."""
+        used = summary.get("used_downstream", "parameters")
+        if used == "parameters":
+            return
+        values = {f: summary[used][f] for f in _GEOMETRY_FIELDS}
+        values["atomic_per_side"] = int(values["atomic_per_side"])
+        name = used[len("from the meshing surface "):]
+        self.model_params = self.params.updated(values, origin=f"derived from the scan '{name}' "
+                                                               "(memstribo nanoblock --from)")
+
+    def _forget(self, name: str) -> None:
+        """Before a resumed run reruns stage ``name``: remove the earlier attempt's files and traceback."""
+        earlier = (self.previous or {}).get("stages_by_name", {}).get(name)
+        for file in (earlier or {}).get("files", []):
+            path = self.folder / file
+            if path.is_file():
+                path.unlink()
+        error = self.folder / f"error_{name}.txt"
+        if error.is_file():
+            error.unlink()
 
     # writing helpers ---------------------------------------------------------------------------
     def _files(self, paths):
@@ -638,18 +759,7 @@ class RunChain:
     def roughness(self):
         """Default synthetic profile and measured files: statistics (ISO 4287) and figure."""
         from . import roughness
-        profiles = [roughness.default_profile(self.params)]
-        surfaces = [None]  # what the meshing cycle gets: None is the synthetic default, else the file's surface
-        for path in self.options.roughness_files:
-            from . import readers
-            surface = readers.read_topography(path)
-            if not isinstance(surface, roughness.Profile):
-                rows = surface.line_scans()
-                profile = rows[len(rows) // 2]
-            else:
-                profile = surface
-            profiles.append(profile)
-            surfaces.append(surface)
+        profiles, surfaces = self._read_roughness()
         statistics = [roughness.profile_statistics(p) for p in profiles]
         import xarray as xr
 
@@ -678,6 +788,27 @@ class RunChain:
                              f"The measured map '{surface.name}' ({surface.heights.shape[1]} x {surface.heights.shape[0]} "
                              "pixels): its scan lines become nanoblock rows of the meshing cycle when it is the meshing "
                              "surface.")
+        self._set_roughness_results(profiles, surfaces)
+        self.summaries["roughness"] = {p.name: s.to_dict() for p, s in zip(profiles, statistics)}
+
+    def _read_roughness(self):
+        """The default profile and the measured files: (profiles, surfaces); a map gives its middle scan line."""
+        from . import readers, roughness
+
+        profiles = [roughness.default_profile(self.params)]
+        surfaces = [None]  # what the meshing cycle gets: None is the synthetic default, else the file's surface
+        for path in self.options.roughness_files:
+            surface = readers.read_topography(path)
+            if not isinstance(surface, roughness.Profile):
+                rows = surface.line_scans()
+                profile = rows[len(rows) // 2]
+            else:
+                profile = surface
+            profiles.append(profile)
+            surfaces.append(surface)
+        return profiles, surfaces
+
+    def _set_roughness_results(self, profiles, surfaces):
         self.results["profiles"] = profiles
         choice = self.options.mesh_roughness
         index = 0 if choice == "synthetic" else 1 + int(choice)
@@ -689,7 +820,6 @@ class RunChain:
         self.results["mesh_profile_measured"] = index > 0
         for i, item in enumerate(self.inputs):
             item["meshing"] = i == index
-        self.summaries["roughness"] = {p.name: s.to_dict() for p, s in zip(profiles, statistics)}
 
     def geometry(self):
         """Nanoblock geometry from the parameters, and derived from each profile (with the rules used)."""
@@ -702,8 +832,7 @@ class RunChain:
             except MemstriboError as exc:
                 notes.append(f"geometry from '{profile.name}' not derived: {exc}")
         self._current.message = "; ".join(notes)
-        fields = ("atomic_width", "atomic_height", "adhesive_width", "adhesive_height", "atomic_pitch",
-                  "atomic_per_side", "bulk_height")
+        fields = _GEOMETRY_FIELDS
         summary = {label: {**{f: getattr(g, f) for f in fields}, "rules": dict(getattr(g, "rules", {}))}
                    for label, g in rows.items()}
         # the stages feed each other: a measured profile for the meshing cycle sets the nanoblock geometry
@@ -891,7 +1020,7 @@ class RunChain:
     def _tick(self, values, label):
         if not self.progress:
             return values
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
         return tqdm(values, desc=f"  {label}", leave=False, file=sys.stderr, unit="pt")
 
@@ -924,17 +1053,37 @@ class RunChain:
 
     def run(self) -> RunResult:
         """All stages in order; parameters, references, run.json and report.html after each."""
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
-        from .references import reset_used_references
+        from .references import REFERENCES, cites, reset_used_references
 
         start = time.perf_counter()
         reset_used_references()
-        self._write_text("parameters.toml", self.params.to_toml())
-        bar = tqdm(list(STAGES), desc="memstribo run", unit="stage", file=sys.stderr, disable=not self.progress)
         log = logging.getLogger("memstribo.run")
+        rerun: set[str] = set()
+        if self.previous is None:
+            self._write_text("parameters.toml", self.params.to_toml())
+        else:  # the kept stages' references stay in references.txt
+            earlier = [key for key in self.previous.get("references", []) if key in REFERENCES]
+            if earlier:
+                cites(*earlier)(lambda: None)()
+        bar = tqdm(list(STAGES), desc="memstribo run", unit="stage", file=sys.stderr, disable=not self.progress)
         for index, name in enumerate(bar, 1):
             bar.set_postfix_str(name)
+            if self._keep(name, rerun):
+                try:
+                    self._restore(name)
+                    self.kept.append(name)
+                    log.info("stage %d/%d %s: done in the earlier run, read back", index, len(STAGES), name)
+                    continue
+                except Exception as exc:  # anything missing or unreadable: compute the stage again
+                    log.warning("stage %d/%d %s: could not be read back (%s); running it again", index, len(STAGES),
+                                name, exc)
+                    self.records[name] = StageRecord(name, STAGES[name])
+                    self.figures = [f for f in self.figures if f.stage != name]
+            if self.previous is not None and name in self.options.stages:
+                rerun.add(name)
+                self._forget(name)
             log.info("stage %d/%d %s ...", index, len(STAGES), name)
             record = self.run_stage(name)
             log.info("stage %d/%d %s: %s in %.1f s%s", index, len(STAGES), name, record.status, record.seconds,
@@ -950,6 +1099,11 @@ class RunChain:
             log.info("validation table: done")
         return self._finish(time.perf_counter() - start, validation)
 
+    def _ordered_figures(self) -> list[FigureRecord]:
+        """The figures in stage order (a resumed run adds the rerun stages' figures after the kept ones)."""
+        order = {name: i for i, name in enumerate(STAGES)}
+        return sorted(self.figures, key=lambda f: order.get(f.stage, len(order)))
+
     def _write_text(self, name, text):
         atomic_write_text(self.folder / name, text)
 
@@ -957,15 +1111,16 @@ class RunChain:
         from .references import used_references
         from .report import write_report
 
-        result = RunResult(self.folder, self.params, self.options, list(self.records.values()), list(self.figures),
-                           dict(self.summaries), verdict(self.summaries), list(self.inputs), elapsed)
+        result = RunResult(self.folder, self.params, self.options, list(self.records.values()),
+                           self._ordered_figures(), dict(self.summaries), verdict(self.summaries), list(self.inputs),
+                           elapsed, list(self.kept))
         references = used_references()
         self._write_text("references.txt", "".join(f"[{key}] {text}\n" for key, text in references))
         self._write_text("run.json", dumps_json({
             "elapsed": elapsed, "options": to_jsonable(self.options.__dict__),
             "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
             "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
-            "references": [key for key, _ in references]}))
+            "references": [key for key, _ in references], "kept": list(self.kept)}))
         write_report(result, self.folder / "report.html", validation)
         return result
 

@@ -53,7 +53,18 @@ __all__ = [
     "hertz_line_contact",
     "tangential_force",
     "minimum_teeth_without_undercut",
+    "involute_function",
+    "tip_tooth_thickness",
+    "design_warnings",
+    "TIP_THICKNESS_MIN",
+    "CONTACT_RATIO_MIN",
 ]
+
+#: Tip tooth thickness below which a design is warned about, in modules (s_a < 0.25 m risks tip breakage;
+#: ISO 21771:2007 defines s_a, the quarter module is common design practice, e.g. Litvin & Fuentes 2004).
+TIP_THICKNESS_MIN = 0.25
+#: Transverse contact ratio below which a design is warned about (1.2: margin for tolerances and deflection).
+CONTACT_RATIO_MIN = 1.2
 
 
 # --------------------------------------------------------------------------------------------
@@ -98,6 +109,78 @@ def minimum_teeth_without_undercut(pressure_angle, addendum_coefficient=1.0):
         z_min = 2 h_a / sin^2(phi) [-] (17.1 for 20°).
     """
     return 2.0 * addendum_coefficient / math.sin(pressure_angle) ** 2
+
+
+def involute_function(angle):
+    """The involute function inv(alpha) = tan(alpha) - alpha [rad] (ISO 21771:2007; Litvin & Fuentes 2004, 10.3)."""
+    a = np.asarray(angle, dtype=float)
+    return np.tan(a) - a
+
+
+def tip_tooth_thickness(teeth, module, pressure_angle, addendum_coefficient=1.0, profile_shift=0.0):
+    """Transverse tooth thickness on the tip circle of an involute spur gear.
+
+    ISO 21771:2007 (tooth thickness on a circle of diameter d_y, here the tip circle d_a); see also
+    F. L. Litvin and A. Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., Cambridge University
+    Press, 2004, chapter 10 (tooth thickness on an arbitrary circle from the involute function).
+
+    Parameters
+    ----------
+    teeth : int
+        z [-].
+    module : float
+        m [m].
+    pressure_angle : float
+        alpha [rad] (on the pitch circle).
+    addendum_coefficient : float
+        h_a in modules [-]; the tip diameter is d_a = m z + 2 h_a m.
+    profile_shift : float
+        Profile shift coefficient x [-] (memstribo's pairs have x = 0).
+
+    Returns
+    -------
+    float
+        s_a = d_a (s/d + inv(alpha) - inv(alpha_a)) [m] with s = m (pi/2 + 2 x tan(alpha)) the pitch-circle
+        tooth thickness (pi m / 2 for x = 0), d = m z, cos(alpha_a) = d_b / d_a, d_b = d cos(alpha).
+        Zero or negative: a pointed tooth (its flanks meet below the tip circle). NaN when the tip circle
+        is not above the base circle (no involute there).
+    """
+    d = module * teeth
+    d_a = d + 2.0 * (addendum_coefficient + profile_shift) * module
+    d_b = d * math.cos(pressure_angle)
+    if d_a <= d_b:
+        return float("nan")
+    s = module * (math.pi / 2.0 + 2.0 * profile_shift * math.tan(pressure_angle))
+    alpha_a = math.acos(d_b / d_a)
+    return float(d_a * (s / d + involute_function(pressure_angle) - involute_function(alpha_a)))
+
+
+def design_warnings(pair: "GearPair") -> list[str]:
+    """Design checks that a meshing pair passes but that signal a marginal design (ISO 21771:2007 terms).
+
+    * tip tooth thickness s_a below :data:`TIP_THICKNESS_MIN` m (0.25 m): the tip may break or wear off;
+    * transverse contact ratio below :data:`CONTACT_RATIO_MIN` (1.2): little overlap of tooth pairs,
+      so tolerances or tooth deflection may interrupt the mesh.
+
+    The centre distance is not checked: memstribo's pairs always sit at the standard (reference) centre
+    distance a = m (z1 + z2) / 2 (no parameter sets another), so it cannot differ from it.
+    References: ISO 21771:2007; F. L. Litvin and A. Fuentes, *Gear Geometry and Applied Theory*, 2004.
+
+    Returns
+    -------
+    list of str
+        One sentence per finding (empty for a sound design, e.g. the thesis pair).
+    """
+    found = []
+    for name, thickness in zip(("pinion", "gear"), pair.tip_thickness):
+        if thickness < TIP_THICKNESS_MIN * pair.module:
+            found.append(f"the {name}'s tooth thickness at the tip is {thickness / pair.module:.3f} x module "
+                         f"({thickness * 1e9:.4g} nm), below {TIP_THICKNESS_MIN:g} x module: the tip may break "
+                         "(ISO 21771 s_a; lower the addendum or the pressure angle)")
+    if pair.contact_ratio < CONTACT_RATIO_MIN:
+        found.append(f"contact ratio {pair.contact_ratio:.3f} is below {CONTACT_RATIO_MIN:g}: little overlap "
+                     "between tooth pairs, so tolerances or tooth deflection may interrupt the mesh")
+    return found
 
 
 @cites("thesis")
@@ -406,7 +489,9 @@ class GearPair:
     InputError
         On construction, if the pair cannot mesh: undercut pinion or gear, interference
         (the path of contact reaches beyond a base-circle tangency point), a tip radius not
-        above the base radius, or a contact ratio below 1.
+        above the base radius, pointed teeth (tooth thickness at the tip s_a <= 0, ISO 21771:2007),
+        or a contact ratio below 1. A pair that meshes but is marginal (s_a < 0.25 m, contact ratio
+        below 1.2) is accepted; :attr:`warnings` says why (:func:`design_warnings`).
     """
 
     teeth_pinion: int
@@ -430,6 +515,13 @@ class GearPair:
                 raise InputError(f"the {name}'s tip radius ({tip * 1e6:.4g} um) is not above its base radius "
                                  f"({base * 1e6:.4g} um): no involute flank. Raise the addendum or lower the "
                                  f"pressure angle.")
+        for name, thickness in zip(("pinion", "gear"), self.tip_thickness):
+            if not thickness > 0.0:
+                raise InputError(f"the {name}'s teeth are pointed: the tooth thickness at the tip (ISO 21771 s_a) "
+                                 f"is {thickness / self.module:.3f} x module, not above 0 (the flanks meet below the "
+                                 f"tip circle). "
+                                 f"Lower the addendum ({self.addendum_coefficient:g} x module) or the pressure angle "
+                                 f"({math.degrees(self.pressure_angle):.4g}°).")
         r1, r2 = self.base_radii * math.tan(self.pressure_angle)
         if -self.first_contact > r1 or self.last_contact > r2:
             raise InputError(f"interference: the path of contact ({self.first_contact * 1e6:.4g} um to "
@@ -477,6 +569,23 @@ class GearPair:
     def tip_radii(self) -> np.ndarray:
         """[r_t1, r_t2] = r + h_a m [m]."""
         return self.pitch_radii + self.addendum_coefficient * self.module
+
+    @property
+    def tip_thickness(self) -> np.ndarray:
+        """[s_a1, s_a2]: transverse tooth thickness on the tip circle [m] (ISO 21771:2007; Litvin & Fuentes
+        2004), :func:`tip_tooth_thickness` with zero profile shift."""
+        return np.array([tip_tooth_thickness(z, self.module, self.pressure_angle, self.addendum_coefficient)
+                         for z in (self.teeth_pinion, self.teeth_gear)])
+
+    @property
+    def centre_distance(self) -> float:
+        """a = m (z1 + z2) / 2 [m]: the standard (reference) centre distance, at which memstribo's pairs run."""
+        return self.module * (self.teeth_pinion + self.teeth_gear) / 2.0
+
+    @property
+    def warnings(self) -> list[str]:
+        """Marginal-design findings of :func:`design_warnings` (empty for a sound design)."""
+        return design_warnings(self)
 
     @property
     def base_pitch(self) -> float:
@@ -585,7 +694,8 @@ def gear_summary(params) -> tuple[dict, dict]:
     values : dict
         SI values: radii as [pinion, gear] pairs [m], pressure angle [rad], contact ratio [-],
         Hertz half-width [m] and peak pressure [Pa] at the pitch point under ``normal_load``,
-        tangential force F_t = T / r_1 [N] (4-27).
+        tangential force F_t = T / r_1 [N] (4-27), tooth thickness at the tip s_a as [pinion, gear] [m] and the
+        standard centre distance [m] (ISO 21771:2007), ``design_warnings`` (:func:`design_warnings`, a list).
     units : dict
         SI unit of each key.
     """
@@ -600,6 +710,8 @@ def gear_summary(params) -> tuple[dict, dict]:
         "pitch_radii": pair.pitch_radii.tolist(),
         "base_radii": pair.base_radii.tolist(),
         "tip_radii": pair.tip_radii.tolist(),
+        "tip_thickness": pair.tip_thickness.tolist(),
+        "centre_distance": pair.centre_distance,
         "base_pitch": pair.base_pitch,
         "first_contact": pair.first_contact,
         "last_contact": pair.last_contact,
@@ -611,11 +723,13 @@ def gear_summary(params) -> tuple[dict, dict]:
         "hertz_half_width": float(hertz.half_width),
         "hertz_peak_pressure": float(hertz.peak_pressure),
         "tangential_force": tangential_force(params["drive_torque"], pair.pitch_radii[0]),
+        "design_warnings": pair.warnings,
     }
     units = {"module": "m", "pressure_angle": "rad", "pitch_radii": "m", "base_radii": "m", "tip_radii": "m",
-             "base_pitch": "m", "first_contact": "m", "last_contact": "m", "path_of_contact": "m",
+             "tip_thickness": "m", "centre_distance": "m", "base_pitch": "m", "first_contact": "m", "last_contact": "m", "path_of_contact": "m",
              "contact_ratio": "", "single_tooth_zone": "m", "effective_radius_pitch": "m", "contact_modulus": "Pa",
-             "hertz_half_width": "m", "hertz_peak_pressure": "Pa", "tangential_force": "N"}
+             "hertz_half_width": "m", "hertz_peak_pressure": "Pa", "tangential_force": "N",
+             "design_warnings": ""}
     return values, units
 
 

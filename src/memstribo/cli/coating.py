@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .common import CommandResult, format_value
+from .common import CommandResult, add_progress_argument, format_value, progress_enabled
 
 NAME = "coating"
 HELP = "COF, friction force and stiction margin of SAM-coated teeth for worn fractions Omega"
@@ -25,7 +25,7 @@ def register(subparsers, parents):
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and figures (COF vs Omega, "
                                                      "friction vs tangential force) to DIR; with --calibrate: the "
                                                      "config FILE (TOML) to write")
-    parser.add_argument("--progress", action="store_true", help="show a progress bar on stderr (shown anyway when stderr is a terminal)")
+    add_progress_argument(parser)
     parser.add_argument("--calibrate", nargs="?", const=0.185, type=float, metavar="COF",
                         help="instead of a sweep: scale the coating's U_vdW so that the fully coated pair "
                              "(Omega = 0) has this mean COF (default 0.185, thesis 5.5.3) and print the calibration")
@@ -48,8 +48,6 @@ def parse_wear_list(text) -> list[float]:
 
 
 def run(args, params):
-    import sys
-
     from ..coating import SWEEP_VARIABLES, get_coating, wear_sweep
     from ..errors import InputError
 
@@ -62,7 +60,7 @@ def run(args, params):
     wears = parse_wear_list(params["coating_wear"] if args.wear is None else args.wear)
     if args.steps is not None and args.steps < 2:
         raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
-    sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=args.progress or sys.stderr.isatty())
+    sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=progress_enabled(args))
     units = {key: unit for key, (unit, _) in SWEEP_VARIABLES.items()}
     points = []
     for i, w in enumerate(wears):

@@ -7,7 +7,43 @@ from typing import Any
 
 from ..output import format_quantity, format_value
 
-__all__ = ["CommandResult", "format_quantity", "format_value"]
+__all__ = ["CommandResult", "format_quantity", "format_value", "add_progress_argument", "progress_enabled",
+           "PROGRESS_CHOICES"]
+
+#: The values of every long command's ``--progress`` option.
+PROGRESS_CHOICES = ("auto", "on", "off")
+
+
+def add_progress_argument(parser) -> None:
+    """Add the shared ``--progress auto|on|off`` option to a subcommand's parser.
+
+    ``auto`` (the default) shows the progress bar when stderr is a terminal; ``--progress`` without a value
+    means ``on`` (the flag's meaning before it took a value).
+    """
+    parser.add_argument("--progress", nargs="?", const="on", default="auto", choices=PROGRESS_CHOICES,
+                        metavar="auto|on|off",
+                        help="progress bar on stderr: auto (default: when stderr is a terminal), on, off; "
+                             "--progress alone means on")
+
+
+def progress_enabled(args, stream=None) -> bool:
+    """Whether to show a progress bar: ``--progress on``, or ``auto`` and ``stream`` (stderr) is a terminal."""
+    import sys
+
+    choice = getattr(args, "progress", "auto")
+    if choice is True:  # a namespace built by hand with the old store_true flag
+        choice = "on"
+    if choice in (None, False):
+        choice = "auto" if choice is None else "off"
+    if choice == "on":
+        return True
+    if choice == "off":
+        return False
+    stream = sys.stderr if stream is None else stream
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError):  # a closed or replaced stream
+        return False
 
 
 @dataclass

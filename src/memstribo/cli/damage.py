@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from .common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "damage"
 HELP = "damage accumulation in the coating (5-10): omega/c1 per cycle, relative lives, cycles to stiction"
@@ -29,8 +29,7 @@ def register(subparsers, parents):
                         help="normal load of the meshing cycles: 'torque' (default) or 'thesis' (normal_load, 25 uN)")
     parser.add_argument("--steps", type=int, default=None, help="steps of each meshing-cycle simulation")
     parser.add_argument("--out", metavar="DIR", help="write datasets (NetCDF + CSV) and figures to DIR")
-    parser.add_argument("--progress", action="store_true",
-                        help="show a progress bar on stderr (shown anyway when stderr is a terminal)")
+    add_progress_argument(parser)
     parser.set_defaults(handler=run)
 
 
@@ -97,10 +96,8 @@ def run(args, params):
                      "per cycle, full unloading between peaks")
     sweep = None
     if c1_known:
-        import sys
-
         sweep = wear_sweep(params, coating, np.linspace(0.0, 1.0, args.wear_points), steps=args.steps,
-                           progress=args.progress or sys.stderr.isatty())
+                           progress=progress_enabled(args))
     outcome = run_damage(params, mesh_dataset, loads=loads, wear_sweep=sweep, cycles_observed=args.observed_life,
                          figures=bool(args.out))
     s = outcome.summary

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import sys
 
 import argparse
 
-from .common import CommandResult
+from .common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "mesh"
 HELP = "meshing-cycle simulation: friction, adhesion, COF and its split, stiction margin (thesis 4.6-4.9)"
@@ -61,8 +60,7 @@ def add_common_arguments(parser):
                              "(normal_load as given, 25 uN); sets the parameter load_case")
     parser.add_argument("--wear", type=float, default=1.0, metavar="OMEGA",
                         help="worn fraction of the gear's coating, 0..1 (with --coating; default 1 = bare)")
-    parser.add_argument("--progress", action="store_true", help="progress bar on stderr (default: when stderr is "
-                                                                  "a terminal)")
+    add_progress_argument(parser)
 
 
 def simulation_options(args, params=None):
@@ -78,7 +76,7 @@ def simulation_options(args, params=None):
         raise InputError("--wear needs --coating (bare silicon has no coating to wear).")
     if args.steps is not None and args.steps < 3:
         raise InputError(f"--steps must be at least 3, got {args.steps}.")
-    progress = bool(args.progress or sys.stderr.isatty())
+    progress = progress_enabled(args)
     return dict(steps=args.steps, coating=coating, wear=args.wear, progress=progress)
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import CommandResult
+from .common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "run"
 HELP = "the main job: roughness -> nanoblocks -> meshing cycle -> sweeps -> coating -> wear -> damage, with report.html"
@@ -43,14 +43,17 @@ def register(subparsers, parents):
                         help="positions along the path of contact per meshing simulation (overrides [run] steps)")
     parser.add_argument("--roughness", action="append", default=[], metavar="FILE",
                         help="a measured profile or AFM file to analyse as well (repeatable)")
-    parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
-                        help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    add_progress_argument(parser)
     parser.add_argument("--load-case", choices=("torque", "thesis"),
                         help="normal load of the meshing stages: 'torque' (F_t / cos alpha, default) or 'thesis' "
                              "(normal_load, 25 uN); the load sweep always uses the thesis case")
     parser.add_argument("--overwrite", action="store_true",
                         help="write into DIR although it holds files (stale files of an earlier run are removed "
                              "first); without it a non-empty DIR is refused")
+    parser.add_argument("--resume", action="store_true",
+                        help="continue the run in DIR (killed, or with failed stages): stages run.json records as "
+                             "done are read back, not recomputed; failed and missing stages (and those after them "
+                             "that use them) run again; give the same config and options as that run")
     loudness = parser.add_mutually_exclusive_group()
     loudness.add_argument("--quiet", action="store_true", help="no log lines on stderr (errors only)")
     loudness.add_argument("--verbose", action="store_true", help="more log lines on stderr (each stage's files)")
@@ -86,20 +89,33 @@ def run(args, params):
     if args.roughness:
         extra = RunOptions.from_table({"roughness_files": args.roughness}, Path.cwd()).roughness_files
         options = replace(options, roughness_files=options.roughness_files + extra)
-    progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
-    _prepare_folder(Path(args.out), args.overwrite)
+    progress = progress_enabled(args)
+    if args.resume:
+        if args.overwrite:
+            raise InputError("--resume and --overwrite together: --resume continues the run in --out, --overwrite "
+                             "starts it again from nothing; give one of them.")
+        if not (Path(args.out) / "run.json").is_file():
+            raise InputError(f"--resume: {args.out} holds no run.json (no run of memstribo to continue); run without "
+                             "--resume.")
+    else:
+        _prepare_folder(Path(args.out), args.overwrite)
+    chain = RunChain(params, args.out, options, progress=progress, resume=args.resume)
     _configure_logging(args, progress)
-    result = RunChain(params, args.out, options, progress=progress).run()
+    result = chain.run()
     failed = {s.name: s.message for s in result.stages if s.status == "failed"
               or (s.status == "skipped" and s.name in options.stages)}
     values = {"folder": str(result.folder), "report": str(result.folder / "report.html"),
               "elapsed": result.elapsed, "complete": result.ok and not failed,
               "stages": {s.name: s.status for s in result.stages}, "failed_stages": failed, **result.verdict}
+    if args.resume:
+        values["kept_stages"] = list(result.kept)
     units = {"elapsed": "s", "tangential_force": "N", "bare_resisting_force_max": "N", "bare_stiction_margin": "N",
              "coated_resisting_force_max": "N", "coated_stiction_margin": "N", "bare_stiction_margin_median": "N",
              "bare_stiction_margin_p05": "N", "bare_stiction_margin_p95": "N"}
     notes = [f"  {s.name}: {s.status}{' - ' + s.message if s.message else ''}" for s in result.stages
              if s.status != "done" or s.message]
+    if args.resume:
+        notes.append(f"  resumed: kept {', '.join(result.kept) or 'no stage'} from the earlier run; ran the others again")
     notes.append(f"  open {result.folder / 'report.html'} in a browser")
     if failed:
         notes.append(f"  {len(failed)} requested stage(s) did not finish: exit status 1")

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-import sys
 
-from .common import CommandResult
+from .common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "study"
 HELP = "run a parameter study (grid or list of points) on Dask; resumable after an interruption"
@@ -38,8 +37,7 @@ def register(subparsers, parents):
     parser.add_argument("--dry-run", action="store_true",
                         help="check the spec and every point (keys, ranges, files) and print the number of points; "
                              "run nothing")
-    parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
-                        help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    add_progress_argument(parser)
     parser.set_defaults(handler=run)
 
 
@@ -58,7 +56,7 @@ def run(args, params):
                                      "points": len(points)},
                              title=f"study '{spec.name}': spec and points valid (dry run, nothing computed)")
     out = Path(args.out) if args.out else Path(f"memstribo-study-{Path(args.spec).stem}")
-    progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
+    progress = progress_enabled(args)
     result = run_study(spec, out, params, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
                        progress=progress)
     values = {
