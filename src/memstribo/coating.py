@@ -251,7 +251,7 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
     if progress:
         import sys
 
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
         states = tqdm(states, total=omega.size, desc="wear states", unit="cycle", file=sys.stderr, leave=False)
     for i, w in states:  # one meshing-cycle simulation per wear state

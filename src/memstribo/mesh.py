@@ -512,7 +512,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
 
     pbar = None
     if progress:
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
         pbar = tqdm(total=n_steps * n_rows_solved, desc="meshing cycle", unit="step", leave=False)
 

@@ -382,7 +382,7 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
                                "contacts")}
     bar = None
     if progress:
-        from tqdm import tqdm
+        from tqdm.auto import tqdm
 
         bar = tqdm(total=n_steps, desc=f"slide {mode}", unit="step", unit_scale=True, leave=False)
     full_chem = friction.full_overlap_bond_count(w_at, d_chem)

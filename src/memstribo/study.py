@@ -667,7 +667,7 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
 
 def _compute(spec, function, todo, folder, total, already, scheduler, workers, progress) -> int:
     from distributed import as_completed
-    from tqdm import tqdm
+    from tqdm.auto import tqdm
 
     client, cluster = _connect(scheduler, workers)
     bar = tqdm(total=total, initial=already, unit="point", desc=spec.name, file=sys.stderr,

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import CommandResult
+from .common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "slide"
 HELP = "friction of nanoblocks sliding on a flat or rough surface (single, fixed-gap, fixed-load; 3.5 estimate)"
@@ -34,7 +34,7 @@ def register(subparsers, parents):
     parser.add_argument("--step", metavar="DX", help="sliding step, e.g. '0.1 nm' (default: sliding_step, "
                                                      "unset: bond_length)")
     parser.add_argument("--out", metavar="DIR", help="write the time series (NetCDF + CSV) and figures here")
-    parser.add_argument("--progress", action="store_true", help="show a progress bar on stderr")
+    add_progress_argument(parser)
     parser.set_defaults(handler=run)
 
 
@@ -83,7 +83,7 @@ def run(args, params):
         from ..readers import read_topography
 
         profile = read_topography(args.profile)
-    progress = args.progress or (sys.stderr.isatty() and not args.json)
+    progress = progress_enabled(args)
     dataset = sliding.slide(args.model, params, profile, gap=gap, load=load, distance=distance, step=step,
                             progress=progress)
     summary = sliding.summarize(dataset)
