@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 
 from .common import CommandResult, add_progress_argument, progress_enabled
 
