@@ -570,9 +570,23 @@ _FIGURES = (
 )
 
 
-def _label(dataset, key: str) -> str:
+_PREFIXES = ((1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "u"), (1e-3, "m"), (1.0, ""))
+
+
+def _display(dataset, key: str) -> tuple[float, str]:
+    """(factor from SI, axis label): ``face_width`` in um, ``drive_torque`` in nN*m, ..."""
     unit = dataset[key].attrs.get("units", "")
-    return f"{key.replace('_', ' ')} [{unit}]" if unit and unit != "1" else key.replace("_", " ")
+    name = key.replace("_", " ")
+    if not unit or unit == "1":
+        return 1.0, name
+    values = np.abs(np.asarray(dataset[key].values, dtype=float))
+    largest = float(values.max()) if values.size else 1.0
+    factor, prefix = 1.0, ""
+    if unit in ("m", "N", "N*m", "Pa", "J") and 0 < largest < 1:
+        for scale, symbol in _PREFIXES:
+            if largest >= scale:
+                factor, prefix = scale, symbol
+    return 1.0 / factor, f"{name} [{prefix}{unit}]"
 
 
 def map_figures(dataset, folder: str | Path, plot=(), *, stem_prefix: str = "", max_panels: int = 6):
@@ -648,17 +662,19 @@ def _coord_text(dataset, dim: str, index: int) -> str:
 
 
 def _draw_panel(ax, dataset, panel, plot, key):
-    x = dataset[plot[0]].values.astype(float)
+    x_factor, x_label = _display(dataset, plot[0])
+    x = dataset[plot[0]].values.astype(float) * x_factor
     if len(plot) == 1:
         ax.plot(x, panel.values, marker="o")
         if key == "stiction_probability":
             ax.axhline(0.5, color="k", linestyle="--", linewidth=0.8, label="50 %")
             ax.set_ylim(-0.05, 1.05)
-        ax.set_xlabel(_label(dataset, plot[0]))
+        ax.set_xlabel(x_label)
         ax.set_ylabel(key.replace("_", " "))
         _scale(ax.set_xscale, x)
         return None
-    y = dataset[plot[1]].values.astype(float)
+    y_factor, y_label = _display(dataset, plot[1])
+    y = dataset[plot[1]].values.astype(float) * y_factor
     z = np.ma.masked_invalid(panel.values.T)  # rows: y, columns: x
     if key == "stiction_probability":
         levels = np.linspace(0.0, 1.0, 11)
@@ -675,8 +691,8 @@ def _draw_panel(ax, dataset, panel, plot, key):
             levels = np.linspace(centre - 0.5 * (abs(centre) + 1e-12), centre + 0.5 * (abs(centre) + 1e-12), 3)
         mappable = ax.contourf(x, y, z, levels=levels, cmap="viridis")
     ax.plot(*np.meshgrid(x, y), "k.", markersize=2)
-    ax.set_xlabel(_label(dataset, plot[0]))
-    ax.set_ylabel(_label(dataset, plot[1]))
+    ax.set_xlabel(x_label)
+    ax.set_ylabel(y_label)
     _scale(ax.set_xscale, x)
     _scale(ax.set_yscale, y)
     return mappable
@@ -684,5 +700,5 @@ def _draw_panel(ax, dataset, panel, plot, key):
 
 def _scale(setter, values) -> None:
     values = np.asarray(values, dtype=float)
-    if values.size >= 2 and np.all(values > 0) and values.max() / values.min() >= 10:
+    if values.size >= 2 and np.all(values > 0) and values.max() / values.min() >= 100:
         setter("log")
