@@ -244,3 +244,27 @@ def test_example_runs_at_tiny_size(tmp_path):
     assert run.returncode == 0, run.stderr[-2000:]
     assert (tmp_path / "figures" / "design_map_stiction.png").is_file()
     assert time.perf_counter() - started < 120
+
+
+# --- memstribo study: a grid also comes back with one dimension per swept key --------------------------------
+
+def test_study_grid_has_one_dimension_per_key(tmp_path):
+    import xarray as xr
+
+    from memstribo.study import run_study, study_spec
+
+    spec = study_spec({"function": "gear", "grid": {"module": ["3 um", "4 um", "5 um"], "face_width": ["2 um", "3 um"]}})
+    assert spec.grid == ("module", "face_width")
+    result = run_study(spec, tmp_path / "out", workers=1)
+    assert result.n_failed == 0, result.errors
+    with xr.open_dataset(tmp_path / "out" / "results_grid.nc") as grid:
+        assert grid["module"].values == pytest.approx([3e-6, 4e-6, 5e-6])
+        assert grid["result_module"].values == pytest.approx(np.repeat([[3e-6], [4e-6], [5e-6]], 2, axis=1))
+        key = "contact_ratio"
+        assert grid[key].dims == ("module", "face_width")
+        flat = result.dataset[key].values
+        np.testing.assert_array_equal(grid[key].values.ravel(), flat)
+        assert float(grid[key].sel(module=4e-6, face_width=3e-6)) == flat[3]
+    assert (tmp_path / "out" / "results.nc").is_file()  # the point table stays as it was
+    listed = study_spec({"function": "gear", "grid": {"module": ["3 um"]}, "points": [{"module": "4 um"}]})
+    assert listed.grid == ()
