@@ -636,6 +636,7 @@ def map_figures(dataset, folder: str | Path, plot=(), *, stem_prefix: str = "", 
             if not finite.any():
                 continue
             values = np.log10(values.where(finite))
+        levels = _levels(values.values)
         n = len(combos)
         fig, axes = new_figure(1, n, figsize=(4.2 * n + 0.8, 3.6), squeeze=False, constrained_layout=True)
         mappable = None
@@ -643,10 +644,10 @@ def map_figures(dataset, folder: str | Path, plot=(), *, stem_prefix: str = "", 
             selection = dict(zip(others, combo))
             panel = values.isel(selection).transpose(*plot)
             caption = ", ".join(f"{d} = {_coord_text(dataset, d, i)}" for d, i in selection.items())
-            mappable = _draw_panel(ax, dataset, panel, plot, key)
+            mappable = _draw_panel(ax, dataset, panel, plot, key, levels)
             ax.set_title(caption or dataset.attrs.get("title", ""), fontsize=9)
         if mappable is not None and len(plot) == 2:
-            bar = fig.colorbar(mappable, ax=list(axes[0]))
+            bar = fig.colorbar(mappable, ax=list(axes[0]), format="%.4g")
             bar.set_label(title)
         fig.suptitle(f"{dataset.attrs.get('title', 'design map')}: {title}", fontsize=10)
         written += save_figure(fig, folder, f"{stem_prefix}{stem}")
@@ -661,7 +662,18 @@ def _coord_text(dataset, dim: str, index: int) -> str:
     return str(value)
 
 
-def _draw_panel(ax, dataset, panel, plot, key):
+def _levels(values) -> np.ndarray:
+    """11 contour levels over every finite value of ``values`` (the same for all panels)."""
+    finite = np.asarray(values, dtype=float)
+    finite = finite[np.isfinite(finite)]
+    if finite.size and finite.min() < finite.max():
+        return np.linspace(finite.min(), finite.max(), 11)
+    centre = float(finite[0]) if finite.size else 0.0
+    half = 0.5 * (abs(centre) + 1e-12)
+    return np.linspace(centre - half, centre + half, 3)
+
+
+def _draw_panel(ax, dataset, panel, plot, key, levels=None):
     x_factor, x_label = _display(dataset, plot[0])
     x = dataset[plot[0]].values.astype(float) * x_factor
     if len(plot) == 1:
@@ -683,12 +695,6 @@ def _draw_panel(ax, dataset, panel, plot, key):
             lines = ax.contour(x, y, z, levels=[0.5], colors="k", linewidths=1.5)
             ax.clabel(lines, fmt={0.5: "50 %"}, fontsize=8)
     else:
-        finite = z.compressed()
-        if finite.size and finite.min() < finite.max():
-            levels = np.linspace(finite.min(), finite.max(), 11)
-        else:
-            centre = float(finite[0]) if finite.size else 0.0
-            levels = np.linspace(centre - 0.5 * (abs(centre) + 1e-12), centre + 0.5 * (abs(centre) + 1e-12), 3)
         mappable = ax.contourf(x, y, z, levels=levels, cmap="viridis")
     ax.plot(*np.meshgrid(x, y), "k.", markersize=2)
     ax.set_xlabel(x_label)
