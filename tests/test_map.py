@@ -268,3 +268,30 @@ def test_study_grid_has_one_dimension_per_key(tmp_path):
     assert (tmp_path / "out" / "results.nc").is_file()  # the point table stays as it was
     listed = study_spec({"function": "gear", "grid": {"module": ["3 um"]}, "points": [{"module": "4 um"}]})
     assert listed.grid == ()
+
+
+def test_kill_9_then_resume_loses_no_finished_point(tmp_path):
+    """A real `memstribo map` process group is killed with SIGKILL part-way, then resumed."""
+    import signal
+
+    spec = write(tmp_path / "s.toml", TINY.replace('face_width = {start = "1 um", stop = "3 um", num = 2}',
+                                                   'face_width = ["1 um", "2 um", "3 um", "4 um"]'))
+    out = tmp_path / "out"
+    command = [sys.executable, "-m", "memstribo.cli.main", "map", str(spec), "--out", str(out), "--workers", "1",
+               "--progress", "off"]
+    process = subprocess.Popen(command, start_new_session=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    points = out / "points"
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and len(list(points.glob("*.json"))) < 2:
+        time.sleep(0.02)
+    os.killpg(process.pid, signal.SIGKILL)
+    process.wait(timeout=30)
+    before = {p.name: p.read_text() for p in points.glob("*.json")}
+    assert 2 <= len(before) < 8, "the map should have been killed part-way"
+    assert not (out / "map.nc").exists()
+    resumed = subprocess.run(command + ["--resume", "--json"], capture_output=True, text=True, timeout=120)
+    assert resumed.returncode == 0, resumed.stderr
+    summary = json.loads(resumed.stdout)
+    assert (summary["points"], summary["reused"], summary["computed"]) == (8, len(before), 8 - len(before))
+    after = {p.name: p.read_text() for p in points.glob("*.json")}
+    assert len(after) == 8 and all(after[name] == text for name, text in before.items())
