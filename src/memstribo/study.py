@@ -18,7 +18,9 @@ Every finished point is written at once to ``OUT/points/<id>.json`` (temporary f
 the study. After an interruption, even ``kill -9``, rerunning with ``resume=True`` computes
 only the points that have no file yet, and runs the failed points again: no finished point
 is lost and none is computed twice. At the end
-``OUT/results.nc`` and ``OUT/results.csv`` gather all points.
+``OUT/results.nc`` and ``OUT/results.csv`` gather all points (dimension ``point``); a study
+that is a grid only also gets ``OUT/results_grid.nc``/``.csv`` with one dimension per swept
+key (:func:`grid_dataset`).
 
 Spec file (TOML)::
 
@@ -64,7 +66,7 @@ from .units import printable
 
 __all__ = ["StudySpec", "StudyResult", "STUDY_KEYS", "POINT_FUNCTIONS", "MAX_STUDY_POINTS", "load_study_spec",
            "study_spec", "prepare_points", "run_study", "evaluate_point", "mesh_point", "gear_point", "slide_point",
-           "register_point_function", "resolve_function", "function_name", "study_dataset"]
+           "register_point_function", "resolve_function", "function_name", "study_dataset", "grid_dataset"]
 
 #: Keys of a point that are not model parameters, with their unit and meaning.
 STUDY_KEYS: dict[str, tuple[str, str]] = {
@@ -103,6 +105,10 @@ class StudySpec:
         Base parameter overrides applied to every point before its own.
     source : str
         Where the spec comes from (file name or "python").
+    grid : tuple of str
+        The keys of the grid axes, in grid order, when the points are a grid only (no listed
+        points); the results then also come back with one dimension per axis
+        (``results_grid.nc``, :func:`grid_dataset`).
     """
 
     name: str
@@ -110,6 +116,7 @@ class StudySpec:
     points: tuple[dict[str, Any], ...]
     parameters: dict[str, Any] = field(default_factory=dict)
     source: str = "python"
+    grid: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -266,8 +273,9 @@ def study_spec(study: Mapping[str, Any], parameters: Mapping[str, Any] | None = 
                 if ":" in function or "." in function else "")
         raise InputError(f"{where}: unknown point function '{printable(function, 60)}'; use one of "
                          f"{sorted(POINT_FUNCTIONS)}.{hint}{code}")
+    grid_keys = tuple(str(key) for key, _ in axes) if axes and not listed else ()
     return StudySpec(name=name, function=function, points=tuple(points),
-                     parameters=dict(parameters or {}), source=source)
+                     parameters=dict(parameters or {}), source=source, grid=grid_keys)
 
 
 def load_study_spec(path: str | Path) -> StudySpec:
@@ -660,6 +668,11 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     from .output import write_dataset
 
     write_dataset(dataset, folder, "results")
+    if spec.grid:
+        try:
+            write_dataset(grid_dataset(dataset, spec), folder, "results_grid")
+        except InputError:
+            pass  # an axis repeats a value: the results stay over dimension 'point' only
     errors = {r["id"]: r["error"] for r in ordered if r.get("error")}
     return StudyResult(folder, len(points), n_computed, len(done), len(errors), time.perf_counter() - start,
                        dataset, errors, n_retried)
@@ -742,6 +755,41 @@ def study_dataset(records: list[dict], spec: StudySpec | None = None, points: li
     if spec is not None:
         dataset.attrs["point_function"] = function_name(spec.function)
     return dataset
+
+
+def grid_dataset(dataset, spec: StudySpec):
+    """The results of a grid study with one dimension per swept key instead of ``point``.
+
+    ``dataset`` is :func:`study_dataset` of the study's points (in grid order, last axis
+    fastest); the axes become coordinates (SI, from ``input_<key>``) and every other variable
+    is reshaped onto them (a result named like an axis becomes ``result_<name>``).
+
+    Raises
+    ------
+    InputError
+        ``spec`` is not a pure grid (it lists points too).
+    """
+    import xarray as xr
+
+    if not spec.grid:
+        raise InputError("the study is not a pure grid (it lists points): its results have dimension 'point' only.")
+    axes = list(spec.grid)
+    values = {key: list(dict.fromkeys(dataset[f"input_{key}"].values.tolist())) for key in axes}
+    shape = tuple(len(values[key]) for key in axes)
+    if int(np.prod(shape)) != dataset.sizes["point"]:
+        raise InputError("the study's grid axes do not match its points (repeated values on an axis?).")
+    coords = {key: xr.Variable(key, np.asarray(values[key]), dict(dataset[f"input_{key}"].attrs)) for key in axes}
+    data = {}
+    for name, variable in dataset.data_vars.items():
+        if name in {f"input_{key}" for key in axes}:
+            continue
+        target = f"result_{name}" if name in axes else name  # a result named like an axis (gear: module)
+        data[target] = xr.Variable(tuple(axes), np.asarray(variable.values).reshape(shape), dict(variable.attrs))
+    data["point_id"] = xr.Variable(tuple(axes), np.asarray(dataset["point_id"].values).reshape(shape),
+                                   {"units": "", "long_name": "id of the point's file in points/"})
+    grid = xr.Dataset(data, coords=coords)
+    grid.attrs.update(dataset.attrs)
+    return grid
 
 
 def _effective_input(key: str, point) -> Any:

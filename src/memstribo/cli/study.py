@@ -15,7 +15,8 @@ of points over model parameters and coating, wear, roughness, seed, steps) throu
 dask.distributed. Each finished point is written at once to OUT/points/; after an
 interruption (even kill -9) rerun with --resume: no point is lost and none is computed
 twice, and the points that failed run again. Results go to OUT/results.nc and
-OUT/results.csv. The spec names one of memstribo's point functions (mesh, gear, slide);
+OUT/results.csv (dimension point); a grid-only study also writes OUT/results_grid.nc/.csv
+with one dimension per swept key. The spec names one of memstribo's point functions (mesh, gear, slide);
 --dry-run checks the spec and every point without running anything. See docs/studies.md.
 """
 
@@ -72,6 +73,8 @@ def run(args, params):
         "results_netcdf": str(result.folder / "results.nc"),
         "results_csv": str(result.folder / "results.csv"),
     }
+    if (result.folder / "results_grid.nc").is_file():
+        values["results_grid_netcdf"] = str(result.folder / "results_grid.nc")
     units = {"elapsed": "s"}
     notes = []
     if result.n_retried:

@@ -267,6 +267,7 @@ CONFIG_TABLES = {
     "parameters": "parameter overrides",
     "run": "options of 'memstribo run'",
     "study": "a study for 'memstribo study'",
+    "map": "a design map for 'memstribo map'",
 }
 
 #: keys of a table-form parameter (``[parameters.normal_load]``), as written by Parameters.to_toml
