@@ -299,3 +299,16 @@ def test_progress_bar_shows_points_rate_and_time_left(params, tmp_path, capsys):
     run_study(spec, tmp_path / "out", params, workers=1, progress=True)
     err = capsys.readouterr().err
     assert "bar: 100%" in err and "3/3" in err and "point/s" in err and "<00:00" in err
+
+
+def test_study_results_carry_provenance(tmp_path):
+    """#15 item 8: the study's NetCDF carries the version, parameters and the spec that made it."""
+    import xarray as xr
+
+    from memstribo.study import run_study, study_spec
+
+    spec = study_spec({"function": "gear", "grid": {"module": ["3 um", "4 um"]}}, parameters={"face_width": "3 um"})
+    run_study(spec, tmp_path / "study", workers=1)
+    with xr.open_dataset(tmp_path / "study" / "results.nc") as data:
+        assert data.attrs["memstribo_version"] and "face_width" in data.attrs["parameter_overrides"]
+        assert data.attrs["study_function"] == "gear"

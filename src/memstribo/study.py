@@ -665,12 +665,15 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
         raise InputError(f"{len(missing)} point(s) have no result file in '{folder / POINTS_FOLDER}'; rerun with --resume.")
     ordered = [records[p.id] for p in points]
     dataset = study_dataset(ordered, spec, points)
-    from .output import write_dataset
+    from .output import provenance_attributes, write_dataset
 
-    write_dataset(dataset, folder, "results")
+    base = params.updated(spec.parameters, origin=f"study spec {spec.source}") if spec.parameters else params
+    provenance = provenance_attributes(base, extra={"command": "memstribo study", "study_spec": str(spec.source),
+                                                    "study_function": function_name(spec.function)})
+    write_dataset(dataset, folder, "results", provenance=provenance)
     if spec.grid:
         try:
-            write_dataset(grid_dataset(dataset, spec), folder, "results_grid")
+            write_dataset(grid_dataset(dataset, spec), folder, "results_grid", provenance=provenance)
         except InputError:
             pass  # an axis repeats a value: the results stay over dimension 'point' only
     errors = {r["id"]: r["error"] for r in ordered if r.get("error")}
