@@ -295,3 +295,21 @@ def test_kill_9_then_resume_loses_no_finished_point(tmp_path):
     assert (summary["points"], summary["reused"], summary["computed"]) == (8, len(before), 8 - len(before))
     after = {p.name: p.read_text() for p in points.glob("*.json")}
     assert len(after) == 8 and all(after[name] == text for name, text in before.items())
+
+
+def test_figures_coating_life_and_one_axis(tmp_path):
+    """Coating life gets its own contour where known; one plot axis gives line plots."""
+    from memstribo.design_map import MAP_RESULTS, map_dataset, map_figures
+
+    spec = map_spec({"grid": {"drive_torque": ["5e-8 N*m", "1e-7 N*m", "2e-7 N*m"], "face_width": ["1 um", "2 um"]}})
+    records = []
+    for i in range(6):
+        values = {key: 0.5 for key in MAP_RESULTS}
+        values.update(stiction_probability=i / 5, cycles_to_failure=10.0 ** (6 + i), note="")
+        records.append({"id": f"p{i}", "values": values, "error": None})
+    dataset = map_dataset(records, spec)
+    assert dataset["cycles_to_failure"].dims == ("drive_torque", "face_width")
+    written, notes = map_figures(dataset, tmp_path / "two", ["drive_torque", "face_width"])
+    assert {p.name for p in written} >= {"design_map_stiction.png", "design_map_coating_life.svg"} and not notes
+    written, _ = map_figures(dataset, tmp_path / "one", ["face_width"])
+    assert (tmp_path / "one" / "design_map_efficiency.png").is_file()
