@@ -36,7 +36,7 @@ def test_sweep_bad_input(params):
         sweep(params, "area", [1.5], steps=11)
     with pytest.raises(InputError, match="positive forces"):
         sweep(params, "load", [-1e-6], steps=11)
-    with pytest.raises(InputError, match="'load', 'torque' or 'area'"):
+    with pytest.raises(InputError, match="'load', 'torque', 'area' or 'humidity'"):
         sweep(params, "speed", [1.0], steps=11)
     with pytest.raises(InputError, match="at least one value"):
         sweep(params, "load", [], steps=11)
