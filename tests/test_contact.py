@@ -482,3 +482,12 @@ def test_small_problem_measures_same_answer_as_large_problem_path(monkeypatch):
     assert (small.iterations, small.coarse_iterations) != (large.iterations, large.coarse_iterations)
     assert np.array_equal(small.contact, large.contact)
     assert np.abs(small.pressure - large.pressure).max() < 1e-8 * large.max_pressure
+
+
+def test_an_absurdly_soft_body_is_reported_not_a_crash():
+    """A 1 Pa modulus (issue #15: ZeroDivisionError inside the CG) ends as a result flagged unconverged."""
+    from memstribo.contact import cylinder_on_flat, solve_line_contact
+
+    separation, dx = cylinder_on_flat(10e-6, 400e-9, 512)
+    solution = solve_line_contact(separation, dx, 1.0, load=1.0)
+    assert isinstance(solution.converged, bool) and (solution.converged or "NOT converged" in solution.message)

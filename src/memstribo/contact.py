@@ -458,6 +458,8 @@ def _polonsky_keer(operator, h, p, target, tolerance, scale, cap, precondition, 
         else:
             z = r
         G = _dot(r, z)
+        if G <= 0.0:  # round-off: no descent direction left
+            break
         if conjugate:
             t = z + (G / G_old) * t
             t[~work] = 0.0
@@ -606,6 +608,8 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition, max_outer=
                 else:
                     z = r
                 G = _dot(r, z)
+                if G <= 0.0:  # the residual vanishes in the preconditioned norm (round-off): nothing to do
+                    break
                 if inner:
                     t *= G / G_old
                     t += z
@@ -923,6 +927,8 @@ def _solve_on_set(operator, indices, rhs, tolerance, cap, factors=None, guess=No
         used += 1
         z = operator.restricted(r, indices, stiffness)
         G = _dot(r, z)
+        if G <= 0.0:  # round-off: no descent direction left
+            break
         t = z if t is None else z + (G / G_old) * t
         G_old = G
         q = operator.restricted(t, indices, green)
