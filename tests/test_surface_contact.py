@@ -18,16 +18,8 @@ def _sphere(n, length):
     return (x[None, :] ** 2 + x[:, None] ** 2) / (2 * R), d
 
 
-def _rough(n, length, rms, seed, hurst=0.8):
-    """Periodic isotropic self-affine map by Fourier synthesis (test-local)."""
-    rng = np.random.default_rng(seed)
-    qy = np.fft.fftfreq(n, length / n)[:, None]
-    qx = np.fft.rfftfreq(n, length / n)[None, :]
-    q = np.hypot(qx, qy)
-    amplitude = np.zeros_like(q)
-    amplitude[q > 0] = q[q > 0] ** (-1 - hurst)
-    z = np.fft.irfft2(amplitude * (rng.normal(size=q.shape) + 1j * rng.normal(size=q.shape)), s=(n, n))
-    return z * rms / z.std()
+# one rough-map synthesis and one independent dense solver, shared with the validation rows
+from memstribo.validation.surface_contact import _rough, dense_nnls_solution  # noqa: E402
 
 
 # ----------------------------------------------------------------------------- Hertz sphere
@@ -147,38 +139,14 @@ def test_not_converged_is_reported():
 # ------------------------------------------------------------------ independent dense solver
 
 
-def _dense_periodic_operator(n, d):
-    """Influence matrix of the periodic half-space built from an explicit cosine sum (no FFT)."""
-    k = np.fft.fftfreq(n, 1.0 / n)
-    ky, kx = np.meshgrid(k, k, indexing="ij")
-    q = 2 * np.pi * np.hypot(kx, ky) / (n * d)
-    weights = np.zeros_like(q)
-    weights[q > 0] = 2.0 / (E * q[q > 0]) / n**2
-    i = np.arange(n)
-    # kernel at offset (oy, ox): sum_k w_k cos(2 pi (ky oy + kx ox) / n)
-    phase = 2 * np.pi / n * (ky.ravel()[:, None, None] * i[None, :, None] + kx.ravel()[:, None, None] * i[None, None, :])
-    kernel = np.einsum("k,kyx->yx", weights.ravel(), np.cos(phase))
-    iy, ix = np.divmod(np.arange(n * n), n)
-    return kernel[(iy[:, None] - iy[None, :]) % n, (ix[:, None] - ix[None, :]) % n]
-
-
 def test_periodic_rough_matches_dense_nnls():
-    from scipy.optimize import nnls
-
     n, length, p_bar = 32, 1e-6, 3e8
     d = length / n
     z = _rough(n, length, 1e-9, seed=7)
     h = z.max() - z
     sol = solve_surface_contact(h, d, d, E, mean_pressure=p_bar, periodic=True, tolerance=1e-12)
-    A = _dense_periodic_operator(n, d)
-    # the periodic operator is singular in the mean; adding c 11^T changes nothing under load control
-    c = float(np.abs(A).max())
-    A1 = A + c
-    approach = sol.approach + c * p_bar * n * n  # the approach of A1 for the same load
-    L = np.linalg.cholesky(A1)
-    # min 1/2 p^T A1 p - (approach - h)^T p, p >= 0  <=>  NNLS with L^T p ~ L^-1 (approach - h)
-    p, _ = nnls(L.T, np.linalg.solve(L, approach - h.ravel()), maxiter=50 * n * n)
-    p = p.reshape(n, n)
+    # independent: dense cosine-sum matrix, Cholesky, scipy NNLS at the solver's approach
+    p = dense_nnls_solution(h, d, p_bar, sol.approach)
     assert np.array_equal(p > 0, sol.contact)
     assert np.abs(p - sol.pressure).max() < 1e-6 * sol.max_pressure
     assert p.mean() == pytest.approx(p_bar, rel=1e-6)
