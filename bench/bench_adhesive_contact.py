@@ -46,7 +46,7 @@ def timed(function, repeat):
 
 
 def main(argv=None):
-    from memstribo.contact import solve_line_contact
+    from memstribo.physics.contact import solve_line_contact
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", type=int, nargs="+", default=[10, 12, 14, 16], help="exponents of N")

@@ -79,7 +79,7 @@ def problem(exponent, cylinder=False, seed=0, cutoff=None):
 
 
 def run_memstribo(h, dx, mean_pressure, tol, **options):
-    from memstribo.contact import solve_line_contact
+    from memstribo.physics.contact import solve_line_contact
 
     start = time.perf_counter()
     sol = solve_line_contact(h, dx, MODULUS, mean_pressure=mean_pressure, periodic=True, tolerance=tol,
@@ -164,7 +164,7 @@ SOLVERS = {"memstribo": run_memstribo, "tamaas": run_tamaas, "contactmechanics":
 def tooth_timings(sizes, repeat=5, calls=10):
     """Timings of a tooth-like free-boundary contact (Hertz gap + roughness, few elements in contact):
     cold and warm-started solves, with the dense small-set path and with FFTs only."""
-    import memstribo.contact as contact
+    import memstribo.physics.contact as contact
 
     radius, load, modulus, length = 10e-6, 12.5, 85e9, 1e-6
     print(f"# tooth-like contact: R = 10 um, w = 12.5 N/m, E* = 85 GPa, Rq 1 nm over 1 um, free boundary; "

@@ -25,7 +25,7 @@ import numpy as np
 
 def _warm():
     """Import the model on a worker (not part of the timing)."""
-    import memstribo.mesh  # noqa: F401
+    import memstribo.simulations.mesh  # noqa: F401
 
     return True
 
@@ -36,7 +36,7 @@ def _run(spec, workers):
 
     from distributed import Client, LocalCluster
 
-    from memstribo.design_map import design_map
+    from memstribo.simulations.design_map import design_map
 
     begin = time.perf_counter()
     with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
@@ -60,7 +60,7 @@ def main(argv=None) -> int:
     parser.add_argument("--full", action="store_true", help="also time the 6 x 6 map, 8 realisations per point")
     args = parser.parse_args(argv)
 
-    from memstribo.design_map import map_spec
+    from memstribo.simulations.design_map import map_spec
     from memstribo.parameters import get_parameter_values
 
     extra = {"steps": args.steps} if args.steps else {}

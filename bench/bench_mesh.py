@@ -34,7 +34,7 @@ import tracemalloc  # noqa: E402
 
 
 def _run(params, steps, repeat):
-    from memstribo.mesh import simulate_mesh
+    from memstribo.simulations.mesh import simulate_mesh
 
     best = best_cpu = float("inf")
     peak = 0
@@ -56,7 +56,7 @@ def _stages(params):
     import cProfile
     import pstats
 
-    from memstribo.mesh import simulate_mesh
+    from memstribo.simulations.mesh import simulate_mesh
 
     profiler = cProfile.Profile()
     profiler.enable()
@@ -107,11 +107,11 @@ def main(argv=None):
     if args.ensemble:
         from distributed import Client, LocalCluster
 
-        from memstribo.mesh import simulate_ensemble
+        from memstribo.simulations.mesh import simulate_ensemble
 
         with LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
                           dashboard_address=None) as cluster, Client(cluster) as client:
-            client.run(lambda: __import__("memstribo.mesh"))  # warm the workers' imports
+            client.run(lambda: __import__("memstribo.simulations.mesh"))  # warm the workers' imports
             start = time.perf_counter()
             ensemble = simulate_ensemble(params, realisations=args.ensemble, client=client)
             results["ensemble"] = {"realisations": args.ensemble, "workers": args.workers,

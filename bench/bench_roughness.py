@@ -17,8 +17,8 @@ FILES = ["si_profile_linescan.txt", "topography_in_nanometers.txt", "di-3.di", "
 
 def main():
     from memstribo.parameters import get_parameter_values
-    from memstribo.readers import SurfaceMap, read_topography
-    from memstribo.roughness import areal_statistics, default_profile, line_scan_statistics, profile_statistics
+    from memstribo.surfaces.readers import SurfaceMap, read_topography
+    from memstribo.surfaces.roughness import areal_statistics, default_profile, line_scan_statistics, profile_statistics
 
     print(f"{'file':<32} {'read [s]':>9} {'stats [s]':>10}  shape")
     for name in FILES:

@@ -22,9 +22,9 @@ def main(argv=None):
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args(argv)
 
-    from memstribo import sliding
+    from memstribo.simulations import sliding
     from memstribo.parameters import get_parameter_values
-    from memstribo.roughness import synthetic_profile
+    from memstribo.surfaces.roughness import synthetic_profile
 
     params = get_parameter_values()
     spacing = 1e-9

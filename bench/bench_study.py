@@ -28,7 +28,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
 
     from memstribo.parameters import get_parameter_values
-    from memstribo.study import run_study, study_spec
+    from memstribo.simulations.study import run_study, study_spec
 
     loads = [f"{25 * (i + 1)} uN" for i in range(args.points)]
     fixed = {"steps": args.steps} if args.steps else {}

@@ -68,7 +68,7 @@ def problem(exponent, seed=0):
 
 
 def run_memstribo(h, dx, mean_pressure, tol, periodic=True):
-    from memstribo.surface_contact import solve_surface_contact
+    from memstribo.physics.surface_contact import solve_surface_contact
 
     start = time.perf_counter()
     sol = solve_surface_contact(h, dx, dx, MODULUS, mean_pressure=mean_pressure, periodic=periodic, tolerance=tol,

@@ -22,11 +22,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from memstribo.adhesion import nanoscale_constants  # noqa: E402
-from memstribo.adhesive_contact import line_contact_pull_off  # noqa: E402
-from memstribo.contact import solve_line_contact  # noqa: E402
+from memstribo.physics.adhesion import nanoscale_constants  # noqa: E402
+from memstribo.physics.adhesive_contact import line_contact_pull_off  # noqa: E402
+from memstribo.physics.contact import solve_line_contact  # noqa: E402
 from memstribo.parameters import get_parameter_values  # noqa: E402
-from memstribo.reference import (hertz_line_pressure, jkr_line_load, jkr_line_pull_off_load,  # noqa: E402
+from memstribo.physics.closed_form import (hertz_line_pressure, jkr_line_load, jkr_line_pull_off_load,  # noqa: E402
                                  maugis_dugdale_line_load, maugis_dugdale_line_pull_off, maugis_line_parameter)
 
 OUTPUT = Path(__file__).resolve().parent.parent / "docs" / "figures" / "adhesive_line_contact.png"

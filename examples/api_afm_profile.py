@@ -12,13 +12,13 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from memstribo import mesh
-from memstribo.coating import get_coating
+from memstribo.simulations import mesh
+from memstribo.physics.coating import get_coating
 from memstribo.errors import InputError
-from memstribo.nanoblock.geometry import nanoblock_geometry_from_profile
+from memstribo.physics.nanoblock.geometry import nanoblock_geometry_from_profile
 from memstribo.parameters import get_parameter_values
-from memstribo.readers import read_topography
-from memstribo.roughness import profile_statistics
+from memstribo.surfaces.readers import read_topography
+from memstribo.surfaces.roughness import profile_statistics
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -14,7 +14,7 @@ import argparse
 import tempfile
 from pathlib import Path
 
-from memstribo.design_map import design_map, map_figures, map_spec
+from memstribo.simulations.design_map import design_map, map_figures, map_spec
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -19,8 +19,9 @@ def main(out_dir: str | None = None) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from memstribo.adhesion import lennard_jones_surface_stress, maugis_range, maugis_stress, work_of_adhesion
-    from memstribo.mesh import vdw_gap_factor
+    from memstribo.materials.pair import work_of_adhesion
+    from memstribo.physics.adhesion import lennard_jones_surface_stress, maugis_range, maugis_stress
+    from memstribo.simulations.mesh import vdw_gap_factor
     from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()

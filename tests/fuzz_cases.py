@@ -197,7 +197,7 @@ _STUDIES = {
     "name_not_text": '[study]\nname = 5\nfunction = "gear"\n[study.grid]\nseed = [1]\n',
     "function_not_text": '[study]\nfunction = 5\n[study.grid]\nseed = [1]\n',
     "function_os_system": '[study]\nfunction = "os:system"\n[study.grid]\nseed = [1]\n',
-    "function_module_path": '[study]\nfunction = "memstribo.mesh:simulate_mesh"\n[study.grid]\nseed = [1]\n',
+    "function_module_path": '[study]\nfunction = "memstribo.simulations.mesh:simulate_mesh"\n[study.grid]\nseed = [1]\n',
     "function_typo": '[study]\nfunction = "mseh"\n[study.grid]\nseed = [1]\n',
     "range_missing_num": '[study]\nfunction = "gear"\n[study.grid]\nnormal_load = {start = 1e-5, stop = 2e-5}\n',
     "range_num_zero": '[study]\nfunction = "gear"\n[study.grid]\nnormal_load = {start = 1e-5, stop = 2e-5, num = 0}\n',

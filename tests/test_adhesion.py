@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 from scipy import integrate, optimize
 
-from memstribo import adhesion as ad
+from memstribo.materials import pair
+from memstribo.physics import adhesion as ad
 from memstribo.errors import InputError
 
 E_SI, NU_SI, A_SI, D0_SI = 161e9, 0.23, 1.1e-18, 2.56e-10
@@ -18,22 +19,22 @@ E_SI, NU_SI, A_SI, D0_SI = 161e9, 0.23, 1.1e-18, 2.56e-10
 
 def test_contact_modulus_silicon_thesis_value():
     # thesis 3.5: E* = E / (2 (1 - nu^2)) = 85 GPa; MODEL §2 prints 85.0 GPa (tolerance: 0.05 GPa)
-    assert ad.contact_modulus(E_SI, NU_SI) == pytest.approx(85.0e9, abs=0.05e9)
-    assert ad.contact_modulus(E_SI, NU_SI) == pytest.approx(E_SI / (2 * (1 - NU_SI**2)), rel=1e-14)
+    assert pair.contact_modulus(E_SI, NU_SI) == pytest.approx(85.0e9, abs=0.05e9)
+    assert pair.contact_modulus(E_SI, NU_SI) == pytest.approx(E_SI / (2 * (1 - NU_SI**2)), rel=1e-14)
 
 
 def test_contact_modulus_dissimilar_is_symmetric_and_rigid_limit():
-    e1 = ad.contact_modulus(161e9, 0.23, 70e9, 0.35)
-    e2 = ad.contact_modulus(70e9, 0.35, 161e9, 0.23)
+    e1 = pair.contact_modulus(161e9, 0.23, 70e9, 0.35)
+    e2 = pair.contact_modulus(70e9, 0.35, 161e9, 0.23)
     assert e1 == pytest.approx(e2, rel=1e-14)
     # a (nearly) rigid counter body: E* -> E / (1 - nu^2)
-    assert ad.contact_modulus(161e9, 0.23, 1e30, 0.3) == pytest.approx(161e9 / (1 - 0.23**2), rel=1e-12)
+    assert pair.contact_modulus(161e9, 0.23, 1e30, 0.3) == pytest.approx(161e9 / (1 - 0.23**2), rel=1e-12)
 
 
 # --- work of adhesion --------------------------------------------------------------------------------
 
 def test_work_of_adhesion_formula_and_thesis_print():
-    w = ad.work_of_adhesion(A_SI, D0_SI)
+    w = pair.work_of_adhesion(A_SI, D0_SI)
     # MODEL §3: 0.445 J/m^2 from (3-34) (tolerance: the printed digits, 5e-4)
     assert w == pytest.approx(0.445, abs=5e-4)
     # the thesis prints 1.31 J/m^2; MODEL §3 identifies it as A / (4 pi D0^2) = 3 w = 1.336 J/m^2
@@ -62,7 +63,7 @@ def test_maugis_stress_is_maximum_attraction_of_the_law():
 
 
 def test_maugis_range_matches_work_and_silicon_values():
-    w = ad.work_of_adhesion(A_SI, D0_SI)
+    w = pair.work_of_adhesion(A_SI, D0_SI)
     s0 = ad.maugis_stress(w, D0_SI)
     h0 = ad.maugis_range(w, s0)
     assert s0 * h0 == pytest.approx(w, rel=1e-14)  # (3-17)
@@ -95,27 +96,27 @@ def test_bilinear_stress_refuses_strain_past_threshold():
 # --- no-slip coefficient ---------------------------------------------------------------------------------
 
 def test_no_slip_coefficient_thesis_value():
-    assert ad.no_slip_coefficient(0.23) == pytest.approx(1.044, abs=5e-4)  # thesis 3.5 (3-33)
+    assert pair.no_slip_coefficient(0.23) == pytest.approx(1.044, abs=5e-4)  # thesis 3.5 (3-33)
 
 
 def test_no_slip_coefficient_exact_and_smooth_at_half():
-    assert ad.no_slip_coefficient(0.5) == 1.0
+    assert pair.no_slip_coefficient(0.5) == 1.0
     # near 0.5 the series and the closed form agree: C_NS = 1 - t/2 + O(t^2) ... compare to log form
     for nu in [0.5 - 1e-2, 0.5 - 1e-3, 0.5 - 1e-4, 0.5 - 1e-6, 0.5 - 1e-9]:
         exact = (1 - nu) * math.log(3 - 4 * nu) / (1 - 2 * nu) if nu < 0.5 - 1e-5 else None
-        value = ad.no_slip_coefficient(nu)
+        value = pair.no_slip_coefficient(nu)
         if exact is not None:
             assert value == pytest.approx(exact, rel=1e-13)
         assert abs(value - 1.0) < 2 * (0.5 - nu)  # Lipschitz towards the limit
     # continuity across the series switch (|x| = 1e-3 <=> nu = 0.49975)
     nu = 0.49975
-    left, right = ad.no_slip_coefficient(nu - 1e-12), ad.no_slip_coefficient(nu + 1e-12)
+    left, right = pair.no_slip_coefficient(nu - 1e-12), pair.no_slip_coefficient(nu + 1e-12)
     assert left == pytest.approx(right, rel=1e-11)
 
 
 def test_no_slip_coefficient_monotone_and_bounded():
     nu = np.linspace(-0.999, 0.5, 2001)
-    c = ad.no_slip_coefficient(nu)
+    c = pair.no_slip_coefficient(nu)
     assert np.all(np.diff(c) < 0)  # decreasing in nu on (-1, 0.5]
     assert c.min() == 1.0 and c.max() < (1 + 1) * math.log(7) / 3 + 1e-12  # value at nu -> -1: 2 ln 7 / 3
 
@@ -137,9 +138,9 @@ def test_pull_off_force_thesis_case_differs_as_documented():
     memstribo: w = 0.445 J/m^2 (MODEL §3), E* = 85.0 GPa, C_NS = 1.044 give 3.03e-5 N per block
     and 2.73e-4 N for 9 blocks. Neither the printed w = 1.31 J/m^2 (5.20e-5 N) reproduces 3.75e-5 N:
     that value needs w = 0.680 J/m^2. We assert our value and the inconsistency of the print."""
-    e_star = ad.contact_modulus(E_SI, NU_SI)
-    c_ns = ad.no_slip_coefficient(NU_SI)
-    w = ad.work_of_adhesion(A_SI, D0_SI)
+    e_star = pair.contact_modulus(E_SI, NU_SI)
+    c_ns = pair.no_slip_coefficient(NU_SI)
+    w = pair.work_of_adhesion(A_SI, D0_SI)
     f1 = ad.pull_off_force(w, e_star, c_ns, 97.5e-9)
     assert f1 == pytest.approx(3.03e-5, abs=0.005e-5)
     assert 9 * f1 == pytest.approx(2.73e-4, abs=0.005e-4)
@@ -184,17 +185,17 @@ def test_nanoscale_constants_overrides(params):
 # --- bad input ---------------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("call,match", [
-    (lambda: ad.contact_modulus(0.0, 0.23), "youngs_modulus"),
-    (lambda: ad.contact_modulus(161e9, 0.6), r"poisson_ratio must lie in \(-1, 0.5\]"),
-    (lambda: ad.contact_modulus(161e9, -1.0), "poisson_ratio"),
-    (lambda: ad.contact_modulus(161e9, 0.2, -5e9, 0.2), "counter_youngs_modulus"),
-    (lambda: ad.contact_modulus(161e9, 0.2, 5e9, 0.51), "counter_poisson_ratio"),
-    (lambda: ad.no_slip_coefficient(0.5000001), "poisson_ratio"),
-    (lambda: ad.no_slip_coefficient(-1.0), "poisson_ratio"),
-    (lambda: ad.no_slip_coefficient(float("nan")), "poisson_ratio"),
-    (lambda: ad.no_slip_coefficient("abc"), "poisson_ratio"),
-    (lambda: ad.work_of_adhesion(-1e-18, 2.56e-10), "hamaker_constant"),
-    (lambda: ad.work_of_adhesion(1e-18, 0.0), "cutoff_distance"),
+    (lambda: pair.contact_modulus(0.0, 0.23), "youngs_modulus"),
+    (lambda: pair.contact_modulus(161e9, 0.6), r"poisson_ratio must lie in \(-1, 0.5\]"),
+    (lambda: pair.contact_modulus(161e9, -1.0), "poisson_ratio"),
+    (lambda: pair.contact_modulus(161e9, 0.2, -5e9, 0.2), "counter_youngs_modulus"),
+    (lambda: pair.contact_modulus(161e9, 0.2, 5e9, 0.51), "counter_poisson_ratio"),
+    (lambda: pair.no_slip_coefficient(0.5000001), "poisson_ratio"),
+    (lambda: pair.no_slip_coefficient(-1.0), "poisson_ratio"),
+    (lambda: pair.no_slip_coefficient(float("nan")), "poisson_ratio"),
+    (lambda: pair.no_slip_coefficient("abc"), "poisson_ratio"),
+    (lambda: pair.work_of_adhesion(-1e-18, 2.56e-10), "hamaker_constant"),
+    (lambda: pair.work_of_adhesion(1e-18, 0.0), "cutoff_distance"),
     (lambda: ad.pull_off_force(0.445, 85e9, 1.044, 0.0), "half_width"),
     (lambda: ad.pull_off_force(0.445, -85e9, 1.044, 1e-7), "contact_modulus"),
     (lambda: ad.pull_off_force(-0.1, 85e9, 1.044, 1e-7), "work_of_adhesion"),

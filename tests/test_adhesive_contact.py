@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from memstribo.adhesive_contact import line_contact_pull_off, load_approach_curve
-from memstribo.contact import solve_line_contact
+from memstribo.physics.adhesive_contact import line_contact_pull_off, load_approach_curve
+from memstribo.physics.contact import solve_line_contact
 from memstribo.errors import InputError
-from memstribo.reference import (dugdale_rigid_line_pull_off, hertz_line_half_width, jkr_line_load,
+from memstribo.physics.closed_form import (dugdale_rigid_line_pull_off, hertz_line_half_width, jkr_line_load,
                                  jkr_line_pull_off_half_width, jkr_line_pull_off_load, maugis_dugdale_line_load,
                                  maugis_dugdale_line_pull_off, maugis_line_parameter)
 

@@ -109,3 +109,45 @@ def test_package_import_is_light(module):
             f"'xarray', 'scipy') if m in sys.modules]; print(','.join(heavy))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.strip()
     assert out == "", f"import {module} loads {out}"
+
+
+#: The layers of the tree (docs/architecture.md), lowest first; a module may import only from its own layer or
+#: from layers below it. The foundation (errors, units, checks, references, output, parameters) serves all.
+LAYERS = [
+    ("foundation", ("memstribo.errors", "memstribo.units", "memstribo.checks", "memstribo.references",
+                    "memstribo.output", "memstribo.parameters")),
+    ("surfaces", ("memstribo.surfaces",)),
+    ("materials", ("memstribo.materials",)),
+    ("physics", ("memstribo.physics",)),
+    ("simulations", ("memstribo.simulations",)),
+    ("validation", ("memstribo.validation",)),
+    ("job", ("memstribo.job",)),
+    ("api", ("memstribo.api",)),
+    ("cli", ("memstribo.cli",)),
+]
+
+
+def layer_of(module: str) -> int:
+    for rank, (_, prefixes) in enumerate(LAYERS):
+        if any(module == p or module.startswith(p + ".") for p in prefixes):
+            return rank
+    raise AssertionError(f"{module} belongs to no layer: add it to LAYERS and to docs/architecture.md")
+
+
+def test_every_module_sits_in_a_layer_and_imports_point_down():
+    graph = import_graph()
+    upward = []
+    for module, targets in graph.items():
+        if module == "memstribo":
+            continue  # the package's __init__: the version, the errors, and the public API on first use
+        rank = layer_of(module)
+        upward += [f"{module} ({LAYERS[rank][0]}) imports {t} ({LAYERS[layer_of(t)][0]})"
+                   for t in sorted(targets) if t != "memstribo" and layer_of(t) > rank]
+    assert not upward, "imports pointing up the layers:\n" + "\n".join(upward)
+
+
+def test_the_layers_are_folders_a_newcomer_sees():
+    for name, prefixes in LAYERS[1:-1]:
+        for prefix in prefixes:
+            path = SRC.parent / prefix.replace(".", "/")
+            assert path.is_dir() or path.with_suffix(".py").is_file(), prefix

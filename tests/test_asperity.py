@@ -7,8 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from memstribo.asperity import (
-    contact_modulus,
+from memstribo.physics.asperity import (
     nanoblock_load_sharing,
     position_classes,
     power_law_contact,
@@ -16,11 +15,12 @@ from memstribo.asperity import (
     power_law_pressure,
 )
 from memstribo.errors import InputError
+from memstribo.materials.pair import contact_modulus
 
 E_STAR = 84.996e9  # silicon/silicon, E = 161 GPa, nu = 0.23 (thesis 5.5.2 prints 8.4996e10 Pa)
 B4 = 4e22
 
-from memstribo.thesis_tables import TABLE_5_1, TABLE_5_2  # thesis Tables 5-1 (loads [N]) and 5-2 (radii [m])
+from memstribo.parameters.thesis_tables import TABLE_5_1, TABLE_5_2  # thesis Tables 5-1 (loads [N]) and 5-2 (radii [m])
 
 
 def test_contact_modulus_of_silicon_pair():
@@ -156,8 +156,8 @@ def test_cli_asperity_bad_input(cli, argv):
 
 
 def test_degree_two_matches_reference_hertz_sphere():
-    """Against memstribo.reference's Hertz sphere (an independent implementation)."""
-    from memstribo import reference
+    """Against memstribo.physics.closed_form's Hertz sphere (an independent implementation)."""
+    from memstribo.physics import closed_form as reference
 
     radius, modulus = 131.3e-9, E_STAR
     loads = np.array([1e-8, 1e-7, 8.275e-7])

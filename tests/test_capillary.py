@@ -1,11 +1,11 @@
-"""Capillary condensation relations (issue #17): Kelvin, meniscus forces, their limits (memstribo.capillary)."""
+"""Capillary condensation relations (issue #17): Kelvin, meniscus forces, their limits (memstribo.physics.capillary)."""
 
 import math
 
 import numpy as np
 import pytest
 
-from memstribo.capillary import (capillary_force_cylinder, capillary_force_from_gap, capillary_force_sphere,
+from memstribo.physics.capillary import (capillary_force_cylinder, capillary_force_from_gap, capillary_force_sphere,
                                  capillary_pressure, condensation_height, kelvin_radius, laplace_pressure)
 from memstribo.errors import InputError
 
@@ -57,7 +57,7 @@ def test_adhesion_grows_with_humidity_on_a_rough_gap():
     """Monotone growth of the wetted area with RH on a rough gap; the Laplace pressure falls: the force over a
     rough line grows with RH (more of the roughness fills)."""
     from memstribo.parameters import get_parameter_values
-    from memstribo.roughness import default_profile
+    from memstribo.surfaces.roughness import default_profile
 
     profile = default_profile(get_parameter_values(), length=4e-6)
     gap = np.maximum(profile.z.max() - profile.z, 0.0)  # a flat touching the highest peak
@@ -81,8 +81,8 @@ def test_laplace_pressure_and_bad_input():
 def test_humid_air_in_the_meshing_cycle():
     """Issue #17: vacuum is untouched; in air the menisci add attraction to F_adh and a capillary part to the
     COF split (which still adds up); dry air equals vacuum; OTS-coated teeth (hydrophobic) form no menisci."""
-    from memstribo.coating import get_coating
-    from memstribo.mesh import simulate_mesh, summarize
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.mesh import simulate_mesh, summarize
     from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()

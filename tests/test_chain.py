@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from memstribo.chain import STAGES, RunChain, RunOptions, options_for_test, verdict
+from memstribo.job.chain import STAGES, RunChain, RunOptions, options_for_test, verdict
 from memstribo.errors import InputError
 
 REPO = Path(__file__).resolve().parent.parent
@@ -75,7 +75,7 @@ def test_mesh_stages(small_run):
     assert bare["stiction_margin"] == bare["tangential_force"] - bare["resisting_force_max"]
     assert "step_converged" in bare and small_run.verdict["bare_realisations"] == 3
     # the run's bare cycle is exactly what 'memstribo mesh' computes (the same independent synthetic rows)
-    from memstribo.mesh import simulate_mesh, summarize
+    from memstribo.simulations.mesh import simulate_mesh, summarize
 
     alone = summarize(simulate_mesh(small_run.params, steps=8))
     assert bare["cof_mean"] == alone["cof_mean"] and bare["stiction_margin"] == alone["stiction_margin"]
@@ -230,9 +230,9 @@ def test_an_interrupted_run_keeps_what_it_finished(params, tmp_path, monkeypatch
 def test_a_measured_meshing_profile_sets_the_geometry_downstream(tmp_path):
     """#11 item 5: with a measured profile for the meshing cycle, the nanoblock geometry is derived from it
     (as 'memstribo nanoblock --from' does) and used by the meshing stages; the verdict says so."""
-    from memstribo.nanoblock.geometry import nanoblock_geometry_from_profile
+    from memstribo.physics.nanoblock.geometry import nanoblock_geometry_from_profile
     from memstribo.parameters import get_parameter_values
-    from memstribo.readers import read_topography
+    from memstribo.surfaces.readers import read_topography
 
     scan = REPO / "data" / "afm" / "si_profile_linescan.txt"
     options = options_for_test(roughness_files=(str(scan),), mesh_roughness=0, stages=("roughness", "geometry", "mesh"),

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from memstribo.coating import (
+from memstribo.physics.coating import (
     Coating,
     available_coatings,
     check_wear,
@@ -112,14 +112,14 @@ STEPS = 24  # coarse, yet every wear state differs from the bare one (8 steps: O
 
 @pytest.fixture(scope="module")
 def ots_sweep():
-    from memstribo.coating import wear_sweep
+    from memstribo.simulations.coating_wear import wear_sweep
     from memstribo.parameters import get_parameter_values
 
     return wear_sweep(get_parameter_values(), "OTS", [0.0, 0.2, 0.4, 0.6, 0.8, 1.0], steps=STEPS)
 
 
 def test_wear_one_equals_the_bare_mesh(params, ots_sweep):
-    from memstribo import mesh
+    from memstribo.simulations import mesh
 
     bare = mesh.summarize(mesh.simulate_mesh(params, steps=STEPS))
     last = ots_sweep.sel(wear=1.0)
@@ -149,13 +149,13 @@ def test_sweep_invariants(ots_sweep):
     margin = ots_sweep["stiction_margin"].values
     stiction = ots_sweep["stiction"].values.astype(bool)
     np.testing.assert_array_equal(stiction, margin < 0)  # stiction only where F_f reaches F_t
-    for name, (unit, _) in __import__("memstribo.coating", fromlist=["x"]).SWEEP_VARIABLES.items():
+    for name, (unit, _) in __import__("memstribo.simulations.coating_wear", fromlist=["x"]).SWEEP_VARIABLES.items():
         assert ots_sweep[name].attrs["units"] == unit and ots_sweep[name].attrs["long_name"]
 
 
 def test_calibrated_ots_gives_the_thesis_cof(params):
     """The shipped OTS U_vdW is calibrated (docs/coating.md) to COF 0.185 at Omega = 0 (thesis 5.5.3)."""
-    from memstribo.coating import wear_sweep
+    from memstribo.simulations.coating_wear import wear_sweep
 
     # at the thesis's reference conditions: its load case (25 uN) and its full-energy vdW band
     reference = params.updated({"load_case": "thesis", "interface_model": "thesis"})
@@ -165,7 +165,7 @@ def test_calibrated_ots_gives_the_thesis_cof(params):
 
 
 def test_calibration_reaches_its_target(params):
-    from memstribo.coating import calibrate_vdw_bond_energy, wear_sweep
+    from memstribo.simulations.coating_wear import calibrate_vdw_bond_energy, wear_sweep
 
     calibrated, record = calibrate_vdw_bond_energy(params, "OTS", 0.25, steps=STEPS)
     assert record["converged"] and record["cof_after"] == pytest.approx(0.25, rel=1e-3)

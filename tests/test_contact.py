@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from memstribo import reference as ref
-from memstribo.contact import ContactSolution, elastic_displacement, solve_line_contact, strip_influence
+from memstribo.physics import closed_form as ref
+from memstribo.physics.contact import ContactSolution, elastic_displacement, solve_line_contact, strip_influence
 from memstribo.errors import InputError
 
 R, E, W = 20e-6, 100e9, 1.0  # m, Pa, N/m
@@ -291,7 +291,7 @@ def test_cli_map_row_and_periodic(cli, afm_dir):
 
 
 def test_fallback_to_polonsky_keer_when_the_set_does_not_settle(monkeypatch):
-    import memstribo.contact as contact_module
+    import memstribo.physics.contact as contact_module
 
     n, length = 1024, 1e-6
     z = _rough(n, length, 1e-9, seed=13)
@@ -329,7 +329,7 @@ def test_flat_punch_free_boundary():
 
 
 def test_small_contact_dense_path_matches_fft_path_and_direct(monkeypatch):
-    import memstribo.contact as contact_module
+    import memstribo.physics.contact as contact_module
 
     # a tooth-like case: Hertz gap plus roughness, a few tens of elements in contact
     n, length, radius = 1024, 1e-6, 10e-6
@@ -376,7 +376,7 @@ def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
     """Small periodic grids (FFT size <= _DENSE_GRID): contact sets up to _DIRECT_MAX are solved by
     Cholesky ("direct"), or else by the CG on dense matrices of a working set that contains the
     contact set, masked when larger ("dense-cg"): the same solution as the FFT path."""
-    import memstribo.contact as contact_module
+    import memstribo.physics.contact as contact_module
 
     n, length = 512, 1e-6
     dx = length / n
@@ -427,7 +427,7 @@ def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
 
 
 def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
-    import memstribo.contact as contact_module
+    import memstribo.physics.contact as contact_module
 
     n, dx = 400, 1e-9
     x = (np.arange(n) - n / 2 + 0.5) * dx
@@ -450,7 +450,7 @@ def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
 
 @pytest.mark.parametrize("load_factor", [0.25, 1.0, 10.0])  # ~5 %, ~20 %, ~90 % contact
 def test_cold_start_on_the_lower_gap_same_answer_as_uniform_start(monkeypatch, load_factor):
-    import memstribo.contact as contact_module
+    import memstribo.physics.contact as contact_module
 
     n, length = 1024, 1e-6
     dx = length / n
@@ -469,7 +469,7 @@ def test_cold_start_on_the_lower_gap_same_answer_as_uniform_start(monkeypatch, l
 def test_small_problem_measures_same_answer_as_large_problem_path(monkeypatch):
     """Up to _SMALL_PROBLEM elements: direct solves, cold start, short coarse levels; above: the
     plain nested CG levels. Both give the same solution."""
-    import memstribo.contact as contact_module
+    import memstribo.physics.contact as contact_module
 
     n, length = 2048, 1e-6
     dx = length / n
@@ -486,7 +486,7 @@ def test_small_problem_measures_same_answer_as_large_problem_path(monkeypatch):
 
 def test_an_absurdly_soft_body_is_reported_not_a_crash():
     """A 1 Pa modulus (issue #15: ZeroDivisionError inside the CG) ends as a result flagged unconverged."""
-    from memstribo.contact import cylinder_on_flat, solve_line_contact
+    from memstribo.physics.contact import cylinder_on_flat, solve_line_contact
 
     separation, dx = cylinder_on_flat(10e-6, 400e-9, 512)
     solution = solve_line_contact(separation, dx, 1.0, load=1.0)

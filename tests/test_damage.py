@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from memstribo.damage import (
+from memstribo.physics.damage import (
     calibrate_damage_coefficient,
     cyclic_peak_loads,
     cycles_to_failure,
@@ -23,7 +23,7 @@ from memstribo.damage import (
 from memstribo.errors import InputError
 
 # thesis Table 5-1 (nanoblock loads [N]), Table 5-3 (m = 1, Pa) and Table 5-4 (m = 2, Pa^2): max omega/c1, location x [m]
-from memstribo.thesis_tables import TABLE_5_1_LOADS, TABLE_5_3, TABLE_5_4
+from memstribo.parameters.thesis_tables import TABLE_5_1_LOADS, TABLE_5_3, TABLE_5_4
 
 
 # --- surface stresses ---------------------------------------------------------------------------------------
@@ -63,7 +63,7 @@ def test_surface_stress_of_hertz_traction(nu):
 @pytest.mark.parametrize("degree, mu", [(2.0, 0.3), (4.0, 0.1)])
 def test_fft_surface_solution_agrees_with_stresses_module(degree, mu):
     """Two independent surface solutions: FFT over cells (damage) and exact integration (stresses)."""
-    from memstribo.damage import normalised_principal_shear
+    from memstribo.physics.damage import normalised_principal_shear
 
     xi = np.concatenate([np.linspace(-1.5, -1.2, 4), np.linspace(-0.85, 0.85, 10), np.linspace(1.2, 1.5, 4)])
     fft = surface_stresses(xi, degree, mu, 0.23)["tau1"]
@@ -200,7 +200,7 @@ def test_stiction_only_when_friction_reaches_tangential_force(params):
     """cycles_to_stiction is the first N at which Omega(N) reaches the wear where F_f >= F_t."""
     import xarray as xr
 
-    from memstribo.damage import run_damage
+    from memstribo.physics.damage import run_damage
 
     p = params.updated({"damage_coefficient": 1e-16})
     sweep = xr.Dataset({"cof": ("wear", [0.2, 0.5, 0.8]), "stiction_margin": ("wear", [1e-3, 5e-4, -5e-4])},
@@ -260,9 +260,9 @@ def test_cli_damage_bad_input(cli, argv, match):
 
 
 def test_mesh_damage_from_block_loads(params):
-    from memstribo import mesh
-    from memstribo.coating import get_coating
-    from memstribo.damage import mesh_damage
+    from memstribo.simulations import mesh
+    from memstribo.physics.coating import get_coating
+    from memstribo.physics.damage import mesh_damage
 
     dataset = mesh.simulate_mesh(params, steps=24, coating=get_coating("OTS"), wear=0.0)
     result = mesh_damage(dataset, params)

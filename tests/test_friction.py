@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from memstribo import friction
+from memstribo.physics import friction
 from memstribo.errors import InputError
 
 D = 2.35e-10

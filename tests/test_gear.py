@@ -5,9 +5,9 @@ import math
 import numpy as np
 import pytest
 
-from memstribo.adhesion import contact_modulus
+from memstribo.materials.pair import contact_modulus
 from memstribo.errors import InputError
-from memstribo.gear import (
+from memstribo.physics.gear import (
     GearPair,
     first_contact_point,
     hertz_line_contact,
@@ -185,7 +185,7 @@ def test_cli_gear_outer_diameters(cli):
 
 # --- design checks in ISO 21771 terms (issue #15) ----------------------------------------------------------------
 def test_tip_thickness_closed_form_and_the_thesis_pair_has_no_warning(pair):
-    from memstribo.gear import involute_function, tip_tooth_thickness
+    from memstribo.physics.gear import involute_function, tip_tooth_thickness
 
     # s_a = d_a (s/d + inv alpha - inv alpha_a), s = pi m / 2 (ISO 21771:2007)
     m, z, alpha = pair.module, pair.teeth_pinion, pair.pressure_angle
@@ -214,7 +214,7 @@ def test_pointed_teeth_are_refused_with_the_reason(kwargs, match):
 
 
 def test_marginal_designs_warn():
-    from memstribo.gear import design_warnings
+    from memstribo.physics.gear import design_warnings
 
     thin = GearPair(30, 60, 3.88e-6, math.radians(35), 2e-6)  # meshes, but s_a = 0.09 m on the pinion
     found = design_warnings(thin)

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from memstribo.errors import DataFileError, InputError
-from memstribo.readers import SurfaceMap, read_topography
+from memstribo.surfaces.readers import SurfaceMap, read_topography
 
 DATA = Path(__file__).resolve().parent / "data"
 AFM = Path(__file__).resolve().parent.parent / "data" / "afm"

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from memstribo.design_map import design_map, load_map_spec, map_spec
+from memstribo.simulations.design_map import design_map, load_map_spec, map_spec
 from memstribo.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -127,7 +127,7 @@ def test_map_has_one_dimension_per_axis(tiny_map):
 
 def test_point_equals_ensemble(tiny_map):
     """A map point is the ensemble verdict of mesh.simulate_ensemble with the same inputs."""
-    from memstribo import mesh
+    from memstribo.simulations import mesh
     from memstribo.parameters import get_parameter_values
 
     spec, result = tiny_map
@@ -251,7 +251,7 @@ def test_example_runs_at_tiny_size(tmp_path):
 def test_study_grid_has_one_dimension_per_key(tmp_path):
     import xarray as xr
 
-    from memstribo.study import run_study, study_spec
+    from memstribo.simulations.study import run_study, study_spec
 
     spec = study_spec({"function": "gear", "grid": {"module": ["3 um", "4 um", "5 um"], "face_width": ["2 um", "3 um"]}})
     assert spec.grid == ("module", "face_width")
@@ -299,7 +299,7 @@ def test_kill_9_then_resume_loses_no_finished_point(tmp_path):
 
 def test_figures_coating_life_and_one_axis(tmp_path):
     """Coating life gets its own contour where known; one plot axis gives line plots."""
-    from memstribo.design_map import MAP_RESULTS, map_dataset, map_figures
+    from memstribo.simulations.design_map import MAP_RESULTS, map_dataset, map_figures
 
     spec = map_spec({"grid": {"drive_torque": ["5e-8 N*m", "1e-7 N*m", "2e-7 N*m"], "face_width": ["1 um", "2 um"]}})
     records = []

@@ -12,8 +12,9 @@ import numpy as np
 import pytest
 
 from memstribo.errors import InputError
-from memstribo.gear import GearPair
-from memstribo.mesh import (dundurs_beta, ensemble_summary, lattice_overlap_across, resisting_force, roll_coordinate,
+from memstribo.physics.gear import GearPair
+from memstribo.materials.pair import dundurs_beta
+from memstribo.simulations.mesh import (ensemble_summary, lattice_overlap_across, resisting_force, roll_coordinate,
                             simulate_ensemble, simulate_mesh, sliding_average, step_convergence, summarize,
                             vdw_gap_factor)
 
@@ -223,7 +224,7 @@ def test_ensemble_quantiles_and_probability(params):
 
 def test_load_trend_thesis_4_9_3(params):
     """The dissipated energy and friction force rise with the load (thesis 4.9.3)."""
-    from memstribo.mesh import sweep
+    from memstribo.simulations.mesh import sweep
 
     points = sweep(params, "load", [25e-6, 100e-6, 300e-6], steps=STEPS)
     energy = [p["energy_dissipated"] for p in points]
@@ -237,7 +238,7 @@ def test_load_trend_thesis_4_9_3(params):
 
 
 def test_coating_wear_one_equals_bare_and_zero_has_no_chemical_bonds(params, base):
-    from memstribo.coating import get_coating
+    from memstribo.physics.coating import get_coating
 
     _, bare = base
     ots = get_coating("OTS")
@@ -277,7 +278,7 @@ def test_roll_coordinate_speed_is_the_surface_speed(params):
 
 
 def test_measured_profile_and_map(params, afm_dir):
-    from memstribo.readers import read_topography
+    from memstribo.surfaces.readers import read_topography
 
     profile = read_topography(afm_dir / "opdx-3.opdx")
     ds = simulate_mesh(params, profile, steps=21)
@@ -293,7 +294,7 @@ def test_measured_profile_and_map(params, afm_dir):
 
 
 def test_unconverged_steps_are_flagged_and_counted(params, monkeypatch):
-    import memstribo.contact as contact
+    import memstribo.physics.contact as contact
 
     real = contact.solve_line_contact
     calls = {"n": 0}
@@ -319,7 +320,7 @@ def test_window_too_small_is_flagged(params):
 
 
 def test_bad_input(params, afm_dir):
-    from memstribo.readers import SurfaceMap, read_topography
+    from memstribo.surfaces.readers import SurfaceMap, read_topography
 
     with pytest.raises(InputError, match="beyond the elastic range.*GPa"):
         simulate_mesh(thesis_case(params).updated({"normal_load": "1 N"}), steps=11)
@@ -374,7 +375,7 @@ def test_smooth_teeth_reproduce_hertz(params):
     Tolerances: contact width within two 2 nm elements of 2a; peak pressure within 2 % of p0
     (piecewise-constant elements); the vdW and chemical parts still work on the smooth gap.
     """
-    from memstribo.roughness import Profile
+    from memstribo.surfaces.roughness import Profile
 
     flat = Profile(x=np.arange(6000) * 2e-9, z=np.zeros(6000), name="flat")
     ds = simulate_mesh(params.updated({"load_case": "thesis"}), flat, steps=21)
@@ -388,12 +389,13 @@ def test_smooth_teeth_reproduce_hertz(params):
 def test_adhesive_layer_one_rule_with_the_sliding_models(base):
     """Unset adhesive_layer_thickness means adhesive_height in the mesh too (thesis 3.5), bare and coated.
 
-    The same rule as memstribo.sliding (nanoblock.geometry.adhesive_layer_thickness); the Maugis
+    The same rule as memstribo.simulations.sliding (nanoblock.geometry.adhesive_layer_thickness); the Maugis
     range h0 (MODEL §2) is an explicit setting and gives a different (higher) COF.
     """
-    from memstribo.adhesion import maugis_range, maugis_stress, work_of_adhesion
-    from memstribo.coating import get_coating
-    from memstribo.nanoblock.geometry import NanoblockGeometry, adhesive_layer_thickness
+    from memstribo.materials.pair import work_of_adhesion
+    from memstribo.physics.adhesion import maugis_range, maugis_stress
+    from memstribo.physics.coating import get_coating
+    from memstribo.physics.nanoblock.geometry import NanoblockGeometry, adhesive_layer_thickness
 
     params, _ = base
     params = thesis_case(params)
@@ -416,12 +418,12 @@ def test_adhesive_layer_one_rule_with_the_sliding_models(base):
 
 
 @pytest.mark.parametrize("module, name, key", [
-    ("memstribo.friction", "chemical_bond_count", "energy_chemical"),
-    ("memstribo.friction", "vdw_bond_count", "energy_vdw"),
-    ("memstribo.friction", "bond_breaking_energy", "energy_dissipated"),
-    ("memstribo.friction", "adhesion_force", "adhesion_force_mean"),
-    ("memstribo.adhesion", "pull_off_force", "adhesion_force_mean"),
-    ("memstribo.nanoblock.mechanics", "elastic_interlocking_energy", "energy_elastic"),
+    ("memstribo.physics.friction", "chemical_bond_count", "energy_chemical"),
+    ("memstribo.physics.friction", "vdw_bond_count", "energy_vdw"),
+    ("memstribo.physics.friction", "bond_breaking_energy", "energy_dissipated"),
+    ("memstribo.physics.friction", "adhesion_force", "adhesion_force_mean"),
+    ("memstribo.physics.adhesion", "pull_off_force", "adhesion_force_mean"),
+    ("memstribo.physics.nanoblock.mechanics", "elastic_interlocking_energy", "energy_elastic"),
 ])
 def test_the_cycle_calls_the_published_relations(params, monkeypatch, module, name, key):
     """#11 item 2: the engine calls the one function of each relation, so replacing it changes the result."""
@@ -437,8 +439,8 @@ def test_the_cycle_calls_the_published_relations(params, monkeypatch, module, na
 
 def test_sliding_axis_turns_a_map(params, afm_dir):
     """#14 item 5: which axis of a map runs along the flank; y transposes the map."""
-    from memstribo.mesh import orient_map
-    from memstribo.readers import SurfaceMap
+    from memstribo.simulations.mesh import orient_map
+    from memstribo.surfaces.readers import SurfaceMap
 
     surface = SurfaceMap(np.arange(12.0).reshape(3, 4) * 1e-9, 1e-9, 2e-9, name="m")
     assert orient_map(surface, "x") is surface

@@ -7,11 +7,11 @@ import math
 import numpy as np
 import pytest
 
-from memstribo import roughness as r
+from memstribo.surfaces import roughness as r
 from memstribo.errors import InputError
-from memstribo.nanoblock.geometry import NanoblockGeometry, nanoblock_geometry_from_profile
-from memstribo.readers import SurfaceMap
-from memstribo.roughness import Profile
+from memstribo.physics.nanoblock.geometry import NanoblockGeometry, nanoblock_geometry_from_profile
+from memstribo.surfaces.readers import SurfaceMap
+from memstribo.surfaces.roughness import Profile
 
 from conftest import AFM
 

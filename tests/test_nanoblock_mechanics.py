@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from memstribo.errors import InputError
-from memstribo.nanoblock.mechanics import (
+from memstribo.physics.nanoblock.mechanics import (
     BlockStiffness,
     axial_stiffness,
     column_fixed_gap,

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from memstribo import potentials as pot
+from memstribo.physics import potentials as pot
 from memstribo.errors import InputError
 
 # reduced units for the integration checks: sigma = epsilon = N1 = l_z = 1

@@ -97,7 +97,7 @@ def params():
 @SLOW
 @given(load=st.floats(1e-6, 300e-6), bonds=st.integers(4, 12))
 def test_dissipated_energy_of_a_slide_is_not_negative(params, load, bonds):
-    from memstribo import sliding
+    from memstribo.simulations import sliding
 
     dataset = sliding.slide("fixed-load", params, load=load, distance=bonds * params["bond_length"])
     for name in ("energy_chemical", "energy_vdw", "energy_elastic"):
@@ -110,7 +110,7 @@ def test_dissipated_energy_of_a_slide_is_not_negative(params, load, bonds):
 @QUICK
 @given(load=st.floats(1e-7, 1e-3), width_factor=st.floats(0.5, 2.0))
 def test_bond_breaking_energy_and_friction_estimate_are_not_negative(params, load, width_factor):
-    from memstribo import friction
+    from memstribo.physics import friction
 
     estimate = friction.estimate_from_parameters(
         params.updated({"adhesive_width": params["adhesive_width"] * width_factor}), load=load)
@@ -125,7 +125,7 @@ def test_bond_breaking_energy_and_friction_estimate_are_not_negative(params, loa
 @given(amplitudes=st.lists(st.floats(0, 5e9), min_size=1, max_size=60), exponent=st.floats(0.5, 4.0),
        coefficient=st.floats(1e-40, 1e-5))
 def test_damage_does_not_decrease_with_cycles(amplitudes, exponent, coefficient):
-    from memstribo.damage import damage_sum
+    from memstribo.physics.damage import damage_sum
 
     with np.errstate(over="ignore"):
         totals = [float(damage_sum(amplitudes[:n], exponent, coefficient)) for n in range(len(amplitudes) + 1)]
@@ -138,7 +138,7 @@ def test_damage_does_not_decrease_with_cycles(amplitudes, exponent, coefficient)
 @given(load=st.floats(1e-7, 1e-2), face_width=st.floats(1e-7, 1e-4), radius=st.floats(1e-7, 1e-3),
        modulus=st.floats(1e9, 1e12))
 def test_hertz_line_contact_carries_its_load(load, face_width, radius, modulus):
-    from memstribo.gear import hertz_line_contact
+    from memstribo.physics.gear import hertz_line_contact
 
     contact = hertz_line_contact(load, face_width, radius, modulus)
     # elliptical pressure p0 sqrt(1 - x^2/a^2) over -a..a, times the face width, is the load
@@ -151,7 +151,7 @@ def test_hertz_line_contact_carries_its_load(load, face_width, radius, modulus):
 def test_power_law_asperity_pressure_integrates_to_the_load(load, degree, height_nm):
     from scipy.integrate import quad
 
-    from memstribo.asperity import power_law_contact, power_law_pressure
+    from memstribo.physics.asperity import power_law_contact, power_law_pressure
 
     shape = height_nm * 1e-9 / (10e-9) ** degree   # B_d: a height of height_nm at r = 10 nm
     modulus = 91e9

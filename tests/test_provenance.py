@@ -164,7 +164,7 @@ def test_every_csv_has_a_provenance_header_and_reads_back(run_folder):
                             usecols=range(1, len(table.columns) + 1), dtype=str)
         assert values.shape[0] == len(table)
         if path.name.startswith("profile_"):  # a written profile reads back as a profile
-            from memstribo.readers import read_topography
+            from memstribo.surfaces.readers import read_topography
 
             profile = read_topography(path)
             np.testing.assert_allclose(profile.z, table.iloc[:, 0].to_numpy(), rtol=1e-12, atol=0)
@@ -194,7 +194,7 @@ def test_write_dataset_normalises_units_and_keeps_the_input(tmp_path):
 
 
 def test_synthetic_roughness_names_its_seed():
-    from memstribo.roughness import default_profile
+    from memstribo.surfaces.roughness import default_profile
 
     params = get_parameter_values()
     attrs = provenance_attributes(params, roughness=default_profile(params))

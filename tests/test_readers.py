@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from memstribo.errors import DataFileError, InputError
-from memstribo.readers import SurfaceMap, read_topography
-from memstribo.roughness import Profile, areal_statistics, line_scan_statistics, profile_statistics
+from memstribo.surfaces.readers import SurfaceMap, read_topography
+from memstribo.surfaces.roughness import Profile, areal_statistics, line_scan_statistics, profile_statistics
 
 from conftest import AFM
 

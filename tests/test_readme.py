@@ -6,7 +6,7 @@ README = (Path(__file__).resolve().parent.parent / "README.md").read_text(encodi
 
 
 def test_readme_quotes_the_default_meshing_cycle(params):
-    from memstribo.mesh import simulate_mesh, summarize
+    from memstribo.simulations.mesh import simulate_mesh, summarize
 
     summary = summarize(simulate_mesh(params))
     assert not summary["stiction"]  # README: the first realisation does not stick
@@ -21,7 +21,7 @@ def test_readme_quotes_the_default_meshing_cycle(params):
 
 def test_readme_quotes_the_ensemble(params):
     """The README's ensemble band (16 realisations) comes from the code."""
-    from memstribo.mesh import simulate_ensemble
+    from memstribo.simulations.mesh import simulate_ensemble
 
     ensemble = simulate_ensemble(params, realisations=16)
     assert f"probability {ensemble['stiction_probability'] * 100:.0f} %" in README

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from memstribo import reference as ref
+from memstribo.physics import closed_form as ref
 from memstribo.errors import InputError
 
 W, R, E = 12.5, 20e-6, 100e9  # N/m, m, Pa

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from memstribo.chain import FigureRecord, RunOptions, RunResult, StageRecord
-from memstribo.report import render_report, write_report
+from memstribo.job.chain import FigureRecord, RunOptions, RunResult, StageRecord
+from memstribo.job.report import render_report, write_report
 from memstribo.validation import ValidationRow, compare
 
 EVIL = "<script>alert('x')</script>&\"scan\".txt"
@@ -135,7 +135,7 @@ def test_browser_check_detects_a_broken_figure(tmp_path, params):
 def test_validation_rows_without_a_checkout_keep_the_other_topics(monkeypatch, tmp_path):
     # an installed wheel has no data/afm/: the measured-file rows are left out, with a note, not the whole table
     import memstribo.validation.roughness as roughness_rows
-    from memstribo.report import validation_rows
+    from memstribo.job.report import validation_rows
 
     with_files, note = validation_rows()
     assert note is None

@@ -7,9 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from memstribo import roughness as r
+from memstribo.surfaces import roughness as r
 from memstribo.errors import InputError
-from memstribo.roughness import Profile
+from memstribo.surfaces.roughness import Profile
 
 from conftest import AFM
 
@@ -336,7 +336,7 @@ def test_cli_map_resample(cli):
 def test_cli_save_profile_round_trip(cli, tmp_path):
     target = tmp_path / "out" / "thesis.txt"
     out = cli.json("roughness", "thesis", "--resample", "10 nm", "--save-profile", target)
-    from memstribo.readers import read_topography
+    from memstribo.surfaces.readers import read_topography
 
     again = read_topography(target)
     assert again.n_points == out["n_points"] and again.sample_spacing == pytest.approx(10e-9, rel=1e-12)

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from memstribo import sliding
+from memstribo.simulations import sliding
 from memstribo.errors import InputError
-from memstribo.roughness import Profile
+from memstribo.surfaces.roughness import Profile
 
 SPLIT = ("cof_chemical", "cof_vdw", "cof_elastic")
 ENERGIES = ("energy_chemical", "energy_vdw", "energy_elastic")
@@ -121,7 +121,7 @@ def test_flat_counter_surface_matches_full_overlap(params_m):
 
 
 def test_real_afm_profile(params_m, afm_dir):
-    from memstribo.readers import read_topography
+    from memstribo.surfaces.readers import read_topography
 
     profile = read_topography(afm_dir / "si_profile_linescan.txt")
     ds = sliding.slide_fixed_load(params_m, profile, distance=0.3e-6)
@@ -204,7 +204,7 @@ def test_too_many_steps(params_m):
 
 def test_physical_limits_are_warnings(params):
     """MODEL 7c: results past what silicon can carry say so (the issue's 22-213 GPa at 300 uN)."""
-    from memstribo.sliding import slide, summarize
+    from memstribo.simulations.sliding import slide, summarize
 
     heavy = summarize(slide("fixed-load", params.updated({"normal_load": "300 uN"}), distance=20e-9))
     assert heavy.max_atomic_stress > params["elastic_limit_pressure"]

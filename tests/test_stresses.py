@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from memstribo import stresses as st
+from memstribo.physics import stresses as st
 from memstribo.errors import InputError
 
 NU = 0.3

@@ -15,14 +15,14 @@ import pytest
 
 import _study_points
 from memstribo.errors import InputError
-from memstribo.study import POINT_FUNCTIONS, load_study_spec, prepare_points, run_study, study_spec
+from memstribo.simulations.study import POINT_FUNCTIONS, load_study_spec, prepare_points, run_study, study_spec
 
 TESTS = Path(__file__).resolve().parent
 #: through the Python API a study runs any module-level function; spec files name registered ones ("hertz")
 HERTZ = _study_points.hertz_point
 
 #: `memstribo study` in a subprocess that first registers the test function as "hertz" (Python API)
-CLI_WITH_HERTZ = ("import sys, _study_points; from memstribo.study import register_point_function; "
+CLI_WITH_HERTZ = ("import sys, _study_points; from memstribo.simulations.study import register_point_function; "
                   "register_point_function('hertz', _study_points.hertz_point); "
                   "from memstribo.cli.main import main; sys.exit(main(sys.argv[1:]))")
 
@@ -256,8 +256,8 @@ def test_cli_study_json_and_bad_input_exit_2(cli, tmp_path):
 
 def test_default_point_function_is_the_mesh_summary(params, tmp_path):
     """The built-in 'mesh' point: a coated point at wear = 1 equals bare silicon, and equals a direct call."""
-    pytest.importorskip("memstribo.mesh")
-    from memstribo import mesh
+    pytest.importorskip("memstribo.simulations.mesh")
+    from memstribo.simulations import mesh
 
     spec = study_spec({"name": "mesh check", "fixed": {"steps": 6},
                        "points": [{"coating": "OTS", "wear": 1.0}, {"coating": "none"}]})
@@ -285,9 +285,9 @@ def test_example_study_specs_are_valid(params, name, n_points):
 
 
 def test_unreachable_scheduler_is_an_input_error(cli, tmp_path, monkeypatch):
-    import memstribo.study
+    import memstribo.simulations.study
 
-    monkeypatch.setattr(memstribo.study, "CONNECT_TIMEOUT", "1s")
+    monkeypatch.setattr(memstribo.simulations.study, "CONNECT_TIMEOUT", "1s")
     spec = write_spec(tmp_path / "s.toml", SPEC)
     code, out, err = cli("study", spec, "--out", tmp_path / "out", "--scheduler", "tcp://127.0.0.1:9")
     assert code == 2, err
@@ -305,7 +305,7 @@ def test_study_results_carry_provenance(tmp_path):
     """#15 item 8: the study's NetCDF carries the version, parameters and the spec that made it."""
     import xarray as xr
 
-    from memstribo.study import run_study, study_spec
+    from memstribo.simulations.study import run_study, study_spec
 
     spec = study_spec({"function": "gear", "grid": {"module": ["3 um", "4 um"]}}, parameters={"face_width": "3 um"})
     run_study(spec, tmp_path / "study", workers=1)

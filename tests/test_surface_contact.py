@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 
-from memstribo import reference as ref
+from memstribo.physics import closed_form as ref
 from memstribo.errors import InputError
-from memstribo.surface_contact import (SurfaceContactSolution, complementarity_residual, rectangle_influence,
+from memstribo.physics.surface_contact import (SurfaceContactSolution, complementarity_residual, rectangle_influence,
                                        solve_surface_contact, surface_displacement)
 
 E = 100e9  # Pa
@@ -258,7 +258,7 @@ def test_cli_surface_options_refused_for_line_contact(cli):
 
 
 def test_fallback_to_polonsky_keer_when_the_set_does_not_settle(monkeypatch):
-    import memstribo.surface_contact as module
+    import memstribo.physics.surface_contact as module
 
     n, length = 64, 1e-6
     z = _rough(n, length, 1e-9, seed=3)

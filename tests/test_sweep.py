@@ -4,7 +4,7 @@ import pytest
 
 from memstribo.cli.sweep import parse_values
 from memstribo.errors import InputError
-from memstribo.mesh import sweep
+from memstribo.simulations.mesh import sweep
 
 STEPS = "21"
 

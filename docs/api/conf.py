@@ -71,8 +71,8 @@ _FOOTNOTE_DEF = re.compile(r"^(\s*)\.\. \[(\d+)\](\s|$)")
 _BARS = re.compile(r"(?<![\\|])\|(?=\S)([^|`]*?\S)\|(?![_|])")
 
 #: Module docstrings written as plain text (aligned columns) rather than reStructuredText,
-#: shown as preformatted text: memstribo.chain (its stage list; owned elsewhere, see the report).
-PLAIN_TEXT_DOCSTRINGS = {"memstribo.chain"}
+#: shown as preformatted text: memstribo.job.chain (its stage list; owned elsewhere, see the report).
+PLAIN_TEXT_DOCSTRINGS = {"memstribo.job.chain"}
 
 
 def _escape_bars(line: str) -> str:

@@ -6,7 +6,7 @@ The model is organised by topic, one module each, in the order of the chain::
     gear       -> contact   -> mesh                               (meshing cycle, ch. 4)
     coating    -> asperity/stresses -> damage                     (functionalised teeth, ch. 5)
 
-Each public function implements one published relation in SI units; :mod:`memstribo.chain`
+Each public function implements one published relation in SI units; :mod:`memstribo.job.chain`
 composes them into the main job (``memstribo run``). Heavy libraries (SurfaceTopography,
 matplotlib, dask) are imported only where they are used, so ``import memstribo`` is quick.
 """
@@ -18,8 +18,8 @@ try:
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
-from .errors import ConvergenceError, DataFileError, InputError, MemstriboError  # noqa: E402
-from .parameters import get_parameter_values  # noqa: E402
+from memstribo.errors import ConvergenceError, DataFileError, InputError, MemstriboError  # noqa: E402
+from memstribo.parameters import get_parameter_values  # noqa: E402
 
 #: The public API (memstribo.api), imported on first use so that ``import memstribo`` stays quick.
 _API = ("read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run")
@@ -37,7 +37,7 @@ __all__ = [
 
 def __getattr__(name):
     if name in _API:
-        from . import api
+        from memstribo import api
 
         return getattr(api, name)
     raise AttributeError(f"module 'memstribo' has no attribute {name!r}")

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError
+from memstribo.errors import InputError
 
 __all__ = ["read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run"]
 
@@ -34,13 +34,13 @@ def _plain(value: Any) -> Any:
 
 
 def read_surface(surface, *, channel: str | None = None, unit: str | None = None):
-    """A measured surface as a memstribo :class:`~memstribo.roughness.Profile` or
-    :class:`~memstribo.readers.SurfaceMap` (heights in m).
+    """A measured surface as a memstribo :class:`~memstribo.surfaces.roughness.Profile` or
+    :class:`~memstribo.surfaces.readers.SurfaceMap` (heights in m).
 
     Parameters
     ----------
     surface : str, Path, Profile, SurfaceMap or SurfaceTopography topography
-        A file of any format :func:`memstribo.readers.read_topography` reads, or an object
+        A file of any format :func:`memstribo.surfaces.readers.read_topography` reads, or an object
         already in memory. A SurfaceTopography ``Topography`` (2D) or ``UniformLineScan`` (1D)
         is converted with its ``physical_sizes`` and ``unit``.
     channel, unit : str, optional
@@ -50,10 +50,10 @@ def read_surface(surface, *, channel: str | None = None, unit: str | None = None
     -------
     Profile or SurfaceMap
     """
-    from .roughness import Profile
+    from memstribo.surfaces.roughness import Profile
 
     if isinstance(surface, (str, Path)):
-        from .readers import read_topography
+        from memstribo.surfaces.readers import read_topography
 
         return read_topography(surface, channel=channel, unit=unit)
     if isinstance(surface, Profile) or hasattr(surface, "line_scans"):
@@ -68,9 +68,9 @@ def _from_surface_topography(topography):
     """A SurfaceTopography topography (1D or 2D, uniform grid) as a Profile or SurfaceMap [m]."""
     import numpy as np
 
-    from .readers import SurfaceMap
-    from .roughness import Profile
-    from .units import to_si
+    from memstribo.surfaces.readers import SurfaceMap
+    from memstribo.surfaces.roughness import Profile
+    from memstribo.units import to_si
 
     unit = getattr(topography, "unit", None) or "m"
     scale = to_si(f"1 {unit}", "m", "unit of the topography")
@@ -104,7 +104,7 @@ def parameter_set(name: str = "silicon_thesis", overrides: dict | None = None, *
     memstribo.parameters.Parameters
         Every value validated and in SI, with its source (``"Python API"`` for the changes).
     """
-    from .parameters import get_parameter_values
+    from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values(name)
     changes = {**(overrides or {}), **values}
@@ -120,11 +120,11 @@ class MeshCycle:
     Attributes
     ----------
     dataset : xarray.Dataset
-        The first realisation over the steps (``memstribo.mesh.simulate_mesh``).
+        The first realisation over the steps (``memstribo.simulations.mesh.simulate_mesh``).
     summary : dict
         Its summary (the keys of ``memstribo mesh --json``).
     ensemble : dict or None
-        The verdict over the realisations (``memstribo.mesh.simulate_ensemble``), without the
+        The verdict over the realisations (``memstribo.simulations.mesh.simulate_ensemble``), without the
         per-realisation summaries, or None for one realisation.
     """
 
@@ -177,8 +177,8 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     -------
     MeshCycle
     """
-    from .coating import get_coating
-    from .mesh import simulate_ensemble, simulate_mesh, summarize
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.mesh import simulate_ensemble, simulate_mesh, summarize
 
     params = parameter_set() if params is None else params
     roughness = None if surface is None else read_surface(surface)
@@ -215,10 +215,10 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     import numpy as np
     import xarray as xr
 
-    from .coating import get_coating
-    from .mesh import SUMMARY_UNITS
-    from .mesh import sweep as mesh_sweep
-    from .units import to_si
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.mesh import SUMMARY_UNITS
+    from memstribo.simulations.mesh import sweep as mesh_sweep
+    from memstribo.units import to_si
 
     units = {"load": "N", "torque": "N*m", "area": ""}
     if parameter not in units:
@@ -256,10 +256,10 @@ def run(config: str | Path | None = None, out: str | Path = "memstribo-results",
 
     Returns
     -------
-    memstribo.chain.RunResult
+    memstribo.job.chain.RunResult
     """
-    from .chain import RunChain, RunOptions
-    from .parameters import read_config
+    from memstribo.job.chain import RunChain, RunOptions
+    from memstribo.parameters import read_config
 
     table: dict[str, Any] = {}
     base = None

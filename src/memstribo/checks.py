@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import InputError
+from memstribo.errors import InputError
 
 __all__ = ["as_array", "as_positive_scalar"]
 

@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputError
+from memstribo.errors import InputError
 
 
 def ensure_directory(path: str | Path) -> Path:
@@ -145,7 +145,7 @@ def _utc_now() -> str:
 
 
 def _version() -> str:
-    from . import __version__
+    from memstribo import __version__
 
     return __version__
 
@@ -229,7 +229,7 @@ def provenance_attributes(params=None, *, roughness=None, extra: Mapping[str, An
         (``"CF-1.8"``), ``title``, ``source``, ``history``, ``date_created`` (ISO 8601,
         UTC), ``memstribo_version``, ``references``, ``models_cited``, and the above.
     """
-    from .references import used_references
+    from memstribo.references import used_references
 
     version = _version()
     created = _utc_now()
@@ -260,8 +260,8 @@ def provenance_attributes(params=None, *, roughness=None, extra: Mapping[str, An
 
 
 def _parameter_attributes(params) -> dict[str, Any]:
-    from .errors import MemstriboError
-    from .parameters import SPECS, get_parameter_values
+    from memstribo.errors import MemstriboError
+    from memstribo.parameters import SPECS, get_parameter_values
 
     def unit(name):
         spec = SPECS.get(name)

@@ -12,7 +12,7 @@ import functools
 import math
 import re
 
-from .errors import InputError
+from memstribo.errors import InputError
 
 _PLAIN_NUMBER = re.compile(r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?\s*$", re.ASCII)
 

@@ -7,6 +7,6 @@ the framework prints it as a readable table with units, or with ``--json`` as ex
 JSON object of SI values. Keep these modules light: import heavy libraries inside ``run``.
 """
 
-from .common import CommandResult, format_quantity
+from memstribo.cli.common import CommandResult, format_quantity
 
 __all__ = ["CommandResult", "format_quantity"]

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "asperity"
 HELP = "contact radius, approach and pressures of a power-law atomic asperity f(r) = B r^d"
@@ -25,11 +25,12 @@ def register(subparsers, parents):
 
 
 def run(args, params):
-    from ..asperity import _contact_modulus_from, nanoblock_load_sharing, power_law_contact
-    from ..errors import InputError
-    from ..units import to_si
+    from memstribo.materials.pair import contact_modulus_of
+    from memstribo.physics.asperity import nanoblock_load_sharing, power_law_contact
+    from memstribo.errors import InputError
+    from memstribo.units import to_si
 
-    from ..parameters import coerce_value
+    from memstribo.parameters import coerce_value
 
     def option(text, parameter, name):
         try:
@@ -44,7 +45,7 @@ def run(args, params):
     degree = params["asperity_degree"] if args.degree is None else option(args.degree, "asperity_degree", "--degree")
     coefficient = (params["asperity_shape_coefficient"] if args.shape_coefficient is None
                    else option(args.shape_coefficient, "asperity_shape_coefficient", "--shape-coefficient"))
-    modulus = _contact_modulus_from(params)
+    modulus = contact_modulus_of(params)
     notes = [f"  power-law asperity d = {degree:g}, B = {coefficient:g} m^({1 - degree:g}), E* = {modulus / 1e9:.5g} GPa"]
     values = {}
     asperity_load = load

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .common import CommandResult, add_progress_argument, format_value, progress_enabled
+from memstribo.cli.common import CommandResult, add_progress_argument, format_value, progress_enabled
 
 NAME = "coating"
 HELP = "COF, friction force and stiction margin of SAM-coated teeth for worn fractions Omega"
@@ -34,8 +34,8 @@ def register(subparsers, parents):
 
 def parse_wear_list(text) -> list[float]:
     """'0,0.2,0.4' -> [0.0, 0.2, 0.4], each checked to lie in 0..1."""
-    from ..coating import check_wear
-    from ..errors import InputError
+    from memstribo.physics.coating import check_wear
+    from memstribo.errors import InputError
 
     items = [item.strip() for item in str(text).split(",")]
     if not items or any(item == "" for item in items):
@@ -48,10 +48,11 @@ def parse_wear_list(text) -> list[float]:
 
 
 def run(args, params):
-    from ..coating import SWEEP_VARIABLES, get_coating, wear_sweep
-    from ..errors import InputError
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.coating_wear import SWEEP_VARIABLES, wear_sweep
+    from memstribo.errors import InputError
 
-    from .mesh import apply_load_case
+    from memstribo.cli.mesh import apply_load_case
 
     params = apply_load_case(args, params)
     coating = get_coating(args.coating, params)
@@ -72,12 +73,12 @@ def run(args, params):
     notes = [f"  coating {coating.name}: U_vdW = {coating.vdw_bond_energy:.4g} J, A = {coating.hamaker_constant:.3g} J, "
              f"w = {coating.work_of_adhesion:.4g} J/m^2; the pinion's coating fully worn (thesis 5.5.3)"]
     if args.out:
-        from ..output import provenance_attributes
-        from ..roughness import default_profile
+        from memstribo.output import provenance_attributes
+        from memstribo.surfaces.roughness import default_profile
 
         provenance = provenance_attributes(params, roughness=default_profile(params), extra={
             "command": "memstribo coating", "coating": coating.name,
-            "models": "memstribo.coating.wear_sweep (thesis 5.4, 5.5.3)"})
+            "models": "memstribo.simulations.coating_wear.wear_sweep (thesis 5.4, 5.5.3)"})
         notes.extend(_write_outputs(sweep, coating, args.out, provenance))
     if len(points) == 1:
         return CommandResult(values={"coating": coating.name, **points[0]}, units={"wear": "", **units},
@@ -94,7 +95,7 @@ def run(args, params):
 
 
 def _write_outputs(sweep, coating, folder, provenance=None) -> list[str]:
-    from ..output import new_figure, save_figure, write_dataset
+    from memstribo.output import new_figure, save_figure, write_dataset
 
     written = write_dataset(sweep, folder, "coating_wear", provenance=provenance)
     wear = sweep["wear"].values * 100
@@ -119,8 +120,9 @@ def _write_outputs(sweep, coating, folder, provenance=None) -> list[str]:
 
 
 def _calibrate(args, params, coating):
-    from ..coating import calibrate_vdw_bond_energy, coating_config
-    from ..output import atomic_write_text
+    from memstribo.physics.coating import coating_config
+    from memstribo.simulations.coating_wear import calibrate_vdw_bond_energy
+    from memstribo.output import atomic_write_text
 
     calibrated, record = calibrate_vdw_bond_energy(params, coating, args.calibrate, steps=args.steps)
     values = {"coating": coating.name, "target_cof": args.calibrate, **record,

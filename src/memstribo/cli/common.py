@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..output import format_quantity, format_value
+from memstribo.output import format_quantity, format_value
 
 __all__ = ["CommandResult", "format_quantity", "format_value", "add_progress_argument", "progress_enabled",
            "PROGRESS_CHOICES"]

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "constants"
 HELP = "Lennard-Jones, adhesion and bond constants of the material (sigma, epsilon, E*, w, C_NS, pull-off force)"
@@ -35,9 +35,9 @@ def register(subparsers, parents):
 
 
 def run(args, params):
-    from ..adhesion import nanoscale_constants, pull_off_force
-    from ..errors import InputError
-    from ..units import to_si
+    from memstribo.physics.adhesion import nanoscale_constants, pull_off_force
+    from memstribo.errors import InputError
+    from memstribo.units import to_si
 
     constants = nanoscale_constants(params)
     half_width = constants.half_width

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "contact"
 HELP = "line contact of a cylinder on a measured or flat profile: contact length, pressures, approach"
@@ -41,14 +41,14 @@ def register(subparsers, parents):
 
 
 def _defaults(params):
-    from ..gear import pitch_point_line_contact
+    from memstribo.physics.gear import pitch_point_line_contact
 
     return pitch_point_line_contact(params)
 
 
 def _positive(text, unit, name):
-    from ..errors import InputError
-    from ..units import to_si
+    from memstribo.errors import InputError
+    from memstribo.units import to_si
 
     value = to_si(text, unit, name)
     if value <= 0:
@@ -60,8 +60,8 @@ def contact_problem(args, params):
     """The separation [m], element width [m], modulus [Pa], radius [m], load [N/m] and a description."""
     import numpy as np
 
-    from ..errors import InputError
-    from ..reference import hertz_line_half_width
+    from memstribo.errors import InputError
+    from memstribo.physics.closed_form import hertz_line_half_width
 
     need_defaults = args.modulus is None or args.radius is None or args.load is None
     modulus, radius, load = _defaults(params) if need_defaults else (None, None, None)
@@ -79,7 +79,7 @@ def contact_problem(args, params):
         heights = np.zeros(n)  # the gap is the library's cylinder_on_flat (the same x grid below)
         label = f"smooth cylinder on a flat, {n} elements over {length * 1e9:.4g} nm"
     else:
-        from ..readers import read_topography
+        from memstribo.surfaces.readers import read_topography
 
         data = read_topography(args.profile, channel=args.channel)
         if hasattr(data, "line_scans"):
@@ -118,9 +118,9 @@ def run(args, params):
     _refuse_surface_options(args)
     if getattr(args, "adhesion", False) or getattr(args, "pull_off", False):
         return run_adhesion(args, params)
-    from ..contact import solve_line_contact
-    from ..errors import ConvergenceError, InputError
-    from ..reference import hertz_line_half_width, hertz_line_peak_pressure
+    from memstribo.physics.contact import solve_line_contact
+    from memstribo.errors import ConvergenceError, InputError
+    from memstribo.physics.closed_form import hertz_line_half_width, hertz_line_peak_pressure
 
     separation, dx, modulus, radius, load, label = contact_problem(args, params)
     solution = solve_line_contact(separation, dx, modulus, load=load, periodic=args.periodic,
@@ -181,7 +181,7 @@ def register_adhesion(parser):
 
 def cohesive_law(args, params):
     """sigma0 [Pa], h0 [m] and w = sigma0 h0 [J/m^2]: the parameter set's Maugis values unless overridden."""
-    from ..adhesion import nanoscale_constants
+    from memstribo.physics.adhesion import nanoscale_constants
 
     constants = nanoscale_constants(params)
     sigma0 = (_positive(args.cohesive_stress, "Pa", "--cohesive-stress") if args.cohesive_stress is not None
@@ -201,8 +201,8 @@ def run_adhesion(args, params):
 
     import numpy as np
 
-    from ..errors import ConvergenceError, InputError
-    from ..reference import (jkr_line_pull_off_load, maugis_dugdale_line_pull_off, maugis_line_parameter)
+    from memstribo.errors import ConvergenceError, InputError
+    from memstribo.physics.closed_form import (jkr_line_pull_off_load, maugis_dugdale_line_pull_off, maugis_line_parameter)
 
     sigma0, h0, w = cohesive_law(args, params)
     need_defaults = args.modulus is None or args.radius is None or args.load is None
@@ -218,7 +218,7 @@ def run_adhesion(args, params):
                 f"E* = {modulus / 1e9:.4g} GPa).")
 
     if args.pull_off:
-        from ..adhesive_contact import line_contact_pull_off
+        from memstribo.physics.adhesive_contact import line_contact_pull_off
 
         if not args.flat:
             raise InputError("--pull-off needs --flat (a smooth cylinder on a flat)")
@@ -248,10 +248,10 @@ def run_adhesion(args, params):
         return CommandResult(values=values, units=units, title="adhesive line contact: pull-off (per unit face width)",
                              notes=notes)
 
-    from ..contact import solve_line_contact
+    from memstribo.physics.contact import solve_line_contact
 
-    from ..reference import hertz_line_half_width
-    from ..units import to_si
+    from memstribo.physics.closed_form import hertz_line_half_width
+    from memstribo.units import to_si
 
     # the load may be tensile (negative) with adhesion; the grid checks of contact_problem use the
     # Hertz load whose half-width is the larger of Hertz's at |load| and JKR's at zero load
@@ -319,7 +319,7 @@ def register_surface(parser, source):
 
 def _refuse_surface_options(args):
     """The --surface options make no sense for a line contact: say so rather than ignore them."""
-    from ..errors import InputError
+    from memstribo.errors import InputError
 
     given = [flag for flag, name in (("--physical-size", "physical_size"), ("--mean-pressure", "mean_pressure"),
                                      ("--out", "out")) if getattr(args, name, None) is not None]
@@ -331,7 +331,7 @@ def _physical_size(text):
     """'10um' -> (1e-5, 1e-5); '10umx5um' or '10 um x 5 um' -> (1e-5, 5e-6) [m]."""
     import re
 
-    from ..errors import InputError
+    from memstribo.errors import InputError
 
     parts = [part.strip() for part in re.split(r"(?<=[a-zA-Zµ.\d])\s*[xX×]\s*(?=[\d.])", text.strip())]
     if len(parts) not in (1, 2):
@@ -347,7 +347,7 @@ def surface_problem(args):
 
     import numpy as np
 
-    from ..errors import InputError
+    from memstribo.errors import InputError
 
     path = Path(args.surface)
     size = _physical_size(args.physical_size) if args.physical_size is not None else None
@@ -370,7 +370,7 @@ def surface_problem(args):
         name = path.name
         source = f"{path} (NumPy array, heights in m)"
     else:
-        from ..readers import read_topography
+        from memstribo.surfaces.readers import read_topography
 
         data = read_topography(path, channel=args.channel)
         if not hasattr(data, "heights"):
@@ -391,8 +391,8 @@ def surface_problem(args):
 
 def run_surface(args, params):
     """``memstribo contact --surface FILE``: a rough (or measured) surface pressed on a flat."""
-    from ..errors import ConvergenceError, InputError
-    from ..surface_contact import solve_surface_contact
+    from memstribo.errors import ConvergenceError, InputError
+    from memstribo.physics.surface_contact import solve_surface_contact
 
     if (args.mean_pressure is None) == (args.load is None):
         raise InputError("with --surface give exactly one of --mean-pressure P (e.g. '50 MPa') and --load W "
@@ -437,7 +437,7 @@ def write_surface_outputs(solution, folder):
     """Pressure and gap as NetCDF (units attrs) and a PNG figure of pressure and contact; returns the paths."""
     import numpy as np
 
-    from ..output import new_figure, save_figure, write_dataset
+    from memstribo.output import new_figure, save_figure, write_dataset
 
     dataset = solution.to_xarray()
     written = write_dataset(dataset, folder, "surface_contact", csv=False)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult, add_progress_argument, progress_enabled
+from memstribo.cli.common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "damage"
 HELP = "damage accumulation in the coating (5-10): omega/c1 per cycle, relative lives, cycles to stiction"
@@ -35,11 +35,11 @@ def register(subparsers, parents):
 
 def parse_loads(text) -> list[float]:
     """'0.8166 uN, 0.99 uN' or 'table5-1' -> loads [N], each > 0."""
-    from ..errors import InputError
-    from ..units import to_si
+    from memstribo.errors import InputError
+    from memstribo.units import to_si
 
     if str(text).strip().lower().replace(" ", "") in ("table5-1", "thesis"):
-        from ..thesis_tables import TABLE_5_1_LOADS
+        from memstribo.parameters.thesis_tables import TABLE_5_1_LOADS
 
         return TABLE_5_1_LOADS.tolist()
     items = [item.strip() for item in str(text).split(",")]
@@ -50,7 +50,7 @@ def parse_loads(text) -> list[float]:
     loads = [to_si(item, "N", "--loads") for item in items]
     if any(load <= 0 for load in loads):
         raise InputError(f"--loads must all be > 0 N, got {text!r}.")
-    from ..parameters import coerce_value
+    from memstribo.parameters import coerce_value
 
     for item in items:  # a nanoblock carries at most what a tooth does
         try:
@@ -63,11 +63,12 @@ def parse_loads(text) -> list[float]:
 def run(args, params):
     import numpy as np
 
-    from ..coating import get_coating, wear_sweep
-    from ..damage import run_damage
-    from ..errors import InputError
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.coating_wear import wear_sweep
+    from memstribo.physics.damage import run_damage
+    from memstribo.errors import InputError
 
-    from .mesh import apply_load_case
+    from memstribo.cli.mesh import apply_load_case
 
     params = apply_load_case(args, params)
     loads = parse_loads(args.loads) if args.loads is not None else None
@@ -78,7 +79,7 @@ def run(args, params):
     if args.steps is not None and not 2 <= args.steps <= 100_000:
         raise InputError(f"--steps must be an integer from 2 to 100 000, got {args.steps}.")
     if args.steps is not None:
-        from ..parameters import check_mesh_size
+        from memstribo.parameters import check_mesh_size
 
         check_mesh_size(args.steps, params["mesh_window"], params["mesh_grid_spacing"], what="--steps")
     coating = get_coating(args.coating, params)
@@ -86,7 +87,7 @@ def run(args, params):
     mesh_dataset = None
     notes = []
     if loads is None:
-        from ..mesh import simulate_mesh
+        from memstribo.simulations.mesh import simulate_mesh
 
         mesh_dataset = simulate_mesh(params, steps=args.steps, coating=coating, wear=0.0)
         notes.append(f"  load peaks: nanoblock loads of the {coating.name}-coated meshing cycle "
@@ -127,12 +128,13 @@ def run(args, params):
     else:
         notes.append("  c1 unknown: give --set damage_coefficient=C1 [Pa^-m] or --observed-life N for cycles to "
                      "failure and to stiction")
-    from ..asperity import _contact_modulus_from, power_law_contact_radius
+    from memstribo.materials.pair import contact_modulus_of
+    from memstribo.physics.asperity import power_law_contact_radius
 
     largest = float(np.max(outcome.result.asperity_peak_loads, initial=0.0))
     if largest > 0:
         radius = float(power_law_contact_radius(largest, params["asperity_degree"],
-                                                params["asperity_shape_coefficient"], _contact_modulus_from(params)))
+                                                params["asperity_shape_coefficient"], contact_modulus_of(params)))
         if radius > params["asperity_half_width"]:
             notes.append(f"  warning: the largest asperity load gives a contact radius of {radius * 1e9:.3g} nm, more "
                          f"than the asperity half width {params['asperity_half_width'] * 1e9:.3g} nm: the power-law "
@@ -145,13 +147,13 @@ def run(args, params):
         notes.append(f"  corner life / central life = {ratio:.4g} "
                      f"(the corner's coating wears through {100 * (1 - ratio):.3g} % sooner)")
     if args.out:
-        from ..output import provenance_attributes, save_figure, write_dataset
-        from ..roughness import default_profile
+        from memstribo.output import provenance_attributes, save_figure, write_dataset
+        from memstribo.surfaces.roughness import default_profile
 
         uses_mesh = loads is None or sweep is not None
         provenance = provenance_attributes(params, roughness=default_profile(params) if uses_mesh else None, extra={
             "command": "memstribo damage", "coating": coating.name,
-            "models": "memstribo.damage.run_damage (thesis 5.5)",
+            "models": "memstribo.physics.damage.run_damage (thesis 5.5)",
             **({} if uses_mesh else {"roughness_provenance": "none: nanoblock loads given (--loads)"})})
         written = []
         for stem, dataset in outcome.datasets.items():
@@ -169,14 +171,15 @@ def _stress_figures(params, outcome, folder):
     """Pressure and tau_1 along x through the corner/side/central asperities at the largest peak."""
     import numpy as np
 
-    from ..asperity import _contact_modulus_from, power_law_pressure
-    from ..damage import POSITIONS, principal_shear_profile
-    from ..output import new_figure, save_figure
+    from memstribo.materials.pair import contact_modulus_of
+    from memstribo.physics.asperity import power_law_pressure
+    from memstribo.physics.damage import POSITIONS, principal_shear_profile
+    from memstribo.output import new_figure, save_figure
 
     result = outcome.result
     loads = result.asperity_peak_loads
     top = int(np.argmax(loads.sum(axis=1)))
-    modulus = _contact_modulus_from(params)
+    modulus = contact_modulus_of(params)
     d, b = params["asperity_degree"], params["asperity_shape_coefficient"]
     x = result.x
     fig, (ax1, ax2) = new_figure(2, 1, figsize=(5, 6), sharex=True)

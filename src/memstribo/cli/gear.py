@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "gear"
 HELP = "involute spur pair: radii, path of contact, contact ratio, Hertz contact at the pitch point, F_t"
@@ -20,9 +20,9 @@ def register(subparsers, parents):
 
 
 def _module_from_option(text, params):
-    from ..errors import InputError
-    from ..gear import module_from_outer_diameters
-    from ..units import to_si
+    from memstribo.errors import InputError
+    from memstribo.physics.gear import module_from_outer_diameters
+    from memstribo.units import to_si
 
     parts = [p for p in text.split(",") if p.strip()]
     if len(parts) != 2:
@@ -38,7 +38,7 @@ def run(args, params):
     if args.outer_diameters:
         params = params.updated({"module": _module_from_option(args.outer_diameters, params)},
                                 origin="--outer-diameters")
-    from ..gear import gear_summary
+    from memstribo.physics.gear import gear_summary
 
     values, units = gear_summary(params)
     warnings = list(values.pop("design_warnings", []))

@@ -10,9 +10,9 @@ import re
 import sys
 from types import ModuleType
 
-from .. import __version__
-from ..errors import MemstriboError
-from ..output import dumps_json
+from memstribo import __version__
+from memstribo.errors import MemstriboError
+from memstribo.output import dumps_json
 
 EXIT_USAGE = 2
 
@@ -89,7 +89,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def load_parameters(args: argparse.Namespace):
     """The parameter set named by ``--parameter-set`` with ``--config`` then ``--set`` applied."""
-    from ..parameters import get_parameter_values, parse_assignment, read_config
+    from memstribo.parameters import get_parameter_values, parse_assignment, read_config
 
     params = get_parameter_values(args.parameter_set)
     args.config_tables = {}

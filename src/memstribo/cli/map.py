@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "map"
 HELP = "design map: stiction probability, COF and efficiency of an ensemble over a grid of design parameters"
@@ -45,8 +45,8 @@ def register(subparsers, parents):
 def run(args, params):
     from pathlib import Path
 
-    from ..design_map import design_map, load_map_spec
-    from ..errors import InputError
+    from memstribo.simulations.design_map import design_map, load_map_spec
+    from memstribo.errors import InputError
 
     spec = load_map_spec(args.spec)
     if args.workers is not None and not 1 <= args.workers <= 4096:

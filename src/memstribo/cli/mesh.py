@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from .common import CommandResult, add_progress_argument, progress_enabled
+from memstribo.cli.common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "mesh"
 HELP = "meshing-cycle simulation: friction, adhesion, COF and its split, stiction margin (thesis 4.6-4.9)"
@@ -64,12 +64,12 @@ def add_common_arguments(parser):
 
 
 def simulation_options(args, params=None):
-    """Keyword arguments of :func:`memstribo.mesh.simulate_mesh` from the command line."""
-    from ..errors import InputError
+    """Keyword arguments of :func:`memstribo.simulations.mesh.simulate_mesh` from the command line."""
+    from memstribo.errors import InputError
 
     coating = None
     if args.coating:
-        from ..coating import get_coating
+        from memstribo.physics.coating import get_coating
 
         coating = get_coating(args.coating, params)
     elif args.wear != 1.0:
@@ -82,7 +82,7 @@ def simulation_options(args, params=None):
 
 def roughness_of(args):
     """The roughness the command line names, read once and turned along the sliding axis (None: the default)."""
-    from ..mesh import _read_roughness
+    from memstribo.simulations.mesh import _read_roughness
 
     return _read_roughness(None if args.roughness in (None, "thesis") else args.roughness,
                            getattr(args, "sliding_axis", "x"))
@@ -98,8 +98,8 @@ def apply_load_case(args, params):
 
 
 def run(args, params):
-    from ..errors import InputError
-    from ..mesh import SUMMARY_UNITS, simulate_ensemble, simulate_mesh, step_convergence, summarize
+    from memstribo.errors import InputError
+    from memstribo.simulations.mesh import SUMMARY_UNITS, simulate_ensemble, simulate_mesh, step_convergence, summarize
 
     params = apply_load_case(args, params)
     options = simulation_options(args, params)
@@ -160,19 +160,19 @@ def run(args, params):
     if args.out:
         from pathlib import Path
 
-        from ..output import provenance_attributes
+        from memstribo.output import provenance_attributes
 
         roughness = args.roughness if Path(str(args.roughness)).is_file() else dataset.attrs.get("roughness_source")
         notes.extend(write_outputs(dataset, args.out, provenance_attributes(
             params, roughness=roughness, extra={"command": "memstribo mesh",
-                                                "models": "memstribo.mesh.simulate_mesh (thesis 4.6-4.9)"})))
+                                                "models": "memstribo.simulations.mesh.simulate_mesh (thesis 4.6-4.9)"})))
     return CommandResult(values=values, units=dict(SUMMARY_UNITS), title="meshing cycle (thesis 4.6-4.9)",
                          notes=notes)
 
 
 def write_outputs(dataset, folder, provenance=None) -> list[str]:
     """NetCDF (everything), NetCDF + CSV of the per-step series, and the chapter-4 figures."""
-    from ..output import write_dataset
+    from memstribo.output import write_dataset
 
     written = write_dataset(dataset, folder, "mesh", csv=False, provenance=provenance)
     series = dataset.drop_vars([name for name in dataset.variables if "block" in dataset[name].dims])
@@ -185,7 +185,7 @@ def plot_cycle(dataset, folder) -> list:
     """Figures over the cycle: friction force, adhesion force, COF (split), dissipated energy (PNG + SVG)."""
     import numpy as np
 
-    from ..output import new_figure, save_figure
+    from memstribo.output import new_figure, save_figure
 
     c = np.asarray(dataset["c"]) * 1e6
     written = []

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "nanoblock"
 HELP = "nanoblock geometry: from the parameter set, or derived from a measured profile (--from PATH)"
@@ -27,15 +27,15 @@ def register(subparsers, parents):
 
 
 def run(args, params):
-    from ..nanoblock.geometry import NanoblockGeometry, nanoblock_geometry_from_profile
+    from memstribo.physics.nanoblock.geometry import NanoblockGeometry, nanoblock_geometry_from_profile
 
     notes = []
     if args.source is None:
         geometry = NanoblockGeometry.from_parameters(params)
         title = f"nanoblock geometry of parameter set '{params.name}'"
     else:
-        from ..readers import read_topography
-        from ..roughness import default_profile
+        from memstribo.surfaces.readers import read_topography
+        from memstribo.surfaces.roughness import default_profile
 
         if args.source == "thesis":
             surface = default_profile(params)

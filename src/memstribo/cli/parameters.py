@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult, format_quantity
+from memstribo.cli.common import CommandResult, format_quantity
 
 NAME = "parameters"
 HELP = "list the model parameters with their values, units and sources"
@@ -19,7 +19,7 @@ def register(subparsers, parents):
 
 
 def run(args, params):
-    from ..parameters import SPECS
+    from memstribo.parameters import SPECS
 
     if args.coating:
         return _coating(args, params)
@@ -41,7 +41,7 @@ def run(args, params):
 
 def _coating(args, params):
     """The coating's parameter set, each value with its unit and source (overrides applied)."""
-    from ..coating import _UNITS, coating_config, get_coating
+    from memstribo.physics.coating import _UNITS, coating_config, get_coating
 
     coating = get_coating(args.coating, params)
     names = ("vdw_bond_energy", "hamaker_constant", "cutoff_distance", "work_of_adhesion", "water_contact_angle_deg")

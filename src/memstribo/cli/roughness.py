@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "roughness"
 HELP = "roughness parameters (Ra, Rq, rms slope, lambda_q, ...) of an AFM/profilometer file"
@@ -38,7 +38,7 @@ def _resample_rows(surface, step):
     import numpy as np
     from scipy.interpolate import PchipInterpolator
 
-    from ..errors import InputError
+    from memstribo.errors import InputError
 
     ny, nx = surface.heights.shape
     x = np.arange(nx) * surface.dx
@@ -50,12 +50,12 @@ def _resample_rows(surface, step):
 
 
 def run(args, params):
-    from .. import roughness as rough
-    from ..readers import SurfaceMap, read_topography
-    from ..units import to_si
+    from memstribo.surfaces import roughness as rough
+    from memstribo.surfaces.readers import SurfaceMap, read_topography
+    from memstribo.units import to_si
 
-    from ..errors import InputError
-    from ..parameters import check_points
+    from memstribo.errors import InputError
+    from memstribo.parameters import check_points
 
     step = None
     if args.resample is not None:
@@ -78,7 +78,7 @@ def run(args, params):
 
         heights, dx = surface.heights, surface.dx
         if step is not None:
-            from ..parameters import MAX_POINTS
+            from memstribo.parameters import MAX_POINTS
 
             n = check_points(surface.physical_sizes[0], step, "--resample")
             if n * surface.shape[0] > MAX_POINTS:
@@ -107,7 +107,7 @@ def run(args, params):
                          "--resample STEP gives a uniform grid.")
     values.update(synthetic=bool(getattr(surface, "synthetic", False)), name=surface.name, source=surface.source)
     if args.save_profile:
-        from ..readers import write_profile
+        from memstribo.surfaces.readers import write_profile
 
         if isinstance(surface, SurfaceMap):
             scans = surface.line_scans()

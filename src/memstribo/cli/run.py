@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import CommandResult, add_progress_argument, progress_enabled
+from memstribo.cli.common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "run"
 HELP = "the main job: roughness -> nanoblocks -> meshing cycle -> sweeps -> coating -> wear -> damage, with report.html"
@@ -64,9 +64,9 @@ def run(args, params):
     from dataclasses import replace
     from pathlib import Path
 
-    from ..chain import RunChain, RunOptions
-    from ..errors import InputError
-    from ..parameters import read_config
+    from memstribo.job.chain import RunChain, RunOptions
+    from memstribo.errors import InputError
+    from memstribo.parameters import read_config
 
     table = dict(getattr(args, "config_tables", {}).get("run", {}))
     base = Path(args.config).parent if args.config else None
@@ -76,7 +76,7 @@ def run(args, params):
         table.update(config.get("run", {}))
         base = Path(args.config_file).parent
         if args.overrides:  # --set wins over the config file
-            from ..parameters import parse_assignment
+            from memstribo.parameters import parse_assignment
 
             params = params.updated(dict(parse_assignment(t) for t in args.overrides), origin="--set")
     if args.load_case:
@@ -131,7 +131,7 @@ def _prepare_folder(folder, overwrite: bool) -> None:
     """Refuse a non-empty results folder unless ``overwrite``; then clear memstribo's own files from it."""
     import shutil
 
-    from ..errors import InputError
+    from memstribo.errors import InputError
 
     if not folder.exists():
         return

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 
-from .common import CommandResult, add_progress_argument, progress_enabled
+from memstribo.cli.common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "slide"
 HELP = "friction of nanoblocks sliding on a flat or rough surface (single, fixed-gap, fixed-load; 3.5 estimate)"
@@ -39,18 +39,18 @@ def register(subparsers, parents):
 
 def _quantity(text, unit, name, parameter=None):
     """The option's value in SI; with ``parameter``, checked against that parameter's range."""
-    from ..units import to_si
+    from memstribo.units import to_si
 
     if text is None:
         return None
     value = to_si(text, unit, name)
     if parameter is None:
         return value
-    from ..errors import InputError
+    from memstribo.errors import InputError
 
     if parameter == "normal_load" and value <= 0:
         raise InputError(f"{name} must be a positive force, got '{text}'.")
-    from ..parameters import coerce_value
+    from memstribo.parameters import coerce_value
 
     try:
         return coerce_value(parameter, text)
@@ -59,11 +59,11 @@ def _quantity(text, unit, name, parameter=None):
 
 
 def run(args, params):
-    from ..errors import InputError
+    from memstribo.errors import InputError
 
     if args.model == "estimate":
         return _estimate(args, params)
-    from .. import sliding
+    from memstribo.simulations import sliding
 
     load = _quantity(args.load, "N", "--load", "normal_load")
     gap = _quantity(args.gap, "m", "--gap", "sliding_gap")
@@ -79,7 +79,7 @@ def run(args, params):
     if args.profile:
         if args.model == "single":
             raise InputError("--profile: the single model slides on a flat surface; use fixed-gap or fixed-load.")
-        from ..readers import read_topography
+        from memstribo.surfaces.readers import read_topography
 
         profile = read_topography(args.profile)
     progress = progress_enabled(args)
@@ -92,11 +92,11 @@ def run(args, params):
         notes.append("  (synthetic: the thesis's own scan is not published; give --profile for a measured one)")
     notes.append("  cof, forces: means over the steps; energies: totals over the slide")
     if args.out:
-        from ..output import provenance_attributes
+        from memstribo.output import provenance_attributes
 
         roughness = args.profile or (dataset.attrs.get("profile_source") if args.model != "single" else None)
         provenance = provenance_attributes(params, roughness=roughness, extra={
-            "command": f"memstribo slide --model {args.model}", "models": f"memstribo.sliding.slide ({args.model})",
+            "command": f"memstribo slide --model {args.model}", "models": f"memstribo.simulations.sliding.slide ({args.model})",
             **({} if roughness else {"roughness_provenance": "none: a nanoblock on a flat"})})
         notes += [f"  wrote {path}" for path in _write(dataset, args.out, provenance)]
     return CommandResult(values=values, units=sliding.UNITS, title=f"memstribo slide --model {args.model}",
@@ -104,8 +104,8 @@ def run(args, params):
 
 
 def _estimate(args, params):
-    from ..errors import InputError
-    from ..friction import THESIS_3_5_COUNTS, THESIS_3_5_INPUTS, estimate_from_parameters, thesis_estimate
+    from memstribo.errors import InputError
+    from memstribo.physics.friction import THESIS_3_5_COUNTS, THESIS_3_5_INPUTS, estimate_from_parameters, thesis_estimate
 
     if args.profile or args.gap or args.distance or args.step or args.out:
         raise InputError("--model estimate takes only --load (the 3.5 estimate has no profile or slide).")
@@ -134,7 +134,7 @@ def _estimate(args, params):
 
 
 def _write(dataset, folder, provenance=None):
-    from ..output import new_figure, save_figure, write_dataset
+    from memstribo.output import new_figure, save_figure, write_dataset
 
     written = write_dataset(dataset, folder, "slide", csv=False, provenance=provenance)
     steps_only = dataset[[name for name, var in dataset.data_vars.items() if var.dims == ("step",)]]

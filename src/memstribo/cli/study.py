@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 
-from .common import CommandResult, add_progress_argument, progress_enabled
+from memstribo.cli.common import CommandResult, add_progress_argument, progress_enabled
 
 NAME = "study"
 HELP = "run a parameter study (grid or list of points) on Dask; resumable after an interruption"
@@ -45,8 +45,8 @@ def register(subparsers, parents):
 def run(args, params):
     from pathlib import Path
 
-    from ..errors import InputError
-    from ..study import function_name, load_study_spec, prepare_points, run_study
+    from memstribo.errors import InputError
+    from memstribo.simulations.study import function_name, load_study_spec, prepare_points, run_study
 
     spec = load_study_spec(args.spec)
     if args.workers is not None and not 1 <= args.workers <= 4096:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .common import CommandResult
+from memstribo.cli.common import CommandResult
 
 NAME = "sweep"
 HELP = ("meshing cycles over loads (sweep load), drive torques (sweep torque) or nominal contact areas (sweep area), "
@@ -16,7 +16,7 @@ _HEAD = {"load": ["normal_load"], "torque": ["drive_torque"], "area": ["area_mul
 
 
 def register(subparsers, parents):
-    from .mesh import add_common_arguments
+    from memstribo.cli.mesh import add_common_arguments
 
     parser = subparsers.add_parser(
         NAME, parents=parents, help=HELP,
@@ -38,8 +38,8 @@ def parse_values(text: str, unit: str, name: str = "--values") -> list[float]:
     """``"25uN:300uN:25uN"`` -> [2.5e-05, 5e-05, ...]; ``"1,2,4"`` -> [1.0, 2.0, 4.0] (SI)."""
     import numpy as np
 
-    from ..errors import InputError
-    from ..units import to_si
+    from memstribo.errors import InputError
+    from memstribo.units import to_si
 
     text = text.strip()
     if ":" in text:
@@ -60,18 +60,18 @@ def parse_values(text: str, unit: str, name: str = "--values") -> list[float]:
 
 
 def run(args, params):
-    from ..mesh import sweep
-    from .mesh import MESH_KEYS, apply_load_case, simulation_options
+    from memstribo.simulations.mesh import sweep
+    from memstribo.cli.mesh import MESH_KEYS, apply_load_case, simulation_options
 
     params = apply_load_case(args, params)
     values = parse_values(args.values or _DEFAULTS[args.parameter], _UNITS[args.parameter])
     options = simulation_options(args, params)
     progress = options.pop("progress")
-    from .mesh import roughness_of
+    from memstribo.cli.mesh import roughness_of
 
     roughness = roughness_of(args)
     if args.realisations < 1:
-        from ..errors import InputError
+        from memstribo.errors import InputError
 
         raise InputError(f"--realisations must be at least 1, got {args.realisations}.")
     points = sweep(params, args.parameter, values, roughness, progress=progress, realisations=args.realisations,
@@ -86,12 +86,12 @@ def run(args, params):
               for point in points]
     notes = []
     if args.out:
-        from ..output import provenance_attributes
-        from ..roughness import default_profile
+        from memstribo.output import provenance_attributes
+        from memstribo.surfaces.roughness import default_profile
 
         provenance = provenance_attributes(
             params, roughness=default_profile(params) if roughness is None else roughness,
-            extra={"command": f"memstribo sweep {args.parameter}", "models": "memstribo.mesh.sweep (thesis 4.9.3-4.9.4)"})
+            extra={"command": f"memstribo sweep {args.parameter}", "models": "memstribo.simulations.mesh.sweep (thesis 4.9.3-4.9.4)"})
         notes.extend(_write(args.parameter, points, args.out, provenance))
     if args.json:
         return CommandResult(values={"parameter": args.parameter, "points": points})
@@ -118,8 +118,8 @@ def _write(parameter, points, folder, provenance=None) -> list[str]:
     import numpy as np
     import xarray as xr
 
-    from ..mesh import SUMMARY_UNITS
-    from ..output import new_figure, save_figure, write_dataset
+    from memstribo.simulations.mesh import SUMMARY_UNITS
+    from memstribo.output import new_figure, save_figure, write_dataset
 
     dim = _HEAD[parameter][0]
     coordinate = np.array([p[dim] for p in points], dtype=float)

@@ -21,9 +21,9 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from ..errors import InputError, did_you_mean
-from ..units import printable, to_si
-from .definitions import MEMORY_LIMIT_BYTES, RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR, RUN_KEYS, SPECS, ParameterSpec
+from memstribo.errors import InputError, did_you_mean
+from memstribo.units import printable, to_si
+from memstribo.parameters.definitions import MEMORY_LIMIT_BYTES, RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR, RUN_KEYS, SPECS, ParameterSpec
 
 __all__ = [
     "SPECS",
@@ -191,7 +191,7 @@ def check_mesh_size(steps: int, window: float, grid_spacing: float, what: str = 
         :data:`MEMORY_LIMIT_BYTES` (what a 24 GB machine holds besides the interpreter).
 
     A window or grid spacing of ``None`` (sized from the load case) is checked by the meshing
-    cycle once it has sized them (``memstribo.mesh``), with this same function.
+    cycle once it has sized them (``memstribo.simulations.mesh``), with this same function.
     """
     if window is None or grid_spacing is None:
         return

@@ -89,6 +89,8 @@ def _range(name, unit, description, minimum, maximum, why, **kw):
 
 
 _E = "stiffer than hard polymers (0.1 GPa) and no stiffer than diamond (1.2 TPa): softer bodies leave the small-strain elastic model"
+_E_COUNTER = ("from a soft elastomer (1 MPa; the friction fixed point then converges or is flagged unconverged) to diamond "
+              "(1.2 TPa)")
 _NU = "thermodynamic limits of an isotropic solid"
 _ATOMIC = "an atomic length: 0.05 nm (shorter than any bond) to 1 nm"
 
@@ -98,7 +100,7 @@ _SPECS = [
     ParameterSpec("poisson_ratio", "", "Poisson's ratio nu of the tooth material",
                   minimum=-1.0, maximum=0.5, exclusive_minimum=True, why=_NU),
     _range("counter_youngs_modulus", "Pa",
-           "Young's modulus of the counter body (gear tooth); unset: same as youngs_modulus", 1e8, 1.5e12, _E,
+           "Young's modulus of the counter body (gear tooth); unset: same as youngs_modulus", 1e6, 1.5e12, _E_COUNTER,
            optional=True),
     ParameterSpec("counter_poisson_ratio", "", "Poisson's ratio of the counter body; unset: same as poisson_ratio",
                   minimum=-1.0, maximum=0.5, exclusive_minimum=True, optional=True, why=_NU),

@@ -8,7 +8,7 @@ table cannot drift from the code; the tests assert the same comparisons.
 
 from __future__ import annotations
 
-from .rows import ValidationRow, compare  # noqa: F401  (the public names of this package)
+from memstribo.validation.rows import ValidationRow, compare  # noqa: F401  (the public names of this package)
 
 
 #: The topic modules of this package, in the order of the table (one ``rows()`` each).
@@ -18,7 +18,7 @@ TOPICS = ("adhesion", "adhesive_contact", "capillary", "coating", "contact", "da
 
 def all_rows() -> list[ValidationRow]:
     """Rows of every topic module in :data:`TOPICS`, in that order."""
-    from . import (adhesion, adhesive_contact, capillary, coating, contact, damage, friction, gear, mesh, roughness, run, stresses,
+    from memstribo.validation import (adhesion, adhesive_contact, capillary, coating, contact, damage, friction, gear, mesh, roughness, run, stresses,
                    surface_contact)
 
     modules = {"adhesion": adhesion, "adhesive_contact": adhesive_contact, "capillary": capillary, "coating": coating, "contact": contact, "damage": damage, "friction": friction,

@@ -18,8 +18,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from . import all_rows
-from .rows import ValidationRow
+from memstribo.validation import all_rows
+from memstribo.validation.rows import ValidationRow
 
 def _default_output() -> Path:
     """docs/validation.md of the source checkout this module runs from, else ./validation.md."""
@@ -113,7 +113,7 @@ def main(argv: list[str] | None = None) -> int:
             return 1
         print(f"{path} is up to date")
         return 0
-    from ..output import atomic_write_text
+    from memstribo.output import atomic_write_text
 
     atomic_write_text(path, text)
     print(f"wrote {path}")

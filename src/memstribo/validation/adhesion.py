@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 TOPIC = "nanoscale physics"
 CONSTANTS = "memstribo constants --json"
@@ -10,9 +10,9 @@ THESIS_BLOCK = "memstribo constants --half-width '97.5 nm' --json"
 
 
 def rows() -> list[ValidationRow]:
-    from ..adhesion import (contact_modulus, maugis_range, maugis_stress, nanoscale_constants, no_slip_coefficient,
-                            pull_off_force, work_of_adhesion)
-    from ..parameters import get_parameter_values
+    from memstribo.materials.pair import contact_modulus, no_slip_coefficient, work_of_adhesion
+    from memstribo.physics.adhesion import maugis_range, maugis_stress, nanoscale_constants, pull_off_force
+    from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()
     c = nanoscale_constants(params)

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from .contact import smooth_cylinder
-from .rows import ValidationRow, compare
+from memstribo.validation.contact import smooth_cylinder
+from memstribo.validation.rows import ValidationRow, compare
 
 TOPIC = "adhesive contact"
 SILICON = ["--modulus", "85 GPa", "--cohesive-stress", "1.78 GPa", "--cohesive-range", "0.25 nm"]
@@ -23,8 +23,8 @@ def _rounded(value, digits):
 
 def _pull_off(radius, modulus, sigma0, h0, points):
     """What ``memstribo contact --flat --adhesion --pull-off ...`` prints, through the library."""
-    from ..adhesive_contact import line_contact_pull_off
-    from ..reference import maugis_line_parameter
+    from memstribo.physics.adhesive_contact import line_contact_pull_off
+    from memstribo.physics.closed_form import maugis_line_parameter
 
     w = sigma0 * h0
     result = line_contact_pull_off(radius, modulus, w, sigma0, points=points, length=None, tolerance=1e-8,
@@ -35,7 +35,7 @@ def _pull_off(radius, modulus, sigma0, h0, points):
 
 def _adhesive(radius, length, points, modulus, load, sigma0, h0):
     """What ``memstribo contact --flat --adhesion --load ...`` prints, through the library."""
-    from ..reference import maugis_line_parameter
+    from memstribo.physics.closed_form import maugis_line_parameter
 
     out = smooth_cylinder(radius, length, points, modulus, load, cohesive_stress=sigma0, cohesive_range=h0)
     out["maugis_parameter"] = float(maugis_line_parameter(radius, modulus, sigma0 * h0, sigma0))
@@ -49,7 +49,7 @@ def _command(argv):
 def rows() -> list[ValidationRow]:
     from scipy.optimize import brentq
 
-    from ..reference import (dugdale_rigid_line_pull_off, hertz_line_half_width, jkr_line_load,
+    from memstribo.physics.closed_form import (dugdale_rigid_line_pull_off, hertz_line_half_width, jkr_line_load,
                              jkr_line_pull_off_load, maugis_dugdale_line_pull_off)
 
     w = 1.78e9 * 0.25e-9

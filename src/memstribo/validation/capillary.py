@@ -1,4 +1,4 @@
-"""Validation rows of the capillary relations (humid air, issue #17; memstribo.capillary).
+"""Validation rows of the capillary relations (humid air, issue #17; memstribo.physics.capillary).
 
 A numerical meniscus (the Laplace pressure summed over the wetted elements of a gap field,
 ``capillary.capillary_force_from_gap``, the route a contact solution takes) against the closed
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 TOPIC = "capillary"
 COMMAND = "python -m memstribo.validation"
@@ -18,7 +18,7 @@ COMMAND = "python -m memstribo.validation"
 def rows() -> list[ValidationRow]:
     import numpy as np
 
-    from ..capillary import (capillary_force_cylinder, capillary_force_from_gap, capillary_force_sphere,
+    from memstribo.physics.capillary import (capillary_force_cylinder, capillary_force_from_gap, capillary_force_sphere,
                              condensation_height, kelvin_radius)
 
     out = [compare(TOPIC, "Kelvin radius gamma V_m / (R T) of water at 25 degC (RH = 1/e)",

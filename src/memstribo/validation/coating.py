@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 COMMAND = "memstribo coating --wear 0,0.2,0.8,1 --load-case thesis --set interface_model=thesis --json"
 
@@ -11,9 +11,9 @@ FIGURE_5_28 = {0.0: 0.185, 0.2: 0.32, 0.8: 0.75, 1.0: 0.84}
 
 
 def rows() -> list[ValidationRow]:
-    from .. import mesh
-    from ..coating import wear_sweep
-    from ..parameters import get_parameter_values
+    from memstribo.simulations import mesh
+    from memstribo.simulations.coating_wear import wear_sweep
+    from memstribo.parameters import get_parameter_values
 
     # the thesis's reference conditions: its load case and its full-energy vdW band (the calibration's)
     params = get_parameter_values().updated({"load_case": "thesis", "interface_model": "thesis"})

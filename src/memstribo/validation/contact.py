@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 HERTZ_ARGS = ["contact", "--flat", "--radius", "20 um", "--load", "1 N/m", "--modulus", "100 GPa",
               "--points", "2048", "--length", "127.7 nm"]
@@ -11,7 +11,7 @@ DEFAULT_ARGS = ["contact", "--flat", "--points", "4000", "--length", "400 nm"]
 
 def smooth_cylinder(radius, length, points, modulus, load, **keywords):
     """What ``memstribo contact --flat ...`` solves and prints, through the library (never the command line)."""
-    from ..contact import cylinder_on_flat, solve_line_contact
+    from memstribo.physics.contact import cylinder_on_flat, solve_line_contact
 
     separation, dx = cylinder_on_flat(radius, length, points)
     solution = solve_line_contact(separation, dx, modulus, load=load, tolerance=1e-8, **keywords)
@@ -20,9 +20,9 @@ def smooth_cylinder(radius, length, points, modulus, load, **keywords):
 
 
 def rows() -> list[ValidationRow]:
-    from ..gear import pitch_point_line_contact
-    from ..parameters import get_parameter_values
-    from ..reference import hertz_line_approach, hertz_line_half_width, hertz_line_peak_pressure
+    from memstribo.physics.gear import pitch_point_line_contact
+    from memstribo.parameters import get_parameter_values
+    from memstribo.physics.closed_form import hertz_line_approach, hertz_line_half_width, hertz_line_peak_pressure
 
     R, E, W = 20e-6, 100e9, 1.0
     command = "memstribo " + " ".join(f"'{a}'" if " " in a else a for a in HERTZ_ARGS) + " --json"

@@ -7,20 +7,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..thesis_tables import TABLE_5_1, TABLE_5_2, TABLE_5_3, TABLE_5_4
-from .rows import ValidationRow, compare
+from memstribo.parameters.thesis_tables import TABLE_5_1, TABLE_5_2, TABLE_5_3, TABLE_5_4
+from memstribo.validation.rows import ValidationRow, compare
 
 TABLE_5_2_NM = TABLE_5_2 * 1e9
 POSITIONS = ("corner", "side", "central")
 
 
 def rows() -> list[ValidationRow]:
-    from ..asperity import _contact_modulus_from, nanoblock_load_sharing, power_law_contact
-    from ..damage import nanoblock_damage
-    from ..parameters import get_parameter_values
+    from memstribo.materials.pair import contact_modulus_of
+    from memstribo.physics.asperity import nanoblock_load_sharing, power_law_contact
+    from memstribo.physics.damage import nanoblock_damage
+    from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()
-    modulus = _contact_modulus_from(params)
+    modulus = contact_modulus_of(params)
     d, b = params["asperity_degree"], params["asperity_shape_coefficient"]
     out = []
     # --- Hertz limit -----------------------------------------------------------------------------------

@@ -3,7 +3,7 @@ nanoblock of 2.6.2 and the energy shares of the sliding simulation of 3.6 (MODEL
 
 from __future__ import annotations
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 _SLIDE = "memstribo slide --model {model} --json"
 
@@ -14,9 +14,9 @@ def _row(quantity, reference, reference_value, value, unit, tolerance, agrees, c
 
 
 def rows() -> list[ValidationRow]:
-    from .. import sliding
-    from ..friction import THESIS_3_5_COUNTS, THESIS_3_5_INPUTS, estimate_from_parameters, thesis_estimate
-    from ..parameters import get_parameter_values
+    from memstribo.simulations import sliding
+    from memstribo.physics.friction import THESIS_3_5_COUNTS, THESIS_3_5_INPUTS, estimate_from_parameters, thesis_estimate
+    from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()
     estimate_cmd = _SLIDE.format(model="estimate")

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import math
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 COMMAND = "memstribo gear --json"
 
 
 def rows() -> list[ValidationRow]:
-    from ..gear import gear_summary
-    from ..parameters import get_parameter_values
+    from memstribo.physics.gear import gear_summary
+    from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()
     values, _ = gear_summary(params)

@@ -8,7 +8,7 @@ vdW at the actual gap (``interface_model = gap``), MODEL 7b and 7c.
 
 from __future__ import annotations
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 MESH = "memstribo mesh --json"
 THESIS = "--load-case thesis --set interface_model=thesis"
@@ -25,9 +25,9 @@ def _two_digits(value: float) -> float:
 def rows() -> list[ValidationRow]:
     import numpy as np
 
-    from ..gear import GearPair
-    from ..mesh import simulate_mesh, step_convergence, summarize, sweep
-    from ..parameters import get_parameter_values
+    from memstribo.physics.gear import GearPair
+    from memstribo.simulations.mesh import simulate_mesh, step_convergence, summarize, sweep
+    from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()
     thesis = params.updated({"load_case": "thesis", "interface_model": "thesis"})

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 AFM = Path(__file__).resolve().parents[3] / "data" / "afm"
 README = "data/afm/README.md (SurfaceTopography 1.25, height detrend)"
@@ -26,8 +26,8 @@ _FILES = [
 
 
 def _file_rows() -> list[ValidationRow]:
-    from ..readers import SurfaceMap, read_topography
-    from ..roughness import areal_statistics, profile_statistics
+    from memstribo.surfaces.readers import SurfaceMap, read_topography
+    from memstribo.surfaces.roughness import areal_statistics, profile_statistics
 
     rows = []
     for name, channel, key, printed, note in _FILES:
@@ -52,9 +52,9 @@ def _file_rows() -> list[ValidationRow]:
 
 
 def _thesis_rows() -> list[ValidationRow]:
-    from ..nanoblock.geometry import NanoblockGeometry, nanoblock_geometry_from_profile
-    from ..parameters import get_parameter_values
-    from ..roughness import default_profile, profile_statistics
+    from memstribo.physics.nanoblock.geometry import NanoblockGeometry, nanoblock_geometry_from_profile
+    from memstribo.parameters import get_parameter_values
+    from memstribo.surfaces.roughness import default_profile, profile_statistics
 
     params = get_parameter_values()
     command = "memstribo roughness thesis --resample '78 nm' --json"

@@ -1,21 +1,22 @@
 """Validation rows of the main job's verdict: stiction of the coated pair as its coating wears (thesis 5.5.3).
 
 The values are those ``memstribo run --json`` prints (``coated_stiction``, ``wear_at_stiction``):
-the same library calls (:func:`memstribo.coating.wear_sweep` over the run's default worn
-fractions, :func:`memstribo.coating.critical_wear`).
+the same library calls (:func:`memstribo.simulations.coating_wear.wear_sweep` over the run's default worn
+fractions, :func:`memstribo.physics.coating.critical_wear`).
 """
 
 from __future__ import annotations
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 COMMAND = "memstribo run --json"
 
 
 def rows() -> list[ValidationRow]:
-    from ..parameters import RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR
-    from ..coating import critical_wear, wear_sweep
-    from ..parameters import get_parameter_values
+    from memstribo.parameters import RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR
+    from memstribo.physics.coating import critical_wear
+    from memstribo.simulations.coating_wear import wear_sweep
+    from memstribo.parameters import get_parameter_values
 
     # the run's default coating and wear states ([run] coating, wear)
     sweep = wear_sweep(get_parameter_values(), RUN_DEFAULT_COATING, list(RUN_DEFAULT_WEAR))

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 TOPIC = "stresses"
 COMMAND = "python -m memstribo.validation"
@@ -13,7 +13,7 @@ COMMAND = "python -m memstribo.validation"
 def rows() -> list[ValidationRow]:
     import numpy as np
 
-    from .. import stresses as st
+    from memstribo.physics import stresses as st
 
     a, p0, nu = 1.0, 1.0, 0.3
 

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from .rows import ValidationRow, compare
+from memstribo.validation.rows import ValidationRow, compare
 
 TOPIC = "surface contact"
 E, R, F = 100e9, 1e-6, 1e-6  # Pa, m, N
-CALL = "python -m memstribo.validation (memstribo.surface_contact.solve_surface_contact"
+CALL = "python -m memstribo.validation (memstribo.physics.surface_contact.solve_surface_contact"
 
 
 def _rough(n, length, rms, seed, hurst=0.8):
@@ -57,9 +57,9 @@ def dense_nnls_solution(h, d, mean_pressure, approach):
 
 
 def rows() -> list[ValidationRow]:
-    from ..reference import (hertz_sphere_approach, hertz_sphere_peak_pressure, hertz_sphere_radius,
+    from memstribo.physics.closed_form import (hertz_sphere_approach, hertz_sphere_peak_pressure, hertz_sphere_radius,
                              wavy_surface_full_contact_amplitude, westergaard_contact_half_width, westergaard_pressure)
-    from ..surface_contact import solve_surface_contact
+    from memstribo.physics.surface_contact import solve_surface_contact
 
     rows_ = []
     # Hertz sphere on a flat, free boundary, 128 x 128 elements over 3a

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import as_array
-from .errors import InputError
-from .references import cites
+from memstribo.checks import as_array
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = [
     "chemical_bond_count",
@@ -252,7 +252,7 @@ def adhesion_force(pull_off_forces, axis=-1):
 
     See Also
     --------
-    memstribo.adhesion.pull_off_force : (3-32) for one block.
+    memstribo.physics.adhesion.pull_off_force : (3-32) for one block.
     """
     f = as_array(pull_off_forces, "pull_off_forces", "N", nonnegative=True)
     return _result(f.sum(axis=axis))
@@ -392,7 +392,7 @@ def estimate_from_parameters(params, blocks: int = 9, load: float | None = None)
     -------
     FrictionEstimate
     """
-    from .adhesion import nanoscale_constants
+    from memstribo.physics.adhesion import nanoscale_constants
 
     constants = nanoscale_constants(params)
     d = float(params["bond_length"])

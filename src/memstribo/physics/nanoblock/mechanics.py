@@ -35,9 +35,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import as_array
-from ..errors import InputError
-from ..references import cites
+from memstribo.checks import as_array
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = [
     "BlockStiffness",
@@ -135,7 +135,7 @@ class BlockStiffness:
     @classmethod
     def from_geometry(cls, geometry, youngs_modulus: float, contact_modulus: float,
                       threshold_strain: float) -> "BlockStiffness":
-        """Stiffnesses from a :class:`~memstribo.nanoblock.geometry.NanoblockGeometry`.
+        """Stiffnesses from a :class:`~memstribo.physics.nanoblock.geometry.NanoblockGeometry`.
 
         Parameters
         ----------

@@ -22,9 +22,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .checks import as_array
-from .errors import InputError
-from .references import cites
+from memstribo.checks import as_array
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = [
     "EQUILIBRIUM_FACTORS",

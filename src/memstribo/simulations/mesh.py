@@ -12,7 +12,7 @@ of contact:
    passes at its own surface speed ``u_i`` (4-12): the pinion's point at roll coordinate
    ``sigma_1`` sits at ``x = s_1(c) - sigma_1``, the gear's at ``x = sigma_2 - s_2(c)``.
    The undeformed gap is ``h(x) = x^2 / (2 R_ef(c)) - z_1(s_1 - x) - z_2(s_2 + x)`` (4-8 to 4-11).
-2. **Rough contact.** :func:`memstribo.contact.solve_line_contact` (free-boundary half-plane
+2. **Rough contact.** :func:`memstribo.physics.contact.solve_line_contact` (free-boundary half-plane
    BEM) under the load per unit width of the step, ``w = share(c) F_ext / L_eff`` with the
    dry or lubricated load-sharing function (4.3.1): the single-tooth zone carries the full
    load. The window (``mesh_window``) is checked at every step: the contact must not reach
@@ -23,7 +23,7 @@ of contact:
    rows, ``L_eff``, carries the load). Each nanoblock carries ``m x m`` atomic blocks at the pitch
    ``atomic_pitch``. A nanoblock's load is the contact pressure integrated over its footprint
    (``w_adh`` times the integral along x); the **fixed-load nanoblock model** (3.4.2,
-   :func:`memstribo.nanoblock.mechanics.structure_fixed_load`) then shares it among its atomic
+   :func:`memstribo.physics.nanoblock.mechanics.structure_fixed_load`) then shares it among its atomic
    blocks, whose interference with the counter surface is minus the local deformed gap of the
    contact solution at their centres ("each block sits at the local height of its flank").
    This is the *decoupled* block-load variant (the contact solve does not see the block
@@ -35,7 +35,7 @@ of contact:
    peaks of Figure 5-18). Each pinion nanoblock holds van der Waals bonds over the length
    ``L_vdW`` of its footprint where the gap is inside the adhesive layer (thickness
    ``adhesive_layer_thickness``; unset: the adhesive-block height ``H_adh``, thesis 3.5, the
-   same rule as the flat sliding models, :func:`memstribo.nanoblock.geometry.adhesive_layer_thickness`;
+   same rule as the flat sliding models, :func:`memstribo.physics.nanoblock.geometry.adhesive_layer_thickness`;
    the Maugis range ``h0 = w / sigma0`` of MODEL §2 is an explicit alternative):
    ``N_vdW = w_adh L_vdW / D_chem^2`` (3-12), and adds its pull-off force
    ``sqrt(8 pi w12 E* C_NS a^3)``, ``a = L_vdW / 2`` (3-31, 3-32). All bonds break and re-form
@@ -69,13 +69,13 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import InputError
-from .adhesion import contact_modulus
-from .gear import GearPair, hertz_line_contact, tangential_force
-from .references import cites
+from memstribo.errors import InputError
+from memstribo.materials.pair import contact_modulus_of, dundurs_beta, no_slip_coefficient, work_of_adhesion
+from memstribo.physics.gear import GearPair, hertz_line_contact, tangential_force
+from memstribo.references import cites
 
 __all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "SUMMARY_UNITS", "BLOCK_LOAD_VARIANT",
-           "dundurs_beta", "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
+           "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
            "lattice_overlap_across", "sliding_average", "resisting_force", "step_convergence",
            "simulate_ensemble", "ensemble_summary"]
 
@@ -124,33 +124,8 @@ def roll_coordinate(radius_of_curvature, base_radius):
     return np.asarray(radius_of_curvature, dtype=float) ** 2 / (2.0 * base_radius)
 
 
-@cites("johnson_1985")
-def dundurs_beta(youngs_modulus, poisson_ratio, counter_youngs_modulus=None, counter_poisson_ratio=None):
-    """Dundurs' second parameter beta of two elastic bodies (plane strain).
-
-    Parameters
-    ----------
-    youngs_modulus, counter_youngs_modulus : float
-        E1, E2 [Pa] (the counter body defaults to the first).
-    poisson_ratio, counter_poisson_ratio : float
-        nu1, nu2 [-].
-
-    Returns
-    -------
-    float
-        beta = 1/2 [(1-2nu1)/G1 - (1-2nu2)/G2] / [(1-nu1)/G1 + (1-nu2)/G2] [-]; zero for identical
-        materials, where normal and tangential contact problems uncouple (Johnson 1985, 5.4).
-    """
-    e2 = youngs_modulus if counter_youngs_modulus is None else counter_youngs_modulus
-    nu2 = poisson_ratio if counter_poisson_ratio is None else counter_poisson_ratio
-    g1, g2 = youngs_modulus / (2 * (1 + poisson_ratio)), e2 / (2 * (1 + nu2))
-    return 0.5 * ((1 - 2 * poisson_ratio) / g1 - (1 - 2 * nu2) / g2) / ((1 - poisson_ratio) / g1 + (1 - nu2) / g2)
-
-
 def _work_of_adhesion(params):
     """w12 of the parameter set, or A / (12 pi D0^2) (3-34) when unset [J/m^2]."""
-    from .adhesion import work_of_adhesion
-
     w = params["work_of_adhesion"]
     return float(work_of_adhesion(params["hamaker_constant"], params["cutoff_distance"]) if w is None else w)
 
@@ -184,7 +159,7 @@ class MeshSetup:
     roughness_source : str
     grid_spacing : float
         Element width of the contact solves [m].
-    row_roughness : memstribo.roughness.RowRoughness
+    row_roughness : memstribo.surfaces.roughness.RowRoughness
         How the rows' lines were made (measured, synthesised), and the lattice offsets.
     realisation : int
         Index of the roughness realisation.
@@ -243,12 +218,12 @@ def orient_map(surface, sliding_axis: str = "x"):
 
 def _read_roughness(roughness, sliding_axis="x"):
     """A Profile, a map (rows along the sliding direction), or None (the synthetic default)."""
-    from . import roughness as rough
+    from memstribo.surfaces import roughness as rough
 
     if roughness is None or (isinstance(roughness, str) and roughness == "thesis"):
         return None
     if isinstance(roughness, (str, Path)):
-        from .readers import read_topography
+        from memstribo.surfaces.readers import read_topography
 
         return orient_map(read_topography(roughness), sliding_axis)
     if isinstance(roughness, rough.Profile) or hasattr(roughness, "line_scans"):
@@ -270,7 +245,7 @@ def normal_force_of_load_case(params, pair: GearPair) -> float:
 
 
 def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshSetup:
-    from . import roughness as rough
+    from memstribo.surfaces import roughness as rough
 
     pair = GearPair.from_parameters(params)
     steps = int(params["mesh_steps"] if steps is None else steps)
@@ -287,8 +262,7 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
         raise InputError(f"face_width ({params['face_width']:.4g} m) is narrower than one nanoblock "
                          f"(adhesive_width {w_adh:.4g} m).")
     # grid and window from the largest Hertz contact of the load case, unless given
-    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
-                              params["counter_poisson_ratio"])
+    modulus = contact_modulus_of(params)
     hertz = hertz_line_contact(load, rows * w_adh, pair.effective_radius(positions), modulus)
     a_max = float(np.max(hertz.half_width))
     dx = params["mesh_grid_spacing"]
@@ -302,7 +276,7 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
     n = int(round(window / dx))
     if n < 64:
         raise InputError(f"mesh_window / mesh_grid_spacing = {n}: at least 64 contact elements are needed.")
-    from .parameters import check_mesh_size
+    from memstribo.parameters import check_mesh_size
 
     check_mesh_size(steps, n * dx, dx, what="mesh_steps" if steps == params["mesh_steps"] else "steps")
     grid = (np.arange(n) - 0.5 * (n - 1)) * dx
@@ -339,7 +313,7 @@ def _cohesive_zone(params):
     """(sigma0 [Pa], h0 [m]) of the Maugis-Dugdale zone of the contact solve, or (None, None) without it."""
     if params["contact_adhesion"] != "maugis":
         return None, None
-    from .adhesion import nanoscale_constants
+    from memstribo.physics.adhesion import nanoscale_constants
 
     constants = nanoscale_constants(params)
     return float(constants.maugis_stress), float(constants.maugis_range)
@@ -347,7 +321,7 @@ def _cohesive_zone(params):
 
 def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar):
     """Rough contact of every step of one row: pressure, deformed gap, solver info, cohesive line load."""
-    from .contact import solve_line_contact
+    from memstribo.physics.contact import solve_line_contact
 
     grid = setup.grid
     dx = setup.grid_spacing
@@ -382,11 +356,11 @@ def _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar):
 
     Each nanoblock row is ``k = round(w_adh / dx)`` element rows wide across the face width and
     carries its own roughness line (the same line over its k element rows); the free-boundary
-    half-space solve (:func:`memstribo.surface_contact.solve_surface_contact`) carries the pair's
+    half-space solve (:func:`memstribo.physics.surface_contact.solve_surface_contact`) carries the pair's
     whole load. Returns per-row pressure and gap (means over each row's element rows), shapes
     (rows, steps, n), and the solver info per step (converged, residual, iterations, approach).
     """
-    from .surface_contact import solve_surface_contact
+    from memstribo.physics.surface_contact import solve_surface_contact
 
     grid = setup.grid
     dx = setup.grid_spacing
@@ -470,8 +444,8 @@ def _lattice(roll, w_adh, grid_half):
 
 
 def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress):
-    from .nanoblock.mechanics import BlockStiffness, structure_fixed_load
-    from .nanoblock.geometry import adhesive_layer_thickness
+    from memstribo.physics.nanoblock.mechanics import BlockStiffness, structure_fixed_load
+    from memstribo.physics.nanoblock.geometry import adhesive_layer_thickness
 
     pair = setup.pair
     c = setup.positions
@@ -497,8 +471,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
 
     # the published relations, looked up on their modules at call time: a change to a relation
     # changes the meshing cycle (tests/test_mesh.py::test_the_cycle_calls_the_published_relations)
-    from . import adhesion, friction
-    from .nanoblock import mechanics
+    from memstribo.physics import adhesion, friction
+    from memstribo.physics.nanoblock import mechanics
 
     w_si = _work_of_adhesion(params)
     # thesis interface: one rule with the sliding models (3.5), for bare and coated blocks alike
@@ -507,7 +481,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     with_cohesive_zone = params["contact_adhesion"] == "maugis"
     if coating is not None:
         w_coat, u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
-    c_ns = float(adhesion.no_slip_coefficient(params["poisson_ratio"]))
+    c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
     n_rows_solved = len(setup.pinion_profiles)  # every row, each with its own roughness (MODEL 7b)
 
     pbar = None
@@ -522,7 +496,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                                               "vdw_edge", "f_cap", "f_cap_adh", "wetted")}
     humid = params["environment"] == "air"
     if humid:
-        from . import capillary
+        from memstribo.physics import capillary
 
         r_kelvin = capillary.kelvin_radius(params["relative_humidity"], params["temperature"])
         theta_bare = float(params["water_contact_angle"])
@@ -705,7 +679,7 @@ def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip,
 
 
 def _geometry(params):
-    from .nanoblock.geometry import NanoblockGeometry
+    from memstribo.physics.nanoblock.geometry import NanoblockGeometry
 
     return NanoblockGeometry.from_parameters(params)
 
@@ -776,12 +750,12 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         Parameter set (gear, load case, material, nanoblock, interface and ``mesh_*`` parameters).
     roughness : None, "thesis", str or Path, Profile or SurfaceMap
         Roughness of the teeth: ``None``/"thesis" is the seeded synthetic default (labelled
-        synthetic); a path is read with :func:`memstribo.readers.read_topography`. Every row of
-        nanoblocks on each flank gets its own line (:func:`memstribo.roughness.row_roughness`):
+        synthetic); a path is read with :func:`memstribo.surfaces.readers.read_topography`. Every row of
+        nanoblocks on each flank gets its own line (:func:`memstribo.surfaces.roughness.row_roughness`):
         map rows one nanoblock apart, or independent lines with the statistics of a profile.
     steps : int, optional
         Number of positions c from c_f to c_l (default ``mesh_steps``).
-    coating : memstribo.coating.Coating, optional
+    coating : memstribo.physics.coating.Coating, optional
         SAM coating of the teeth; ``None`` is bare silicon.
     wear : float
         Worn fraction Omega of the gear's coating, 0..1 (the pinion's is fully worn); only with
@@ -817,8 +791,7 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
 
     if not 0.0 <= float(wear) <= 1.0:
         raise InputError(f"wear (the worn fraction Omega of the gear's coating) must be within 0..1, got {wear!r}.")
-    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
-                              params["counter_poisson_ratio"])
+    modulus = contact_modulus_of(params)
     beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
                         params["counter_poisson_ratio"])
     setup = _prepare(params, roughness, steps, realisation, sliding_axis)

@@ -48,9 +48,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import as_array, as_positive_scalar
-from .errors import InputError
-from .references import cites
+from memstribo.checks import as_array, as_positive_scalar
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = [
     "StressField",

@@ -1,4 +1,4 @@
-"""Read measured surfaces: instrument files -> :class:`~memstribo.roughness.Profile` or :class:`SurfaceMap`.
+"""Read measured surfaces: instrument files -> :class:`~memstribo.surfaces.roughness.Profile` or :class:`SurfaceMap`.
 
 Every format SurfaceTopography reads goes through it first (imported lazily, it takes
 seconds), with the file's channels, units and sizes: instrument files, and text or CSV files
@@ -40,9 +40,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import DataFileError, InputError, MemstriboError
-from .roughness import UNIFORM_RTOL, Profile
-from .units import printable
+from memstribo.errors import DataFileError, InputError, MemstriboError
+from memstribo.surfaces.roughness import UNIFORM_RTOL, Profile
+from memstribo.units import printable
 
 __all__ = ["SurfaceMap", "read_topography", "write_profile", "SUPPORTED_EXTENSIONS", "LENGTH_UNITS"]
 
@@ -567,7 +567,7 @@ def _height_unit(c):
 
 def _physical_sizes(physical_size, dim, path):
     """``physical_size`` (m, or text with units: '10 um' or '10 um, 5 um') as a tuple of ``dim`` lengths [m]."""
-    from .units import to_si
+    from memstribo.units import to_si
 
     if isinstance(physical_size, str):
         parts = [p for p in re.split(r"\s*[,x;]\s*(?=[-+.\d])", physical_size.strip()) if p]
@@ -928,7 +928,7 @@ def write_profile(profile: Profile, path) -> Path:
     pathlib.Path
         The path written.
     """
-    from .output import ensure_directory
+    from memstribo.output import ensure_directory
 
     if not isinstance(profile, Profile):
         raise InputError("write_profile needs a Profile (a map: write one of its line_scans()).")
@@ -940,7 +940,7 @@ def write_profile(profile: Profile, path) -> Path:
     header = (f"{profile.name} ({kind})\nsource: {profile.source}\n"
               f"{profile.n_points} points; columns: x [m], height [m] (written by memstribo)")
     delimiter = "," if path.suffix.lower() == ".csv" else " "
-    from .output import atomic_write
+    from memstribo.output import atomic_write
 
     try:
         atomic_write(path, lambda tmp: np.savetxt(tmp, np.column_stack([profile.x, profile.z]), fmt="%.17g",

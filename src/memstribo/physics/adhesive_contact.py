@@ -1,6 +1,6 @@
 """Adhesive line contact (Maugis-Dugdale cohesive zone): load-approach curves and pull-off.
 
-Built on :func:`memstribo.contact.solve_line_contact` with ``cohesive_stress`` (sigma0 [Pa])
+Built on :func:`memstribo.physics.contact.solve_line_contact` with ``cohesive_stress`` (sigma0 [Pa])
 and ``cohesive_range`` (h0 [m], w = sigma0 h0): a cylinder of radius R on a flat (or any gap
 profile), followed quasi-statically under approach (displacement) control, each step
 warm-started from the previous one, so that the jump-in on loading and the pull-off on
@@ -33,7 +33,7 @@ class LoadApproachCurve:
     Attributes
     ----------
     approach : numpy.ndarray
-        Rigid-body approach of each step [m] (datum as in :class:`memstribo.contact.ContactSolution`).
+        Rigid-body approach of each step [m] (datum as in :class:`memstribo.physics.contact.ContactSolution`).
     load : numpy.ndarray
         Net load per unit length [N/m] (negative: tensile).
     half_width : numpy.ndarray
@@ -62,7 +62,7 @@ class PullOff:
     pull_off_half_width : float
         Contact half-width there [m].
     maugis_parameter : float
-        lambda = 2 sigma0 (R / (pi w E*²))^(1/3) [-] (:func:`memstribo.reference.maugis_line_parameter`).
+        lambda = 2 sigma0 (R / (pi w E*²))^(1/3) [-] (:func:`memstribo.physics.closed_form.maugis_line_parameter`).
     cohesive_range : float
         h0 = w / sigma0 [m].
     curve : LoadApproachCurve
@@ -141,7 +141,7 @@ def load_approach_curve(separation, dx, contact_modulus, approaches, *, cohesive
     """
     rows = []
     pressure = None if initial_pressure is None else np.asarray(initial_pressure, dtype=float)
-    from memstribo.contact import solve_line_contact
+    from memstribo.physics.contact import solve_line_contact
 
     for approach in np.asarray(approaches, dtype=float):
         solution = solve_line_contact(separation, dx, contact_modulus, approach=float(approach), periodic=periodic,
@@ -197,11 +197,11 @@ def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_st
     that curve, refined by a parabola through the three steps around it.
     Under load control the contact would separate there; under approach control it follows
     the curve further, to a jump-out at smaller tension. Compare with
-    :func:`memstribo.reference.maugis_dugdale_line_pull_off` and, at large Maugis parameter,
-    :func:`memstribo.reference.jkr_line_pull_off_load`.
+    :func:`memstribo.physics.closed_form.maugis_dugdale_line_pull_off` and, at large Maugis parameter,
+    :func:`memstribo.physics.closed_form.jkr_line_pull_off_load`.
     """
-    from memstribo.contact import solve_line_contact
-    from memstribo.reference import jkr_line_pull_off_load, maugis_line_parameter
+    from memstribo.physics.contact import solve_line_contact
+    from memstribo.physics.closed_form import jkr_line_pull_off_load, maugis_line_parameter
 
     radius = _positive("radius", radius, "m")
     modulus = _positive("contact_modulus", contact_modulus, "Pa")

@@ -7,12 +7,12 @@ the sliding direction, by linear summation over the load peaks i of a meshing cy
 .. math:: \\omega(x, k) = \\sum_{i=1}^{k} c_1 \\left(\\Delta\\tau_{1,i}(x)\\right)^m \\qquad (5\\text{-}10)
 
 where Delta tau_1,i(x) is the amplitude of the principal shear stress at x in load cycle i,
-computed under the power-law asperity's contact pressure p (:mod:`memstribo.asperity`) with
-the friction traction mu p (:mod:`memstribo.stresses`). c1 [Pa^-m] and m are phenomenological.
+computed under the power-law asperity's contact pressure p (:mod:`memstribo.physics.asperity`) with
+the friction traction mu p (:mod:`memstribo.physics.stresses`). c1 [Pa^-m] and m are phenomenological.
 
 The chain: nanoblock load peaks (from the meshing simulation's ``block_load`` or a given
 list, thesis Table 5-1) -> loads of the m x m atomic asperities with their mutual influence
-(:func:`memstribo.asperity.nanoblock_load_sharing`) -> tau_1 along x through each asperity's
+(:func:`memstribo.physics.asperity.nanoblock_load_sharing`) -> tau_1 along x through each asperity's
 centre -> omega/c1 per meshing cycle for every asperity -> relative lives, and with c1 the
 cycles to coating failure, the worn fraction Omega(N), COF(N) and the cycle at which the
 friction force reaches the available tangential force (stiction returns).
@@ -26,15 +26,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .asperity import (
-    _contact_modulus_from,
+from memstribo.materials.pair import contact_modulus_of
+from memstribo.physics.asperity import (
     _pressure_scale,
     nanoblock_load_sharing,
     position_classes,
     power_law_contact_radius,
 )
-from .errors import InputError
-from .references import cites
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = [
     "POSITIONS",
@@ -126,7 +126,7 @@ def _convolve(kernel: np.ndarray, field: np.ndarray) -> np.ndarray:
 def _normalised_surface_stress(degree: float, friction_coefficient: float, poisson_ratio: float,
                                cells: int) -> tuple[np.ndarray, np.ndarray]:
     """(xi, tau_1 / p_scale) along y = 0 at the surface, for a = 1 and p = p_scale * shape(r)."""
-    from .asperity import _normalised_pressure
+    from memstribo.physics.asperity import _normalised_pressure
 
     half = 1.5
     h = 2.0 / cells
@@ -232,8 +232,8 @@ def _table_points() -> np.ndarray:
 
 @functools.lru_cache(maxsize=32)
 def _tau1_table(degree: float, friction_coefficient: float, poisson_ratio: float) -> tuple[np.ndarray, np.ndarray]:
-    from . import stresses
-    from .asperity import _normalised_pressure
+    from memstribo.physics import stresses
+    from memstribo.physics.asperity import _normalised_pressure
 
     xi = _table_points()
     tau = stresses.principal_shear_profile(xi, 0.0, lambda r: _normalised_pressure(r, degree), 1.0,
@@ -260,14 +260,14 @@ def normalised_principal_shear(xi, degree: float, friction_coefficient: float, p
     -------
     ndarray
         tau_1 / p_scale with p_scale = E* d kappa_d B a^(d-1) / pi, the scale of
-        :func:`memstribo.asperity.power_law_pressure`. For a power-law punch the pressure is
+        :func:`memstribo.physics.asperity.power_law_pressure`. For a power-law punch the pressure is
         p_scale times a shape of r/a only, so the surface stresses scale the same way and
         one table serves every load.
 
     Notes
     -----
     The table (1 240 points on ``|x/a| <= 2.5``, refined to 1e-5 a at the contact edges, where
-    tau_1 has a cusp) comes from :func:`memstribo.stresses.principal_shear_profile` at z = 0+
+    tau_1 has a cusp) comes from :func:`memstribo.physics.stresses.principal_shear_profile` at z = 0+
     (Boussinesq and Cerruti solutions integrated exactly over the contact circle); it is
     interpolated linearly. :func:`surface_stresses` is an independent FFT solution of the
     same surface problem: the two agree to 1e-4 p_scale away from the edge (tests).
@@ -462,7 +462,7 @@ def _asperity_damage(peak_block_loads, valley_block_loads, block_index, n_blocks
     per_side = params["atomic_per_side"]
     degree = params["asperity_degree"]
     coefficient = params["asperity_shape_coefficient"]
-    modulus = _contact_modulus_from(params)
+    modulus = contact_modulus_of(params)
     m = _check_exponent(params["damage_exponent"])
     friction = params["asperity_friction_coefficient"]
     nu = params["poisson_ratio"]
@@ -537,7 +537,7 @@ def mesh_damage(dataset, params, *, x=None) -> DamageResult:
     Parameters
     ----------
     dataset : xarray.Dataset
-        Result of :func:`memstribo.mesh.simulate_mesh` with ``block_load`` (dims step, block) [N].
+        Result of :func:`memstribo.simulations.mesh.simulate_mesh` with ``block_load`` (dims step, block) [N].
     params : memstribo.parameters.Parameters
         As for :func:`nanoblock_damage` (``peaks_per_cycle`` is not used: the peaks are counted).
     x : array_like, optional
@@ -645,7 +645,7 @@ def cycles_to_stiction(lives, critical_wear: float | None, weights=None) -> floa
     lives : array_like
         Cycles to failure of each asperity's coating [-].
     critical_wear : float or None
-        Worn fraction Omega at which F_f >= F_t (:func:`memstribo.coating.critical_wear`);
+        Worn fraction Omega at which F_f >= F_t (:func:`memstribo.physics.coating.critical_wear`);
         None (no stiction even when bare) gives None.
     weights : array_like, optional
         As for :func:`worn_fraction`.
@@ -720,7 +720,7 @@ def run_damage(params, mesh_dataset=None, *, loads=None, wear_sweep=None, cycles
     loads : array_like, optional
         Nanoblock peak loads [N] (Table 5-1), instead of the mesh.
     wear_sweep : xarray.Dataset or dict, optional
-        COF and stiction margin versus Omega (:func:`memstribo.coating.wear_sweep`, or the
+        COF and stiction margin versus Omega (:func:`memstribo.simulations.coating_wear.wear_sweep`, or the
         chain's summary with ``cof_mean`` and ``stiction_margin_min``): gives the critical
         wear and COF(N).
     cycles_observed : float, optional
@@ -732,7 +732,7 @@ def run_damage(params, mesh_dataset=None, *, loads=None, wear_sweep=None, cycles
     -------
     DamageOutcome
     """
-    from .coating import critical_wear as _critical_wear
+    from memstribo.physics.coating import critical_wear as _critical_wear
 
     if loads is not None:
         result = nanoblock_damage(loads, params)
@@ -811,7 +811,7 @@ def _history_dataset(lives, sweep, first_failure):
 
 
 def _figures(result: DamageResult, datasets) -> dict:
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     figures = {}
     profile = datasets["damage_profile"]

@@ -6,9 +6,8 @@ van der Waals bonds and elastic interlocking remain, with the coating's own vdW 
 
 Wear state Omega (5.5.3): the pinion's coating is fully worn and a fraction Omega of the
 gear's coating is worn, so that Omega = 0 is the fully functionalised pair and Omega = 1
-bare silicon. :func:`wear_sweep` runs the meshing-cycle simulation
-(:func:`memstribo.mesh.simulate_mesh`) for a list of Omega and returns COF, its split, the
-friction force, the available tangential force and the stiction margin for each.
+bare silicon. :func:`memstribo.simulations.coating_wear.wear_sweep` runs the meshing cycle for a list of
+Omega; :func:`critical_wear` and :func:`cof_at_wear` read its result.
 """
 
 from __future__ import annotations
@@ -21,24 +20,10 @@ from importlib import resources
 
 import numpy as np
 
-from .errors import InputError, did_you_mean
-from .references import cites
+from memstribo.errors import InputError, did_you_mean
+from memstribo.references import cites
 
-__all__ = ["Coating", "available_coatings", "get_coating", "check_wear", "wear_sweep", "critical_wear",
-           "cof_at_wear", "calibrate_vdw_bond_energy", "SWEEP_VARIABLES"]
-
-#: Variables of :func:`wear_sweep`'s dataset (and keys of ``memstribo coating --json``), with units.
-SWEEP_VARIABLES = {
-    "cof": ("", "coefficient of friction over the meshing cycle"),
-    "cof_chemical": ("", "COF from chemical bonds"),
-    "cof_vdw": ("", "COF from van der Waals bonds"),
-    "cof_elastic": ("", "COF from elastic interlocking"),
-    "friction_force": ("N", "largest resisting force R(c): friction of all pairs in mesh (MODEL 7b)"),
-    "tangential_force": ("N", "available tangential force F_t = T / r (4-27)"),
-    "stiction": ("", "1 where max R(c) > F_t (stiction), else 0"),
-    "stiction_margin": ("N", "stiction margin F_t - max R(c) (MODEL 7b)"),
-}
-
+__all__ = ["Coating", "available_coatings", "get_coating", "coating_config", "check_wear", "critical_wear", "cof_at_wear"]
 
 @dataclass(frozen=True)
 class Coating:
@@ -92,7 +77,7 @@ _UNITS = {"vdw_bond_energy": "J", "hamaker_constant": "J", "cutoff_distance": "m
 
 @functools.lru_cache(maxsize=None)
 def _coating_files() -> dict[str, str]:
-    folder = resources.files("memstribo") / "coatings"
+    folder = resources.files("memstribo.parameters") / "coatings"
     files = {}
     for entry in folder.iterdir():
         if entry.name.endswith(".toml"):
@@ -185,88 +170,6 @@ def check_wear(wear) -> np.ndarray:
 
 #: Which key of ``mesh.summarize`` gives each sweep quantity (the cycle's mean COF and its
 #: energy split, the largest friction force, the total F_t, the lowest stiction margin).
-_SUMMARY_KEYS = {"cof": "cof_mean", "friction_force": "resisting_force_max"}
-
-
-def _summary_value(summary: dict, dataset, key: str) -> float:
-    """A sweep quantity from the mesh summary, or from the dataset where the summary lacks it."""
-    key_in_summary = _SUMMARY_KEYS.get(key, key)
-    if key_in_summary in summary and summary[key_in_summary] is not None:
-        key = key_in_summary
-        value = summary[key]
-        return float(value) if not isinstance(value, (bool, np.bool_)) else float(bool(value))
-    if key == "stiction" and "stiction_margin" in summary:
-        return float(summary["stiction_margin"] < 0)
-    if key in dataset:
-        data = dataset[key]
-        if key == "stiction_margin":
-            return float(data.min())
-        if key == "friction_force":
-            return float(data.max())
-        return float(data.mean())
-    raise KeyError(key)
-
-
-@cites("thesis", "model")
-def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, steps: int | None = None,
-               progress: bool = False):
-    """COF, its split, friction force and stiction margin for each worn fraction Omega (5.5.3).
-
-    Parameters
-    ----------
-    params : memstribo.parameters.Parameters
-        Model parameters (gear, load, roughness, nanoblocks).
-    coating : Coating, str or None
-        The gear's coating (``None``: bare silicon, all Omega give the bare result).
-    wears : sequence of float
-        Worn fractions Omega of the gear's coating, each from 0 to 1 [-].
-    roughness : Profile, optional
-        Roughness of the flanks; ``None`` uses the mesh's default.
-    steps : int, optional
-        Steps of each meshing-cycle simulation (the mesh's default if None).
-    progress : bool
-        Show a progress bar over the wear states on stderr.
-
-    Returns
-    -------
-    xarray.Dataset
-        Over dimension ``wear``: the variables of :data:`SWEEP_VARIABLES` with ``units`` and
-        ``long_name`` attributes; the per-wear values are those of ``mesh.summarize``.
-
-    Notes
-    -----
-    The pinion's coating is fully worn and Omega of the gear's (thesis 5.5.3), so Omega = 1
-    equals the bare mesh result. Thesis Figure 5-28: COF 0.185 (Omega = 0), 0.32 (0.2),
-    about 0.75 (0.8), 0.84 (1).
-    """
-    import xarray as xr
-
-    from . import mesh
-
-    if isinstance(coating, str):
-        coating = get_coating(coating, params)
-    omega = np.atleast_1d(check_wear(wears))
-    rows = {key: np.empty(omega.size) for key in SWEEP_VARIABLES}
-    states = enumerate(omega)
-    if progress:
-        import sys
-
-        from tqdm.auto import tqdm
-
-        states = tqdm(states, total=omega.size, desc="wear states", unit="cycle", file=sys.stderr, leave=False)
-    for i, w in states:  # one meshing-cycle simulation per wear state
-        dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w))
-        summary = mesh.summarize(dataset)
-        for key in SWEEP_VARIABLES:
-            rows[key][i] = _summary_value(summary, dataset, key)
-    sweep = xr.Dataset(
-        {key: ("wear", rows[key], {"units": unit, "long_name": text}) for key, (unit, text) in SWEEP_VARIABLES.items()},
-        coords={"wear": ("wear", omega, {"units": "", "long_name": "worn fraction Omega of the gear's coating"})},
-        attrs={"coating": "bare silicon" if coating is None else coating.name},
-    )
-    return sweep
-
-
 def cof_at_wear(wear, sweep) -> np.ndarray:
     """COF at worn fraction(s) Omega by linear interpolation of a :func:`wear_sweep` [-]."""
     omega = check_wear(wear)
@@ -293,61 +196,3 @@ def critical_wear(sweep) -> float | None:
     return float(w0 + (w1 - w0) * m0 / (m0 - m1))
 
 
-@cites("thesis", "model")
-def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float = 0.185, *, roughness=None,
-                              steps: int | None = None, rtol: float = 1e-3,
-                              max_runs: int = 6) -> tuple[Coating, dict]:
-    """Scale the coating's U_vdW so that the fully coated pair (Omega = 0) has COF ``target_cof``.
-
-    Parameters
-    ----------
-    params : memstribo.parameters.Parameters
-        Model parameters (the reference conditions of thesis 5.4: 25 uN, the default gear).
-    coating : Coating or str
-        Coating to calibrate.
-    target_cof : float
-        COF of the fully coated pair [-] (thesis 5.5.3: 0.185).
-    roughness, steps
-        As for :func:`wear_sweep`.
-    rtol : float
-        Relative tolerance on the COF [-].
-    max_runs : int
-        Meshing-cycle runs allowed.
-
-    Returns
-    -------
-    (Coating, dict)
-        The calibrated coating and a record: ``vdw_bond_energy_before``, ``..._after`` [J],
-        ``cof_before``, ``cof_after`` [-], ``runs``, ``converged``.
-
-    Notes
-    -----
-    With the coating U_chem = 0, so COF = cof_vdw + cof_elastic, and cof_vdw is proportional to
-    U_vdW at a fixed contact; the contact itself barely depends on U_vdW (the vdW adhesion force
-    does, slightly), so U_vdW <- U_vdW (target - cof_elastic) / (COF - cof_elastic) converges in
-    a few meshing-cycle runs (at most ``max_runs``; tolerance ``rtol`` on the cycle's mean COF).
-    Raises :class:`InputError` if cof_elastic alone reaches the target.
-    """
-    from . import mesh
-
-    if isinstance(coating, str):
-        coating = get_coating(coating, params)
-    if not (0 < target_cof < 10):
-        raise InputError(f"target_cof must be a COF between 0 and 10, got {target_cof!r}.")
-    current = coating
-    history = []
-    for _ in range(max_runs):
-        summary = mesh.summarize(mesh.simulate_mesh(params, roughness, steps=steps, coating=current, wear=0.0))
-        cof, cof_elastic = float(summary["cof_mean"]), float(summary["cof_elastic"])
-        history.append((current.vdw_bond_energy, cof))
-        if abs(cof - target_cof) <= rtol * target_cof:
-            break
-        if cof_elastic >= target_cof or cof <= cof_elastic:
-            raise InputError(f"cannot calibrate U_vdW: the elastic COF {cof_elastic:.3g} alone (total {cof:.3g}) "
-                             f"does not leave room for the target {target_cof:g}.")
-        current = current.updated(vdw_bond_energy=current.vdw_bond_energy * (target_cof - cof_elastic)
-                                  / (cof - cof_elastic))
-    return current, {"vdw_bond_energy_before": coating.vdw_bond_energy,
-                     "vdw_bond_energy_after": current.vdw_bond_energy,
-                     "cof_before": history[0][1], "cof_after": history[-1][1], "runs": len(history),
-                     "converged": abs(history[-1][1] - target_cof) <= rtol * target_cof}

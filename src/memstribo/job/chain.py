@@ -10,7 +10,7 @@ as soon as they exist, so an interrupted run loses nothing already computed. The
    ``sliding``     one nanoblock on a flat (2.6.2) and the hierarchical structure on the rough profile
                    under a fixed load (3.4.2, 3.6);
 3. ``gear``        involute pair, Hertz contact at the pitch point, tangential force F_t;
-4. ``mesh``        the bare-silicon meshing cycle (:func:`memstribo.mesh.simulate_mesh`);
+4. ``mesh``        the bare-silicon meshing cycle (:func:`memstribo.simulations.mesh.simulate_mesh`);
 5. ``load_sweep``  COF and dissipated energy versus external load (thesis 4.9.3);
 6. ``area_sweep``  COF and energy versus nominal contact area (4.9.4);
 7. ``coated``      the coated pair, fully functionalised (5.4);
@@ -20,7 +20,7 @@ as soon as they exist, so an interrupted run loses nothing already computed. The
 A stage whose inputs failed is skipped and says why; a stage never pretends. Each stage's
 figure functions (``plot_*``) and :func:`cycle_summary` work on their own too::
 
-    >>> from memstribo.chain import RunChain, RunOptions           # doctest: +SKIP
+    >>> from memstribo.job.chain import RunChain, RunOptions           # doctest: +SKIP
     >>> result = RunChain(params, "results", RunOptions(steps=40)).run()
 """
 
@@ -38,8 +38,8 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputError, MemstriboError, did_you_mean
-from .output import atomic_write_text, dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
+from memstribo.errors import InputError, MemstriboError, did_you_mean
+from memstribo.output import atomic_write_text, dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
 
 __all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain", "STAGES", "cycle_summary",
            "verdict"]
@@ -74,8 +74,8 @@ USES: dict[str, tuple[str, ...]] = {"mesh": ("gear",), "coated": ("gear",), "wea
 #: The datasets a resumed run reads back from ``DIR/data`` for the stages after them (stage: (result key, stem)).
 RELOADED: dict[str, tuple[str, str]] = {"coated": ("coated", "mesh_coated"), "wear_sweep": ("wear_sweep", "wear_sweep")}
 
-from .parameters import RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR  # noqa: E402
-from .parameters import RUN_KEYS as _RUN_KEYS  # noqa: E402  (the [run] table's keys live with the config reader)
+from memstribo.parameters import RUN_DEFAULT_COATING, RUN_DEFAULT_WEAR  # noqa: E402
+from memstribo.parameters import RUN_KEYS as _RUN_KEYS  # noqa: E402  (the [run] table's keys live with the config reader)
 
 
 @dataclass(frozen=True)
@@ -134,7 +134,7 @@ class RunOptions:
         InputError
             Unknown keys, bad values, missing files.
         """
-        from .units import to_si
+        from memstribo.units import to_si
 
         table = dict(table or {})
         unknown = sorted(set(table) - set(_RUN_KEYS))
@@ -175,7 +175,7 @@ class RunOptions:
         if "wear" in table:
             options["wear"] = number_list("wear", "", 0.0, 1.0)
         if "coating" in table:
-            from .coating import get_coating
+            from memstribo.physics.coating import get_coating
 
             options["coating"] = get_coating(str(table["coating"])).name  # checked before the first stage
         if "roughness_files" in table:
@@ -304,11 +304,11 @@ class RunResult:
 
 
 def cycle_summary(dataset) -> dict[str, Any]:
-    """Scalars of one meshing cycle: :func:`memstribo.mesh.summarize` (the keys of ``memstribo mesh --json``).
+    """Scalars of one meshing cycle: :func:`memstribo.simulations.mesh.summarize` (the keys of ``memstribo mesh --json``).
 
-    Units of the keys are in :data:`memstribo.mesh.SUMMARY_UNITS`.
+    Units of the keys are in :data:`memstribo.simulations.mesh.SUMMARY_UNITS`.
     """
-    from .mesh import summarize
+    from memstribo.simulations.mesh import summarize
 
     return summarize(dataset)
 
@@ -370,7 +370,7 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
 
 def plot_profiles(profiles):
     """Heights of each roughness profile along the scan (thesis Figures 3-18, 4-21)."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     figure, axes = new_figure(len(profiles), 1, figsize=(7, 2.2 * len(profiles)), squeeze=False)
     for ax, profile in zip(axes[:, 0], profiles):
@@ -385,7 +385,7 @@ def plot_profiles(profiles):
 
 def plot_map(surface):
     """A measured 2D map as an image (heights [nm] over x, y [um]), with the scan lines along x."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     heights = np.asarray(surface.heights) * 1e9
     ny, nx = heights.shape
@@ -402,7 +402,7 @@ def plot_map(surface):
 
 def plot_cycle(dataset, tangential_force=None, title=""):
     """Friction, adhesion and normal force, and the COF split, over the meshing cycle (Figs. 4-41..4-46)."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     efficiency = "mesh_efficiency" in dataset
     figure, axes_ = new_figure(3 if efficiency else 2, 1, figsize=(7, 8 if efficiency else 6), sharex=True)
@@ -435,7 +435,7 @@ def plot_cycle(dataset, tangential_force=None, title=""):
 
 def plot_ensemble(ensemble, tangential_force):
     """Stiction margin and mean COF of every roughness realisation, with the 5-95 % band (MODEL 7b)."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     rows = ensemble["per_realisation"]
     index = np.arange(len(rows))
@@ -461,7 +461,7 @@ def plot_sliding(dataset, title="", max_points=4000):
 
     Long slides are drawn with every k-th step (k chosen so that at most ``max_points`` are drawn).
     """
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     stride = max(1, int(math.ceil(dataset.sizes["step"] / max_points)))
     data = dataset.isel(step=slice(None, None, stride))
@@ -483,7 +483,7 @@ def plot_sliding(dataset, title="", max_points=4000):
 
 def plot_gear(pair, load, contact_modulus, points=401):
     """Load share, effective radius, sliding velocity and Hertz half-width along the path of contact (4.3-4.5)."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     c = np.linspace(pair.first_contact, pair.last_contact, points)
     figure, axes = new_figure(2, 2, figsize=(9, 5.5), sharex=True)
@@ -508,7 +508,7 @@ def plot_gear(pair, load, contact_modulus, points=401):
 
 def plot_block_loads(dataset, title=""):
     """Normal load of every nanoblock over the meshing cycle (the load peaks of thesis Figure 5-18)."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     loads = np.asarray(dataset["block_load"].values) * 1e6  # (step, block)
     c = np.asarray(dataset["c"].values) * 1e6 if "c" in dataset.coords else np.arange(loads.shape[0])
@@ -527,7 +527,7 @@ def plot_block_loads(dataset, title=""):
 
 def plot_energy(dataset, title=""):
     """Energy dissipated per step by mechanism over the meshing cycle (Figure 4-47)."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     figure, ax = new_figure(figsize=(7, 3.5))
     c = np.asarray(dataset["c"].values) * 1e6 if "c" in dataset.coords else np.arange(dataset.sizes["step"])
@@ -544,7 +544,7 @@ def plot_energy(dataset, title=""):
 
 def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""):
     """COF (split) and dissipated energy of a sweep (Figures 4-48..4-51, 5-22..5-25)."""
-    from .output import new_figure
+    from memstribo.output import new_figure
 
     figure, (left, right) = new_figure(1, 2, figsize=(10, 3.8))
     xs = np.asarray(dataset[x].values) * x_scale
@@ -568,10 +568,10 @@ def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""
 
 
 def _sweep_dataset(dimension, values, unit, long_name, summaries):
-    """Summaries (:func:`memstribo.mesh.summarize`) of a sweep as a Dataset over ``dimension``."""
+    """Summaries (:func:`memstribo.simulations.mesh.summarize`) of a sweep as a Dataset over ``dimension``."""
     import xarray as xr
 
-    from .mesh import SUMMARY_UNITS as units
+    from memstribo.simulations.mesh import SUMMARY_UNITS as units
     data = {key: (dimension, np.array([float(s[key]) for s in summaries], dtype=float),
                   {"units": units.get(key, ""), "long_name": key.replace("_", " ")}) for key in units
             if all(key in s and isinstance(s[key], (int, float, np.number)) for s in summaries)}
@@ -639,7 +639,7 @@ class RunChain:
         """``run.json`` of the earlier run in the folder, checked against these parameters and options."""
         import json
 
-        from .parameters import read_config
+        from memstribo.parameters import read_config
 
         manifest_path = self.folder / "run.json"
         if not manifest_path.is_file():
@@ -736,7 +736,7 @@ class RunChain:
 
     def _provenance(self, roughness=None, **extra):
         """Global attributes of a file of the current stage (:func:`memstribo.output.provenance_attributes`)."""
-        from .output import provenance_attributes
+        from memstribo.output import provenance_attributes
 
         stage = self._current.name if self._current is not None else ""
         doc = (getattr(type(self), stage, None).__doc__ or "") if stage else ""
@@ -758,7 +758,7 @@ class RunChain:
     # stages --------------------------------------------------------------------------------------
     def roughness(self):
         """Default synthetic profile and measured files: statistics (ISO 4287) and figure."""
-        from . import roughness
+        from memstribo.surfaces import roughness
         profiles, surfaces = self._read_roughness()
         statistics = [roughness.profile_statistics(p) for p in profiles]
         import xarray as xr
@@ -793,7 +793,7 @@ class RunChain:
 
     def _read_roughness(self):
         """The default profile and the measured files: (profiles, surfaces); a map gives its middle scan line."""
-        from . import readers, roughness
+        from memstribo.surfaces import readers, roughness
 
         profiles = [roughness.default_profile(self.params)]
         surfaces = [None]  # what the meshing cycle gets: None is the synthetic default, else the file's surface
@@ -823,7 +823,7 @@ class RunChain:
 
     def geometry(self):
         """Nanoblock geometry from the parameters, and derived from each profile (with the rules used)."""
-        from .nanoblock import geometry
+        from memstribo.physics.nanoblock import geometry
         rows = {"parameters": geometry.NanoblockGeometry.from_parameters(self.params)}
         notes = []
         for profile in self.results["profiles"]:
@@ -863,7 +863,7 @@ class RunChain:
     def sliding(self):
         """A single nanoblock on a flat at the external load (2.6.2) and the hierarchical structure sliding on
         the rough profile under a fixed load (3.4.2, 3.6): friction, COF and its split over the distance."""
-        from . import sliding
+        from memstribo.simulations import sliding
         summaries = {}
         for model, profile, distance, stem in (
                 ("single", None, None, "sliding_single"),
@@ -889,9 +889,9 @@ class RunChain:
 
     def gear(self):
         """Gear pair geometry, Hertz contact at the pitch point and F_t (4-27)."""
-        from .gear import gear_summary
+        from memstribo.physics.gear import gear_summary
 
-        from . import gear
+        from memstribo.physics import gear
         values, units = gear_summary(self.params)
         self._json({"values": values, "units": units}, "gear")
         self.summaries["gear"] = values
@@ -902,10 +902,10 @@ class RunChain:
                      "(4-12, signed radii) and Hertz half-width (4-24) at the external load.")
 
     def _simulate(self, params, coating=None, wear=1.0):
-        from . import mesh
+        from memstribo.simulations import mesh
         coating_object = None
         if coating is not None:
-            from .coating import get_coating
+            from memstribo.physics.coating import get_coating
 
             coating_object = get_coating(coating, params)
         return mesh.simulate_mesh(params, self.results["mesh_roughness"], steps=self.options.steps,
@@ -918,7 +918,7 @@ class RunChain:
     def mesh(self):
         """The bare-silicon meshing cycle (thesis 4.9, MODEL 7b): forces, COF and its split, energies, the
         stiction verdict over an ensemble of roughness realisations and its step convergence."""
-        from . import mesh
+        from memstribo.simulations import mesh
         dataset = self._simulate(self.model_params)
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
@@ -948,7 +948,7 @@ class RunChain:
 
     def load_sweep(self):
         """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
-        from . import mesh
+        from memstribo.simulations import mesh
         summaries = [mesh.sweep(self.model_params, "load", [load], self.results["mesh_roughness"], steps=self.options.steps)[0]
                      for load in self._tick(self.options.loads, "load sweep")]
         dataset = _sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
@@ -961,10 +961,10 @@ class RunChain:
     def area_sweep(self):
         """COF and energy versus nominal contact area, in multiples of A_adh = w_adh^2 (4.9.4).
 
-        As :func:`memstribo.mesh.sweep` (``"area"``): the face width is set to k w_adh, so that k rows of
+        As :func:`memstribo.simulations.mesh.sweep` (``"area"``): the face width is set to k w_adh, so that k rows of
         nanoblocks share the load.
         """
-        from . import mesh
+        from memstribo.simulations import mesh
         summaries = [mesh.sweep(self.model_params, "area", [k], self.results["mesh_roughness"], steps=self.options.steps)[0]
                      for k in self._tick(self.options.areas, "area sweep")]
         dataset = _sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
@@ -991,8 +991,9 @@ class RunChain:
 
     def wear_sweep(self):
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
-        from . import coating
-        dataset = coating.wear_sweep(self.model_params, self.options.coating, list(self.options.wear),
+        from memstribo.physics import coating
+        from memstribo.simulations import coating_wear
+        dataset = coating_wear.wear_sweep(self.model_params, self.options.coating, list(self.options.wear),
                                      roughness=self.results["mesh_roughness"], steps=self.options.steps)
         self._dataset(dataset, "wear_sweep")
         self.results["wear_sweep"] = dataset
@@ -1007,7 +1008,7 @@ class RunChain:
 
     def damage(self):
         """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
-        from . import damage
+        from memstribo.physics import damage
         outcome = damage.run_damage(self.model_params, self.results["coated"], wear_sweep=self.results.get("wear_sweep"),
                       cycles_observed=self.options.cycles_observed)
         self.summaries["damage"] = dict(outcome.summary)
@@ -1055,7 +1056,7 @@ class RunChain:
         """All stages in order; parameters, references, run.json and report.html after each."""
         from tqdm.auto import tqdm
 
-        from .references import REFERENCES, cites, reset_used_references
+        from memstribo.references import REFERENCES, cites, reset_used_references
 
         start = time.perf_counter()
         reset_used_references()
@@ -1092,7 +1093,7 @@ class RunChain:
         bar.close()
         validation = None
         if self.options.validation:
-            from .report import validation_rows
+            from memstribo.job.report import validation_rows
 
             log.info("validation table (every topic's rows, 1-3 min) ...")
             validation = validation_rows()
@@ -1108,8 +1109,8 @@ class RunChain:
         atomic_write_text(self.folder / name, text)
 
     def _finish(self, elapsed, validation=None) -> RunResult:
-        from .references import used_references
-        from .report import write_report
+        from memstribo.references import used_references
+        from memstribo.job.report import write_report
 
         result = RunResult(self.folder, self.params, self.options, list(self.records.values()),
                            self._ordered_figures(), dict(self.summaries), verdict(self.summaries), list(self.inputs),

@@ -31,8 +31,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import InputError
-from .references import cites
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = [
     "Profile",

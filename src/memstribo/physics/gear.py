@@ -32,15 +32,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .adhesion import contact_modulus  # noqa: F401  (4-25); re-exported for the gear's users
-from .errors import InputError
-from .references import cites
+from memstribo.materials.pair import contact_modulus_of
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = [
     "GearPair",
     "gear_summary",
     "HertzLineContact",
-    "contact_modulus",
     "module_from_outer_diameters",
     "first_contact_point",
     "last_contact_point",
@@ -700,8 +699,7 @@ def gear_summary(params) -> tuple[dict, dict]:
         SI unit of each key.
     """
     pair = GearPair.from_parameters(params)
-    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"],
-                              params["counter_youngs_modulus"], params["counter_poisson_ratio"])
+    modulus = contact_modulus_of(params)
     zone = pair.single_tooth_zone
     hertz = pair.hertz(0.0, params["normal_load"], modulus)
     values = {
@@ -736,9 +734,7 @@ def gear_summary(params) -> tuple[dict, dict]:
 def pitch_point_line_contact(params) -> tuple[float, float, float]:
     """Contact modulus E* [Pa], effective radius R_ef at the pitch point [m] (4-11) and the line load
     ``normal_load / face_width`` [N/m] of the parameter set: the default line contact of ``memstribo contact``."""
-    from .adhesion import contact_modulus
 
-    modulus = contact_modulus(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
-                              params["counter_poisson_ratio"])
+    modulus = contact_modulus_of(params)
     pair = GearPair.from_parameters(params)
     return float(modulus), float(pair.effective_radius(0.0)), params["normal_load"] / params["face_width"]

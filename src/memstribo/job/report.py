@@ -66,7 +66,7 @@ def _e(text: Any) -> str:
 
 
 def _quantity(value: Any, unit: str = "") -> str:
-    from .output import format_value
+    from memstribo.output import format_value
 
     if value is None:
         return "-"
@@ -77,8 +77,8 @@ def _quantity(value: Any, unit: str = "") -> str:
 
 def validation_rows() -> tuple[list, str | None]:
     """All validation rows (:func:`memstribo.validation.all_rows`), or the error that stopped them."""
-    from .validation import all_rows
-    from .validation.roughness import measured_files_available
+    from memstribo.validation import all_rows
+    from memstribo.validation.roughness import measured_files_available
 
     try:
         rows = list(all_rows())
@@ -173,7 +173,7 @@ def _inputs_html(result) -> str:
                     f"<td>{'yes' if item.get('meshing') else ''}</td></tr>")
     roughness = ("<table><tr><th>profile</th><th>kind</th><th>provenance</th><th>Rq</th><th>rms slope</th>"
                  "<th>points</th><th>used by the meshing stages</th></tr>" + "".join(rows) + "</table>") if rows else "<p>No roughness input was read.</p>"
-    from .parameters import SPECS
+    from memstribo.parameters import SPECS
 
     params = result.params
     param_rows = []
@@ -202,8 +202,8 @@ def _inputs_html(result) -> str:
 
 def _changed_parameters(params) -> list[str]:
     """Names whose value differs from the named parameter set (the user's overrides)."""
-    from .errors import MemstriboError
-    from .parameters import get_parameter_values
+    from memstribo.errors import MemstriboError
+    from memstribo.parameters import get_parameter_values
 
     try:
         base = get_parameter_values(params.name)
@@ -249,7 +249,7 @@ def _validation_html(validation) -> str:
     if error:
         parts.append(f"<p class='bad'>The validation rows could not all be computed: {_e(error)}</p>")
     if rows:
-        from .validation.__main__ import format_number, format_value, summary
+        from memstribo.validation.__main__ import format_number, format_value, summary
 
         counts = summary(rows)
         parts.append(f"<p><b>{counts['rows']} comparisons: {counts['agree']} agree, {counts['differ']} differ</b> "
@@ -268,7 +268,7 @@ def _validation_html(validation) -> str:
 
 
 def _references_html() -> str:
-    from .references import used_references
+    from memstribo.references import used_references
 
     items = "".join(f"<li id='ref-{_e(k)}'><b>[{_e(k)}]</b> {_e(text)}</li>" for k, text in used_references())
     return f"<ol>{items}</ol>" if items else "<p>No model function recorded a reference.</p>"
@@ -279,12 +279,12 @@ def render_report(result, validation=None) -> str:
 
     Parameters
     ----------
-    result : memstribo.chain.RunResult
+    result : memstribo.job.chain.RunResult
         The run.
     validation : tuple, optional
         ``(rows, error)`` as :func:`validation_rows` returns; None: the table is not shown (yet).
     """
-    from . import __version__
+    from memstribo import __version__
 
     stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     done = sum(1 for s in result.stages if s.status == "done")
@@ -310,6 +310,6 @@ def render_report(result, validation=None) -> str:
 
 def write_report(result, path: str | Path, validation=None) -> Path:
     """Write :func:`render_report` to ``path`` atomically; return the path."""
-    from .output import atomic_write_text
+    from memstribo.output import atomic_write_text
 
     return atomic_write_text(Path(path), render_report(result, validation))

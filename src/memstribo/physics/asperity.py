@@ -23,7 +23,7 @@ d > 1 and infinite (integrable) for d <= 1; for d > 2 its maximum lies off the c
 
 The module also distributes the load of one nanoblock over its m x m atomic asperities
 with their mutual elastic influence (:func:`nanoblock_load_sharing`), the loads from which
-the damage model (:mod:`memstribo.damage`) starts (thesis Table 5-1).
+the damage model (:mod:`memstribo.physics.damage`) starts (thesis Table 5-1).
 """
 
 from __future__ import annotations
@@ -34,9 +34,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import as_array
-from .errors import ConvergenceError, InputError
-from .references import cites
+from memstribo.checks import as_array
+from memstribo.errors import ConvergenceError, InputError
+from memstribo.references import cites
 
 __all__ = [
     "PowerLawContact",
@@ -46,7 +46,6 @@ __all__ = [
     "power_law_contact_radius",
     "power_law_pressure",
     "power_law_max_pressure",
-    "contact_modulus",
     "asperity_positions",
     "nanoblock_load_sharing",
     "position_classes",
@@ -82,34 +81,6 @@ def power_law_factor(degree: float) -> float:
 
     d = _check_degree(degree)
     return float(math.sqrt(math.pi) * math.exp(gammaln(d / 2 + 1) - gammaln(d / 2 + 0.5)))
-
-
-def contact_modulus(youngs_modulus: float, poisson_ratio: float, counter_youngs_modulus: float | None = None,
-                    counter_poisson_ratio: float | None = None) -> float:
-    """Contact modulus E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) [Pa].
-
-    Parameters
-    ----------
-    youngs_modulus, counter_youngs_modulus : float
-        Young's moduli of the two bodies [Pa]; the counter body defaults to the first.
-    poisson_ratio, counter_poisson_ratio : float
-        Poisson's ratios [-]; the counter body defaults to the first.
-
-    Returns
-    -------
-    float
-        E* [Pa]. Silicon/silicon (161 GPa, 0.23): 84.996 GPa, the thesis's 8.4996e10 Pa (5.5.2).
-    """
-    e2 = youngs_modulus if counter_youngs_modulus is None else counter_youngs_modulus
-    n2 = poisson_ratio if counter_poisson_ratio is None else counter_poisson_ratio
-    as_array(youngs_modulus, "youngs_modulus", "Pa", positive=True)
-    as_array(e2, "counter_youngs_modulus", "Pa", positive=True)
-    return 1.0 / ((1 - poisson_ratio ** 2) / youngs_modulus + (1 - n2 ** 2) / e2)
-
-
-def _contact_modulus_from(params) -> float:
-    return contact_modulus(params["youngs_modulus"], params["poisson_ratio"],
-                           params["counter_youngs_modulus"], params["counter_poisson_ratio"])
 
 
 @dataclass(frozen=True)

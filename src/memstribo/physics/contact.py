@@ -15,7 +15,7 @@ where u is the combined elastic surface displacement (positive: the surfaces mov
     a linear (zero-padded, non-periodic) FFT convolution. In plane strain the displacement
     under a finite load grows like ``log(distance)``, so it needs a datum: the displacement of
     a point load is taken as zero at ``reference_distance`` (default: the domain length
-    n*dx), i.e. the kernel is ``(2/(pi E*)) ln(L/|x|)``; :func:`memstribo.reference.hertz_line_approach`
+    n*dx), i.e. the kernel is ``(2/(pi E*)) ln(L/|x|)``; :func:`memstribo.physics.closed_form.hertz_line_approach`
     is exact for this datum.
 ``periodic=True`` (for comparison with periodic solvers)
     The spectral Green's function u_k = 2 p_k / (E* |q_k|) at the grid wavenumbers, with a
@@ -742,10 +742,10 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
         updates; "polonsky-keer": the constrained CG of [1]_ throughout.
     cohesive_stress : float, optional
         Dugdale stress sigma0 [Pa] of a Maugis-Dugdale cohesive zone (give it with
-        ``cohesive_range``; :func:`memstribo.adhesion.maugis_stress`). Both None (default):
+        ``cohesive_range``; :func:`memstribo.physics.adhesion.maugis_stress`). Both None (default):
         no adhesion, the non-adhesive solver above, unchanged.
     cohesive_range : float, optional
-        Range h0 [m] of the Dugdale stress (w = sigma0 h0, :func:`memstribo.adhesion.maugis_range`).
+        Range h0 [m] of the Dugdale stress (w = sigma0 h0, :func:`memstribo.physics.adhesion.maugis_range`).
     approach : float, optional
         Rigid-body approach [m] (same datum as :attr:`ContactSolution.approach`): displacement
         control instead of ``load``/``mean_pressure`` (with or without adhesion). Needed to

@@ -7,7 +7,7 @@ bodies enter through the contact (reduced) modulus ``contact_modulus`` E* with
 Line contacts (plane strain) are per unit face width: ``load`` is w [N/m]. In plane
 strain the surface displacement of a half-plane under a finite load grows like
 ``log(distance)``, so the rigid-body approach of a line contact is defined only relative to
-a datum. memstribo's datum (also used by :func:`memstribo.contact.solve_line_contact`) is
+a datum. memstribo's datum (also used by :func:`memstribo.physics.contact.solve_line_contact`) is
 the far field: the surface displacement under a load w tends to
 ``(2 w / (pi E*)) ln(reference_distance / r)`` at a distance ``r`` from the load, i.e. the
 displacement vanishes at ``reference_distance`` from a point load. With this datum the

@@ -9,7 +9,7 @@ carrying piecewise-constant pressures; the unknown is the pressure p >= 0 [Pa] w
 
 where u is the combined elastic surface displacement (positive: the surfaces move apart) and
 ``approach`` [m] the rigid-body approach. Arrays are indexed ``[iy, ix]`` (rows are lines
-along x), as :class:`memstribo.readers.SurfaceMap` stores heights.
+along x), as :class:`memstribo.surfaces.readers.SurfaceMap` stores heights.
 
 ``periodic=False`` (free boundary)
     Influence coefficients of uniformly loaded rectangles (Love 1929; Johnson 1985, §3.2,
@@ -21,7 +21,7 @@ along x), as :class:`memstribo.readers.SurfaceMap` stores heights.
     zero mean displacement (the convention of ContactMechanics and Tamaas, so the same
     discrete problem is solved; Stanley & Kato 1997).
 
-The solver (load control) is the one of :mod:`memstribo.contact`, in 2D: a primal-dual
+The solver (load control) is the one of :mod:`memstribo.physics.contact`, in 2D: a primal-dual
 active-set iteration whose contact-set problems are solved by a conjugate gradient
 preconditioned in Fourier space with the inverse of the half-space operator (E*|q|/2,
 restricted to the set; Vollebregt 2014), started from nested coarser grids (every other
@@ -163,7 +163,7 @@ class SurfaceContactSolution:
         attrs = {"approach": self.approach, "approach_units": "m", "load": self.load, "load_units": "N",
                  "contact_fraction": self.contact_fraction, "iterations": self.iterations,
                  "residual": self.residual, "converged": int(self.converged), "periodic": int(self.periodic),
-                 "message": self.message, "solver": "memstribo.surface_contact.solve_surface_contact"}
+                 "message": self.message, "solver": "memstribo.physics.surface_contact.solve_surface_contact"}
         return xr.Dataset(data, coords=coords, attrs=attrs)
 
 

@@ -2,14 +2,14 @@
 
 A design map sweeps two or more design parameters (drive torque, face width, module,
 teeth, roughness, coating, worn fraction Omega, ...) on a grid. Every grid point is an
-*ensemble verdict* (:func:`memstribo.mesh.simulate_ensemble`, MODEL 7b): ``realisations``
+*ensemble verdict* (:func:`memstribo.simulations.mesh.simulate_ensemble`, MODEL 7b): ``realisations``
 meshing cycles on independent roughness realisations give the stiction probability and the
 5/50/95 % quantiles of the stiction margin, the mean COF and the mesh efficiency. Coated
 points with a known damage coefficient c1 (parameter ``damage_coefficient``) or an observed
 coating life (``[map] cycles_observed``) also get the cycles to coating failure and to
-returning stiction (:func:`memstribo.damage.run_damage`).
+returning stiction (:func:`memstribo.physics.damage.run_damage`).
 
-The points run as independent tasks on dask.distributed (like :mod:`memstribo.study`, whose
+The points run as independent tasks on dask.distributed (like :mod:`memstribo.simulations.study`, whose
 helpers this module reuses): each finished point is written at once, atomically, to
 ``OUT/points/<id>.json``; ``resume=True`` computes only the missing points and reruns the
 failed ones. At the end ``OUT/map.nc`` (NetCDF, CF attributes and provenance) holds the map
@@ -53,9 +53,9 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputError, MemstriboError, did_you_mean
-from .output import ensure_directory
-from .units import printable
+from memstribo.errors import InputError, MemstriboError, did_you_mean
+from memstribo.output import ensure_directory
+from memstribo.units import printable
 
 __all__ = ["MapSpec", "MapResult", "MAP_RESULTS", "load_map_spec", "map_spec", "design_map", "map_point",
            "map_dataset", "map_figures"]
@@ -188,8 +188,8 @@ def map_spec(table: Mapping[str, Any], parameters: Mapping[str, Any] | None = No
         Unknown keys (with a did-you-mean), wrong types, an empty grid, a key both fixed and
         swept, a plot axis that is not a numeric axis, more than 10 000 points.
     """
-    from .study import _check_scalar, _expand_values
-    from .units import to_si
+    from memstribo.simulations.study import _check_scalar, _expand_values
+    from memstribo.units import to_si
 
     where = f"map spec {printable(source, 200)}"
     if not isinstance(table, Mapping):
@@ -255,7 +255,7 @@ def map_spec(table: Mapping[str, Any], parameters: Mapping[str, Any] | None = No
 
 def load_map_spec(path: str | Path) -> MapSpec:
     """Read a map spec TOML file (``[map]`` table, optional ``[parameters]``), validated whole."""
-    from .parameters import read_config
+    from memstribo.parameters import read_config
 
     config = read_config(path)
     if "map" not in config:
@@ -268,16 +268,16 @@ def load_map_spec(path: str | Path) -> MapSpec:
 
 
 def _is_numeric(key: str) -> bool:
-    from .parameters import SPECS
+    from memstribo.parameters import SPECS
 
     return (key in SPECS and SPECS[key].kind in ("float", "int")) or key in ("wear", "seed", "steps")
 
 
 def _study_of(spec: MapSpec):
-    """The map's points as a :class:`memstribo.study.StudySpec` (grid order: last axis fastest)."""
+    """The map's points as a :class:`memstribo.simulations.study.StudySpec` (grid order: last axis fastest)."""
     import itertools
 
-    from .study import StudySpec
+    from memstribo.simulations.study import StudySpec
 
     fixed = dict(spec.fixed)
     if spec.steps is not None and "steps" not in fixed and "steps" not in spec.dims:
@@ -317,12 +317,12 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
     dict
         The keys of :data:`MAP_RESULTS` (SI; NaN where unknown) and ``note`` (text).
     """
-    from . import mesh
-    from .study import _read_roughness
+    from memstribo.simulations import mesh
+    from memstribo.simulations.study import _read_roughness
 
     coating_object = None
     if coating is not None:
-        from .coating import get_coating
+        from memstribo.physics.coating import get_coating
 
         coating_object = get_coating(coating, params)
     surface = _read_roughness(roughness)
@@ -345,8 +345,8 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
     elif params["damage_coefficient"] is None and cycles_observed is None:
         note = "coating life unknown: set the parameter damage_coefficient or [map] cycles_observed"
     else:
-        from . import coating as coating_module
-        from . import damage
+        from memstribo.simulations import coating_wear as coating_module
+        from memstribo.physics import damage
 
         try:
             sweep = coating_module.wear_sweep(params, coating_object, list(wear_sweep), roughness=surface,
@@ -409,9 +409,9 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
     InputError
         A bad point, ``out`` holding another map, or ``out`` holding this map without ``resume``.
     """
-    from .output import provenance_attributes, write_dataset
-    from .parameters import get_parameter_values
-    from .study import _finished_points, _hash, _write_json_atomic, POINTS_FOLDER, prepare_points
+    from memstribo.output import provenance_attributes, write_dataset
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.study import _finished_points, _hash, _write_json_atomic, POINTS_FOLDER, prepare_points
 
     start = time.perf_counter()
     params = params if params is not None else get_parameter_values()
@@ -478,7 +478,7 @@ def _compute(spec, function, todo, folder, total, already, client, scheduler, wo
     from distributed import as_completed
     from tqdm.auto import tqdm
 
-    from .study import POINTS_FOLDER, _connect, _write_json_atomic, evaluate_point
+    from memstribo.simulations.study import POINTS_FOLDER, _connect, _write_json_atomic, evaluate_point
 
     cluster = None
     own = client is None
@@ -521,9 +521,9 @@ def map_dataset(records: list[dict], spec: MapSpec, points: list | None = None):
     """
     import xarray as xr
 
-    from .parameters import SPECS
-    from .study import STUDY_KEYS, _unit_of
-    from .units import to_si
+    from memstribo.parameters import SPECS
+    from memstribo.simulations.study import STUDY_KEYS, _unit_of
+    from memstribo.units import to_si
 
     shape, dims = spec.shape, spec.dims
     coords = {}
@@ -616,7 +616,7 @@ def map_figures(dataset, folder: str | Path, plot=(), *, stem_prefix: str = "", 
     """
     import itertools
 
-    from .output import new_figure, save_figure
+    from memstribo.output import new_figure, save_figure
 
     plot = list(plot) or [d for d in dataset["stiction_probability"].dims
                           if dataset[d].dtype.kind == "f" and dataset.sizes[d] >= 2][:2]

@@ -31,9 +31,9 @@ import math
 
 import numpy as np
 
-from .checks import as_array
-from .errors import InputError
-from .references import cites
+from memstribo.checks import as_array
+from memstribo.errors import InputError
+from memstribo.references import cites
 
 __all__ = ["GAS_CONSTANT", "WATER", "kelvin_radius", "condensation_height", "laplace_pressure",
            "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap"]

@@ -24,7 +24,7 @@ Geometry of the structure models (memstribo's reading of Figures 3-16 to 3-19, 3
 - an adhesive block forms vdW bonds over the part of its face where the counter profile lies
   within the adhesive layer (thickness ``adhesive_layer_thickness``, unset: the
   adhesive-block height, thesis 3.5; the same rule as the meshing cycle,
-  :func:`memstribo.nanoblock.geometry.adhesive_layer_thickness`) below the face (``L_vdW`` of (3-12)), and adheres with the pull-off
+  :func:`memstribo.physics.nanoblock.geometry.adhesive_layer_thickness`) below the face (``L_vdW`` of (3-12)), and adheres with the pull-off
   force (3-32) of a contact of half-width ``a = L_vdW / 2`` (``a = w_adh / 2`` when fully
   inside, as in 3.5);
 - every time the structure slides by ``D_chem`` all current bonds break and re-form (3.5);
@@ -45,12 +45,12 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from .checks import as_positive_scalar
-from . import friction
-from .errors import InputError
-from .nanoblock import mechanics
-from .nanoblock.geometry import adhesive_layer_thickness
-from .references import cites
+from memstribo.checks import as_positive_scalar
+from memstribo.physics import friction
+from memstribo.errors import InputError
+from memstribo.physics.nanoblock import mechanics
+from memstribo.physics.nanoblock.geometry import adhesive_layer_thickness
+from memstribo.references import cites
 
 __all__ = [
     "MODELS",
@@ -73,13 +73,13 @@ _CHUNK = 16384  # steps per vectorised chunk (bounds the memory of the footprint
 # --------------------------------------------------------------------------------------
 
 def _geometry(params):
-    from .nanoblock.geometry import NanoblockGeometry
+    from memstribo.physics.nanoblock.geometry import NanoblockGeometry
 
     return NanoblockGeometry.from_parameters(params)
 
 
 def _constants(params):
-    from .adhesion import nanoscale_constants
+    from memstribo.physics.adhesion import nanoscale_constants
 
     return nanoscale_constants(params)
 
@@ -309,7 +309,7 @@ def slide_single(params, *, load=None, distance=None, step=None):
 # --------------------------------------------------------------------------------------
 
 def _prepare_profile(profile, params):
-    from .roughness import default_profile, level_profile
+    from memstribo.surfaces.roughness import default_profile, level_profile
 
     if profile is None:
         profile = default_profile(params)
@@ -485,7 +485,7 @@ def slide_fixed_gap(params, profile=None, *, gap=None, distance=None, step=None,
         Parameter set (geometry, constants, ``slider_blocks``, ``sliding_gap``, ...).
     profile : roughness.Profile or readers.SurfaceMap, optional
         Counter surface (levelled here); default: the seeded synthetic thesis profile
-        (:func:`memstribo.roughness.default_profile`); of a map, the first line scan.
+        (:func:`memstribo.surfaces.roughness.default_profile`); of a map, the first line scan.
     gap : float, optional
         Height of the undeformed atomic tips above the profile's mean line [m] (negative:
         interference); default ``sliding_gap`` (unset: the profile's Rq).

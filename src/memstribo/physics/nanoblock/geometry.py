@@ -29,9 +29,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import InputError
-from ..references import cites
-from ..roughness import Profile, asperity_widths, level_profile, rms_wavelength
+from memstribo.errors import InputError
+from memstribo.references import cites
+from memstribo.surfaces.roughness import Profile, asperity_widths, level_profile, rms_wavelength
 
 __all__ = ["NanoblockGeometry", "nanoblock_geometry_from_profile", "adhesive_layer_thickness",
            "ATOMIC_HEIGHT_FACTOR", "ADHESIVE_HEIGHT_FACTOR"]
@@ -151,8 +151,8 @@ def adhesive_layer_thickness(params, geometry: NanoblockGeometry) -> float:
     ``h0 = w / sigma0`` (3-17, MODEL.md §2; ``memstribo constants`` prints it) is the physical
     alternative, available as an explicit setting (``--set adhesive_layer_thickness="0.2494 nm"``).
 
-    Used by the flat sliding models (:mod:`memstribo.sliding`) and the meshing cycle
-    (:mod:`memstribo.mesh`).
+    Used by the flat sliding models (:mod:`memstribo.simulations.sliding`) and the meshing cycle
+    (:mod:`memstribo.simulations.mesh`).
 
     Parameters
     ----------

@@ -4,8 +4,8 @@ A study is a list of *points*; each point is a set of overrides (model parameter
 ``normal_load`` or ``module``, plus the study keys ``coating``, ``wear``, ``roughness``,
 ``seed`` and ``steps``) applied to a base parameter set. A *point function* turns the
 parameters of one point into a dict of scalar results (SI units). The default point
-function, ``"mesh"``, is the meshing-cycle summary of :func:`memstribo.mesh.simulate_mesh`
-and :func:`memstribo.mesh.summarize` (the keys of ``memstribo mesh --json``).
+function, ``"mesh"``, is the meshing-cycle summary of :func:`memstribo.simulations.mesh.simulate_mesh`
+and :func:`memstribo.simulations.mesh.summarize` (the keys of ``memstribo mesh --json``).
 
 The points run on a dask.distributed cluster: an embedded ``LocalCluster`` (processes, one
 thread each, no dashboard) or an existing cluster given by its scheduler address. Results do
@@ -60,9 +60,9 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputError, MemstriboError, did_you_mean
-from .output import dumps_json, ensure_directory, to_jsonable
-from .units import printable
+from memstribo.errors import InputError, MemstriboError, did_you_mean
+from memstribo.output import dumps_json, ensure_directory, to_jsonable
+from memstribo.units import printable
 
 __all__ = ["StudySpec", "StudyResult", "STUDY_KEYS", "POINT_FUNCTIONS", "MAX_STUDY_POINTS", "load_study_spec",
            "study_spec", "prepare_points", "run_study", "evaluate_point", "mesh_point", "gear_point", "slide_point",
@@ -176,7 +176,7 @@ def _expand_values(key: str, values: Any, where: str) -> list[Any]:
             raise InputError(f"{where}: range '{printable(key)}' must be a table {{start, stop, num}}, got "
                              f"{printable(repr(dict(values)), 80)}.")
         unit = _unit_of(key)
-        from .units import to_si
+        from memstribo.units import to_si
 
         try:
             start = to_si(values["start"], unit, key)
@@ -201,7 +201,7 @@ def _expand_values(key: str, values: Any, where: str) -> list[Any]:
 
 
 def _unit_of(key: str) -> str:
-    from .parameters import SPECS
+    from memstribo.parameters import SPECS
 
     if key in STUDY_KEYS:
         return STUDY_KEYS[key][0]
@@ -280,7 +280,7 @@ def study_spec(study: Mapping[str, Any], parameters: Mapping[str, Any] | None = 
 
 def load_study_spec(path: str | Path) -> StudySpec:
     """Read a study spec TOML file (``[study]`` table, optional ``[parameters]``), validated whole."""
-    from .parameters import read_config
+    from memstribo.parameters import read_config
 
     config = read_config(path)
     if "study" not in config:
@@ -304,8 +304,8 @@ class _Point:
 
 def _point_options(raw: Mapping[str, Any], where: str, base_folder: Path | None) -> tuple[dict, dict]:
     """Split a point into parameter overrides and study options (validated)."""
-    from .parameters import SPECS
-    from .units import to_si
+    from memstribo.parameters import SPECS
+    from memstribo.units import to_si
 
     overrides, options = {}, {}
     for key, value in raw.items():
@@ -323,7 +323,7 @@ def _point_options(raw: Mapping[str, Any], where: str, base_folder: Path | None)
     if coating is None or str(coating).strip().lower() in ("none", "bare", ""):
         clean["coating"] = None
     else:
-        from .coating import available_coatings
+        from memstribo.physics.coating import available_coatings
 
         known = available_coatings()
         if not isinstance(coating, str) or coating not in known:
@@ -380,7 +380,7 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
         except InputError as exc:
             raise InputError(f"{where}: {exc}") from None
         if options.get("steps") is not None and "mesh_window" in point_params:
-            from .parameters import check_mesh_size
+            from memstribo.parameters import check_mesh_size
 
             try:
                 check_mesh_size(options["steps"], point_params["mesh_window"], point_params["mesh_grid_spacing"],
@@ -406,7 +406,7 @@ def _hash(value: Any) -> str:
 def _read_roughness(path: str | None):
     if path is None:
         return None
-    from .readers import read_topography
+    from memstribo.surfaces.readers import read_topography
 
     return read_topography(path)
 
@@ -420,7 +420,7 @@ def mesh_point(params, coating: str | None = None, wear: float = 1.0, roughness:
     params : memstribo.parameters.Parameters
         The point's parameters.
     coating : str or None
-        Coating name (:func:`memstribo.coating.get_coating`); None for bare silicon.
+        Coating name (:func:`memstribo.physics.coating.get_coating`); None for bare silicon.
     wear : float
         Worn fraction Omega of the gear's coating [-] (1 for bare silicon).
     roughness : str or None
@@ -431,13 +431,13 @@ def mesh_point(params, coating: str | None = None, wear: float = 1.0, roughness:
     Returns
     -------
     dict
-        :func:`memstribo.mesh.summarize` of the meshing cycle (SI units).
+        :func:`memstribo.simulations.mesh.summarize` of the meshing cycle (SI units).
     """
-    from . import mesh
+    from memstribo.simulations import mesh
 
     coating_object = None
     if coating is not None:
-        from .coating import get_coating
+        from memstribo.physics.coating import get_coating
 
         coating_object = get_coating(coating, params)
     dataset = mesh.simulate_mesh(params, _read_roughness(roughness), steps=steps, coating=coating_object,
@@ -450,7 +450,7 @@ def gear_point(params, coating: str | None = None, wear: float = 1.0, roughness:
     """Gear geometry and the pitch-point Hertz contact of one point (``memstribo gear --json``; fast)."""
     if coating is not None or roughness is not None or steps is not None:
         raise InputError("point function 'gear' takes no coating, roughness or steps (it is the smooth pair).")
-    from .gear import gear_summary
+    from memstribo.physics.gear import gear_summary
 
     values, _ = gear_summary(params)
     return values
@@ -461,7 +461,7 @@ def slide_point(params, coating: str | None = None, wear: float = 1.0, roughness
     """The fixed-load flat-friction slide of one point (``memstribo slide --json``): COF, forces, energies."""
     if coating is not None or steps is not None:
         raise InputError("point function 'slide' takes no coating or steps (set sliding_step for the step).")
-    from . import sliding
+    from memstribo.simulations import sliding
 
     return sliding.summarize(sliding.slide("fixed-load", params, _read_roughness(roughness))).to_dict()
 
@@ -476,7 +476,7 @@ POINT_FUNCTIONS: dict[str, Callable] = {
 
 
 def _units_of_slide():
-    from .sliding import UNITS
+    from memstribo.simulations.sliding import UNITS
 
     return UNITS
 
@@ -526,7 +526,7 @@ def evaluate_point(function, params, options: Mapping[str, Any]) -> dict[str, An
     Model errors (:class:`memstribo.errors.MemstriboError`) are recorded, not raised, so that
     one impossible point (e.g. stiction at start-up) does not stop a study of thousands.
     """
-    from .references import reset_used_references
+    from memstribo.references import reset_used_references
 
     reset_used_references()
     start = time.perf_counter()
@@ -548,7 +548,7 @@ def evaluate_point(function, params, options: Mapping[str, Any]) -> dict[str, An
 
 def _write_json_atomic(path: Path, value: Any) -> None:
     """One point's result, durable before the rename (fsync): a killed study loses no finished point."""
-    from .output import atomic_write
+    from memstribo.output import atomic_write
 
     def write(tmp):
         with open(tmp, "w", encoding="utf-8") as handle:
@@ -621,7 +621,7 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     InputError
         Bad spec or point, ``out`` holding another study, or ``out`` holding this study without ``resume``.
     """
-    from .parameters import get_parameter_values
+    from memstribo.parameters import get_parameter_values
 
     start = time.perf_counter()
     params = params if params is not None else get_parameter_values()
@@ -665,7 +665,7 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
         raise InputError(f"{len(missing)} point(s) have no result file in '{folder / POINTS_FOLDER}'; rerun with --resume.")
     ordered = [records[p.id] for p in points]
     dataset = study_dataset(ordered, spec, points)
-    from .output import provenance_attributes, write_dataset
+    from memstribo.output import provenance_attributes, write_dataset
 
     base = params.updated(spec.parameters, origin=f"study spec {spec.source}") if spec.parameters else params
     provenance = provenance_attributes(base, extra={"command": "memstribo study", "study_spec": str(spec.source),
@@ -723,8 +723,8 @@ def study_dataset(records: list[dict], spec: StudySpec | None = None, points: li
     """
     import xarray as xr
 
-    from .parameters import SPECS
-    from .units import to_si
+    from memstribo.parameters import SPECS
+    from memstribo.units import to_si
 
     n = len(records)
     data: dict[str, Any] = {}
@@ -826,7 +826,7 @@ def _result_units(spec: StudySpec | None) -> dict[str, str]:
         units = _UNITS_OF[spec.function]()
     if units is None and spec.function == "mesh":
         try:
-            from . import mesh
+            from memstribo.simulations import mesh
 
             units = getattr(mesh, "SUMMARY_UNITS", None)
         except ImportError:

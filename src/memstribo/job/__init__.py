@@ -1,0 +1,1 @@
+"""Layer 5, the main job (``memstribo run``): its stages, figures and report.html."""

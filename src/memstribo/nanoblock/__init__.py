@@ -1,6 +1,0 @@
-"""Nanoblocks: the hierarchical model of a rough silicon surface (thesis 2.6, 3.4, 4.2.3).
-
-- :mod:`memstribo.nanoblock.geometry`: block sizes, explicit or derived from a measured profile;
-- :mod:`memstribo.nanoblock.mechanics`: columns and hierarchical structures under a fixed gap
-  or a fixed load, the bilinear law, elastic interlocking energy.
-"""
