@@ -313,3 +313,88 @@ def test_figures_coating_life_and_one_axis(tmp_path):
     assert {p.name for p in written} >= {"design_map_stiction.png", "design_map_coating_life.svg"} and not notes
     written, _ = map_figures(dataset, tmp_path / "one", ["face_width"])
     assert (tmp_path / "one" / "design_map_efficiency.png").is_file()
+
+
+# --- references: the models used on the workers reach map.nc and the study's files ---------------------------
+
+def test_map_nc_cites_the_models_its_points_used(client, tmp_path):
+    """The @cites registry fills in the worker processes; each point brings its keys back to map.nc."""
+    import xarray as xr
+
+    from memstribo.references import reset_used_references, used_references
+
+    reset_used_references()  # nothing cited in this (the client's) process
+    spec = map_spec({"realisations": 1, "steps": 11, "grid": {"drive_torque": ["1e-7 N*m", "2e-7 N*m"]}})
+    result = design_map(spec, tmp_path / "out", client=client, figures=False)
+    records = [json.loads(p.read_text()) for p in (tmp_path / "out" / "points").glob("*.json")]
+    assert all("polonsky_keer_1999" in r["references"] and "thesis" in r["references"] for r in records)
+    assert {r["pid"] for r in records} != {os.getpid()}  # computed elsewhere
+    with xr.open_dataset(result.folder / "map.nc") as disk:
+        cited = disk.attrs["models_cited"]
+    assert cited != "none recorded"
+    assert {"thesis", "polonsky_keer_1999", "johnson_1985"} <= set(cited.split(", "))
+    assert "polonsky_keer_1999" in dict(used_references())  # and the client's record (references.txt of a run)
+
+
+def test_study_files_cite_the_models_their_points_used(tmp_path):
+    import xarray as xr
+
+    from memstribo.references import reset_used_references
+    from memstribo.study import run_study, study_spec
+
+    reset_used_references()
+    spec = study_spec({"function": "mesh", "points": [{"steps": 11}]})
+    result = run_study(spec, tmp_path / "out", workers=1)
+    assert result.n_failed == 0, result.errors
+    with xr.open_dataset(tmp_path / "out" / "results.nc") as disk:
+        cited = disk.attrs["models_cited"]
+    assert cited != "none recorded" and "polonsky_keer_1999" in cited.split(", ")
+
+
+def test_collect_references_per_block_and_nested():
+    from memstribo.references import cites, collect_references, record_references, used_references
+
+    first = cites("thesis")(lambda: 1)
+    second = cites("johnson_1985", "model")(lambda: 2)
+    with collect_references() as outer:
+        first()
+        with collect_references() as inner:
+            second()
+        assert list(inner) == ["johnson_1985", "model"]
+    assert list(outer) == ["thesis", "johnson_1985", "model"]
+    second()
+    assert list(outer) == ["thesis", "johnson_1985", "model"]  # closed: no longer filled
+    record_references(["hu_1986"])
+    assert "hu_1986" in dict(used_references())
+    with pytest.raises(KeyError, match="unknown reference"):
+        record_references(["no_such_paper"])
+
+
+# --- the local cluster: quiet when another cluster holds the dashboard port -------------------------------------
+
+def test_local_cluster_warns_nothing_when_port_8787_is_taken(capfd):
+    """distributed's scheduler starts an HTTP server even with dashboard_address=None, by default on
+    port 8787, and warns 'Port 8787 is already in use' when another cluster holds it."""
+    import warnings
+
+    from memstribo.study import _connect
+
+    holder = socket.socket()
+    try:
+        holder.bind(("0.0.0.0", 8787))  # as another cluster's dashboard would
+        holder.listen()
+    except OSError:
+        pass  # already held by someone else: the same situation
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            client, cluster = _connect(None, 1)
+            try:
+                assert client.submit(abs, -3, pure=False).result(timeout=60) == 3
+            finally:
+                client.close()
+                cluster.close()
+    finally:
+        holder.close()
+    messages = [str(w.message) for w in caught] + [capfd.readouterr().err]
+    assert not [m for m in messages if "already in use" in m], messages

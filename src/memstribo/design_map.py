@@ -412,6 +412,7 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
     from .output import provenance_attributes, write_dataset
     from .parameters import get_parameter_values
     from .study import _finished_points, _hash, _write_json_atomic, POINTS_FOLDER, prepare_points
+    from memstribo.study import points_references
 
     start = time.perf_counter()
     params = params if params is not None else get_parameter_values()
@@ -458,8 +459,10 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
                          "--resume.")
     ordered = [records[p.id] for p in points]
     dataset = map_dataset(ordered, spec, points)
+    cited = points_references(ordered)  # recorded on the workers, returned with each point
     provenance = provenance_attributes(base, extra={
-        "title": spec.name, "stage": "design map", "map_axes": json.dumps(list(spec.dims)),
+        "title": spec.name, "stage": "design map", "models_cited": ", ".join(cited) or "none recorded",
+        "map_axes": json.dumps(list(spec.dims)),
         "map_realisations": spec.realisations, "map_spec": spec.source,
         "map_cycles_observed": "none" if spec.cycles_observed is None else spec.cycles_observed,
         "map_wear_sweep": json.dumps(list(spec.wear_sweep))})
