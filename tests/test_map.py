@@ -398,3 +398,81 @@ def test_local_cluster_warns_nothing_when_port_8787_is_taken(capfd):
         holder.close()
     messages = [str(w.message) for w in caught] + [capfd.readouterr().err]
     assert not [m for m in messages if "already in use" in m], messages
+
+
+# --- `memstribo run` with [run] map: the map as the last stage, and its section of report.html ------------------
+
+def test_run_with_a_map_spec_writes_the_map_and_its_report_section(tmp_path):
+    import xarray as xr
+
+    from memstribo.cli.main import main
+
+    write(tmp_path / "tiny-map.toml", TINY)
+    config = write(tmp_path / "run.toml", '[run]\nstages = ["gear"]\nvalidation = false\nmap = "tiny-map.toml"\n')
+    out = tmp_path / "out"
+    assert main(["run", str(config), "--out", str(out), "--quiet", "--progress", "off"]) == 0
+    manifest = json.loads((out / "run.json").read_text())
+    stages = {s["name"]: s for s in manifest["stages"]}
+    assert stages["design_map"]["status"] == "done" and stages["gear"]["status"] == "done"
+    assert "map/map.nc" in stages["design_map"]["files"]
+    summary = manifest["summaries"]["design_map"]
+    assert (summary["points"], summary["computed"], summary["realisations"]) == (4, 4, 2)
+    with xr.open_dataset(out / "map" / "map.nc") as disk:
+        assert disk["stiction_probability"].dims == ("drive_torque", "face_width")
+        assert "polonsky_keer_1999" in disk.attrs["models_cited"]
+        probability = disk["stiction_probability"].values
+    assert summary["points_sticking"] == int((probability >= 0.5).sum())
+    assert (out / "figures" / "design_map_stiction.png").is_file()
+    assert (out / "figures" / "design_map_efficiency.svg").is_file()
+    report = (out / "report.html").read_text()
+    section = report[report.index("<h2>Design map</h2>"):report.index("<h2>Stages</h2>")]
+    assert "id='fig-design_map_stiction'" in section and "id='fig-design_map_efficiency'" in section
+    assert "50 % boundary" in section and "4 designs" in section
+    assert report.count("id='fig-design_map_stiction'") == 1  # not also among the other figures
+    assert "polonsky_keer_1999" in (out / "references.txt").read_text()  # cited on the map's workers
+    # resumable: the finished points are read back, not computed again
+    before = {p.name: p.read_text() for p in (out / "map" / "points").glob("*.json")}
+    assert main(["run", str(config), "--out", str(out), "--resume", "--quiet", "--progress", "off"]) == 0
+    again = json.loads((out / "run.json").read_text())["summaries"]["design_map"]
+    assert (again["computed"], again["reused"]) == (0, 4)
+    assert {p.name: p.read_text() for p in (out / "map" / "points").glob("*.json")} == before
+
+
+def test_run_without_a_map_has_no_map_stage_and_a_bad_map_stops_before_the_first_stage(tmp_path):
+    from memstribo.chain import STAGES, RunOptions
+    from memstribo.cli.main import main
+    from memstribo.report import _design_map_html
+
+    assert "design_map" not in STAGES and RunOptions().map is None
+    config = write(tmp_path / "run.toml", '[run]\nstages = ["gear"]\nvalidation = false\n')
+    assert main(["run", str(config), "--out", str(tmp_path / "plain"), "--quiet"]) == 0
+    manifest = json.loads((tmp_path / "plain" / "run.json").read_text())
+    assert [s["name"] for s in manifest["stages"]] == list(STAGES)
+    assert "Design map" not in (tmp_path / "plain" / "report.html").read_text()
+    with pytest.raises(InputError, match="does not exist"):
+        RunOptions.from_table({"map": "missing.toml"}, tmp_path)
+    write(tmp_path / "bad.toml", TINY.replace("realisations = 2", "realisation = 2"))
+    with pytest.raises(InputError, match="\\[run\\] map: .*realisations"):
+        RunOptions.from_table({"map": "bad.toml"}, tmp_path)
+    bad = write(tmp_path / "bad-run.toml", '[run]\nstages = ["gear"]\nmap = "bad.toml"\n')
+    assert main(["run", str(bad), "--out", str(tmp_path / "never")]) == 2
+    assert not (tmp_path / "never" / "run.json").exists()
+    assert _design_map_html(type("R", (), {"stages": []})()) == ""
+
+
+def test_longest_points_are_submitted_first():
+    """Task order by cost (rows x steps x cycles): the map's tail is short points, not one long one."""
+    import functools
+
+    from memstribo.design_map import _point_cost, _study_of, map_point
+    from memstribo.parameters import get_parameter_values
+    from memstribo.study import prepare_points
+
+    spec = map_spec({"realisations": 2, "grid": {"face_width": ["1 um", "4 um"], "coating": ["none", "OTS"]}})
+    points = prepare_points(_study_of(spec), get_parameter_values())
+    plain = functools.partial(map_point, cycles_observed=None, wear_sweep=[0.0, 1.0])
+    life = functools.partial(map_point, cycles_observed=1e6, wear_sweep=[0.0, 1.0])
+    costs = [_point_cost(p, plain) for p in points]  # (1 um, none), (1 um, OTS), (4 um, none), (4 um, OTS)
+    assert costs[0] == costs[1] < costs[2] == costs[3]
+    assert costs[2] / costs[0] == (4e-6 // 195.5e-9) / (1e-6 // 195.5e-9)
+    assert _point_cost(points[1], life) == costs[1] * 2  # 2 realisations + 2 worn states of the coating life

@@ -491,9 +491,13 @@ def _compute(spec, function, todo, folder, total, already, client, scheduler, wo
                disable=not progress, dynamic_ncols=True)
     try:
         futures = {}
-        for point in todo:
+        # the longest points first (and with the highest priority): the last tasks are then the short
+        # ones, so that no worker waits long for another's long point at the end of the map
+        ordered = sorted(todo, key=lambda point: -_point_cost(point, function))
+        for rank, point in enumerate(ordered):
             future = client.submit(evaluate_point, function, point.params, point.options,
-                                   key=f"memstribo-map-{point.id}-{os.getpid()}-{time.time_ns()}", pure=False)
+                                   key=f"memstribo-map-{point.id}-{os.getpid()}-{time.time_ns()}", pure=False,
+                                   priority=len(ordered) - rank)
             futures[future] = point
         for future in as_completed(list(futures), loop=client.loop):
             point = futures.pop(future)
@@ -511,6 +515,27 @@ def _compute(spec, function, todo, folder, total, already, client, scheduler, wo
             client.close()
             if cluster is not None:
                 cluster.close()
+
+
+def _point_cost(point, function=None) -> float:
+    """Relative cost of a map point, for the order of the tasks: rows x steps x meshing cycles.
+
+    The contact solves dominate a meshing cycle, one per nanoblock row and step; a coated point
+    whose coating life is computed adds one cycle per worn fraction of ``wear_sweep``. Only the
+    order of the tasks depends on it, never a result.
+    """
+    try:
+        params = point.params
+        rows = max(1, int(float(params["face_width"]) // float(params["adhesive_width"])))
+        steps = point.options.get("steps") or params["mesh_steps"]
+        cycles = int(params["realisations"])
+        if point.options.get("coating"):
+            options = getattr(function, "keywords", {}) or {}
+            if params["damage_coefficient"] is not None or options.get("cycles_observed") is not None:
+                cycles += len(options.get("wear_sweep", DEFAULT_WEAR_SWEEP))
+        return float(rows * int(steps) * cycles)
+    except (KeyError, TypeError, ValueError, MemstriboError):
+        return 1.0
 
 
 # --- the dataset ---------------------------------------------------------------------------------------
