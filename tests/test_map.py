@@ -476,3 +476,17 @@ def test_longest_points_are_submitted_first():
     assert costs[0] == costs[1] < costs[2] == costs[3]
     assert costs[2] / costs[0] == (4e-6 // 195.5e-9) / (1e-6 // 195.5e-9)
     assert _point_cost(points[1], life) == costs[1] * 2  # 2 realisations + 2 worn states of the coating life
+
+
+def test_report_section_while_the_map_runs_and_when_it_failed():
+    from types import SimpleNamespace
+
+    from memstribo.chain import MAP_STAGE, StageRecord
+    from memstribo.report import _design_map_html
+
+    record = StageRecord(*MAP_STAGE)
+    pending = _design_map_html(SimpleNamespace(stages=[record], summaries={}, figures=[]))
+    assert "<h2>Design map</h2>" in pending and "runs after the other stages" in pending
+    record.status, record.message = "failed", "InputError: <bad> spec"
+    failed = _design_map_html(SimpleNamespace(stages=[record], summaries={}, figures=[]))
+    assert "did not finish" in failed and "&lt;bad&gt;" in failed and "<bad>" not in failed

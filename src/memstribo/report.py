@@ -251,6 +251,8 @@ def _design_map_html(result) -> str:
         return ""
     head = "<h2>Design map</h2>"
     summary = result.summaries.get(_MAP_STAGE)
+    if summary is None and record.status == "pending":
+        return head + "<p>The design map runs after the other stages (finished points: <code>map/points/</code>).</p>"
     if summary is None:
         return head + f"<p class='bad'>The design map did not finish: {_e(record.status)} {_e(record.message)}</p>"
     axes = ", ".join(f"<code>{_e(k)}</code> ({_e(n)} values)" for k, n in summary["axes"].items())
