@@ -475,7 +475,8 @@ def test_longest_points_are_submitted_first():
     costs = [_point_cost(p, plain) for p in points]  # (1 um, none), (1 um, OTS), (4 um, none), (4 um, OTS)
     assert costs[0] == costs[1] < costs[2] == costs[3]
     assert costs[2] / costs[0] == (4e-6 // 195.5e-9) / (1e-6 // 195.5e-9)
-    assert _point_cost(points[1], life) == costs[1] * 2  # 2 realisations + 2 worn states of the coating life
+    # 2 realisations + the worn state 1 of the coating life (state 0 is the point's own: its first cycle)
+    assert _point_cost(points[1], life) == costs[1] * 1.5
 
 
 def test_report_section_while_the_map_runs_and_when_it_failed():
@@ -490,3 +491,30 @@ def test_report_section_while_the_map_runs_and_when_it_failed():
     record.status, record.message = "failed", "InputError: <bad> spec"
     failed = _design_map_html(SimpleNamespace(stages=[record], summaries={}, figures=[]))
     assert "did not finish" in failed and "&lt;bad&gt;" in failed and "<bad>" not in failed
+
+
+def test_coated_point_reuses_its_first_cycle_in_the_wear_sweep(monkeypatch):
+    """The point's realisation-0 cycle is the wear sweep's state at the point's own wear: computed once, same numbers."""
+    from memstribo import coating, mesh
+    from memstribo.design_map import map_point
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values().updated({"realisations": 2})
+    calls = []
+    simulate = mesh.simulate_mesh
+
+    def counting(*args, **kwargs):
+        calls.append(kwargs.get("wear"))
+        return simulate(*args, **kwargs)
+
+    monkeypatch.setattr(mesh, "simulate_mesh", counting)
+    reused = map_point(params, "OTS", 0.0, steps=11, cycles_observed=1e6, wear_sweep=[0.0, 0.5, 1.0])
+    assert len(calls) == 2 + 3 - 1  # 2 realisations, 3 worn states, one of them the first realisation
+    sweep = coating.wear_sweep
+    monkeypatch.setattr(coating, "wear_sweep", lambda *a, known=None, **k: sweep(*a, **k))  # compute every state
+    calls.clear()
+    fresh = map_point(params, "OTS", 0.0, steps=11, cycles_observed=1e6, wear_sweep=[0.0, 0.5, 1.0])
+    assert len(calls) == 2 + 3
+    assert reused.keys() == fresh.keys()
+    for key in reused:
+        assert reused[key] == fresh[key] or (reused[key] != reused[key] and fresh[key] != fresh[key]), key

@@ -349,8 +349,10 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
         from . import damage
 
         try:
+            # the point's first cycle (realisation 0, its own wear) is one of the sweep's states when its
+            # wear is in wear_sweep: reused, not computed again (the same call, the same numbers)
             sweep = coating_module.wear_sweep(params, coating_object, list(wear_sweep), roughness=surface,
-                                              steps=steps)
+                                              steps=steps, known={float(wear): first})
             outcome = damage.run_damage(params, first, wear_sweep=sweep, cycles_observed=cycles_observed,
                                         figures=False)
             summary = outcome.summary
@@ -521,7 +523,8 @@ def _point_cost(point, function=None) -> float:
     """Relative cost of a map point, for the order of the tasks: rows x steps x meshing cycles.
 
     The contact solves dominate a meshing cycle, one per nanoblock row and step; a coated point
-    whose coating life is computed adds one cycle per worn fraction of ``wear_sweep``. Only the
+    whose coating life is computed adds one cycle per worn fraction of ``wear_sweep`` other than
+    its own (that one is its first realisation's cycle, reused). Only the
     order of the tasks depends on it, never a result.
     """
     try:
@@ -532,7 +535,8 @@ def _point_cost(point, function=None) -> float:
         if point.options.get("coating"):
             options = getattr(function, "keywords", {}) or {}
             if params["damage_coefficient"] is not None or options.get("cycles_observed") is not None:
-                cycles += len(options.get("wear_sweep", DEFAULT_WEAR_SWEEP))
+                states = {float(w) for w in options.get("wear_sweep", DEFAULT_WEAR_SWEEP)}
+                cycles += len(states - {float(point.options.get("wear", 0.0))})  # the point's own: reused
         return float(rows * int(steps) * cycles)
     except (KeyError, TypeError, ValueError, MemstriboError):
         return 1.0
