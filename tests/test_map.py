@@ -494,7 +494,7 @@ def test_report_section_while_the_map_runs_and_when_it_failed():
 
 
 def test_coated_point_reuses_its_first_cycle_in_the_wear_sweep(monkeypatch):
-    """The point's realisation-0 cycle is the wear sweep's state at the point's own wear: computed once, same numbers."""
+    """The point's realisation-0 cycle is the wear sweep's state at its own wear: computed once, same numbers."""
     from memstribo import coating, mesh
     from memstribo.design_map import map_point
     from memstribo.parameters import get_parameter_values

@@ -41,8 +41,8 @@ import numpy as np
 from .errors import InputError, MemstriboError, did_you_mean
 from .output import atomic_write_text, dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
 
-__all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain", "STAGES", "MAP_STAGE", "cycle_summary",
-           "verdict"]
+__all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain", "STAGES", "MAP_STAGE",
+           "cycle_summary", "verdict"]
 
 #: The stages of the main job, in order, with their titles.
 STAGES: dict[str, str] = {
@@ -1088,6 +1088,7 @@ class RunChain:
         record = self.records[name] = StageRecord(*MAP_STAGE)
         self._current = record
         self.figures = [f for f in self.figures if f.stage != name]
+        (self.folder / f"error_{name}.txt").unlink(missing_ok=True)  # an earlier attempt's traceback
         log.info("stage %s (the design map of [run] map) ...", name)
         start = time.perf_counter()
         try:

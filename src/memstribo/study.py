@@ -82,7 +82,8 @@ STUDY_KEYS: dict[str, tuple[str, str]] = {
 #: server (which distributed starts even without a dashboard, by default on port 8787, with a
 #: "Port 8787 is already in use" warning when another cluster holds it) on a free port of
 #: 127.0.0.1 chosen by the system (port 0: nothing to warn about, nothing exposed beyond this host).
-LOCAL_CLUSTER_QUIET: dict[str, Any] = {"dashboard_address": None, "scheduler_kwargs": {"dashboard_address": "127.0.0.1:0"},
+LOCAL_CLUSTER_QUIET: dict[str, Any] = {"dashboard_address": None,
+                                       "scheduler_kwargs": {"dashboard_address": "127.0.0.1:0"},
                                        "silence_logs": logging.ERROR}
 
 #: How long to wait for an existing Dask scheduler before giving up.
@@ -529,7 +530,7 @@ def resolve_function(function) -> Callable:
 
 
 def evaluate_point(function, params, options: Mapping[str, Any]) -> dict[str, Any]:
-    """Run one point (on a worker): ``{"values": {...}, "error": None or message, "seconds": ..., "references": [...]}``.
+    """Run one point (on a worker): ``{"values": {...}, "error": None or message, "seconds": ..., ...}``.
 
     Model errors (:class:`memstribo.errors.MemstriboError`) are recorded, not raised, so that
     one impossible point (e.g. stiction at start-up) does not stop a study of thousands.
