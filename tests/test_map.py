@@ -313,3 +313,209 @@ def test_figures_coating_life_and_one_axis(tmp_path):
     assert {p.name for p in written} >= {"design_map_stiction.png", "design_map_coating_life.svg"} and not notes
     written, _ = map_figures(dataset, tmp_path / "one", ["face_width"])
     assert (tmp_path / "one" / "design_map_efficiency.png").is_file()
+
+
+# --- references: the models used on the workers reach map.nc and the study's files ---------------------------
+
+def test_map_nc_cites_the_models_its_points_used(client, tmp_path):
+    """The @cites registry fills in the worker processes; each point brings its keys back to map.nc."""
+    import xarray as xr
+
+    from memstribo.references import reset_used_references, used_references
+
+    reset_used_references()  # nothing cited in this (the client's) process
+    spec = map_spec({"realisations": 1, "steps": 11, "grid": {"drive_torque": ["1e-7 N*m", "2e-7 N*m"]}})
+    result = design_map(spec, tmp_path / "out", client=client, figures=False)
+    records = [json.loads(p.read_text()) for p in (tmp_path / "out" / "points").glob("*.json")]
+    assert all("polonsky_keer_1999" in r["references"] and "thesis" in r["references"] for r in records)
+    assert {r["pid"] for r in records} != {os.getpid()}  # computed elsewhere
+    with xr.open_dataset(result.folder / "map.nc") as disk:
+        cited = disk.attrs["models_cited"]
+    assert cited != "none recorded"
+    assert {"thesis", "polonsky_keer_1999", "johnson_1985"} <= set(cited.split(", "))
+    assert "polonsky_keer_1999" in dict(used_references())  # and the client's record (references.txt of a run)
+
+
+def test_study_files_cite_the_models_their_points_used(tmp_path):
+    import xarray as xr
+
+    from memstribo.references import reset_used_references
+    from memstribo.simulations.study import run_study, study_spec
+
+    reset_used_references()
+    spec = study_spec({"function": "mesh", "points": [{"steps": 11}]})
+    result = run_study(spec, tmp_path / "out", workers=1)
+    assert result.n_failed == 0, result.errors
+    with xr.open_dataset(tmp_path / "out" / "results.nc") as disk:
+        cited = disk.attrs["models_cited"]
+    assert cited != "none recorded" and "polonsky_keer_1999" in cited.split(", ")
+
+
+def test_collect_references_per_block_and_nested():
+    from memstribo.references import cites, collect_references, record_references, used_references
+
+    first = cites("thesis")(lambda: 1)
+    second = cites("johnson_1985", "model")(lambda: 2)
+    with collect_references() as outer:
+        first()
+        with collect_references() as inner:
+            second()
+        assert list(inner) == ["johnson_1985", "model"]
+    assert list(outer) == ["thesis", "johnson_1985", "model"]
+    second()
+    assert list(outer) == ["thesis", "johnson_1985", "model"]  # closed: no longer filled
+    record_references(["hu_1986"])
+    assert "hu_1986" in dict(used_references())
+    with pytest.raises(KeyError, match="unknown reference"):
+        record_references(["no_such_paper"])
+
+
+# --- the local cluster: quiet when another cluster holds the dashboard port -------------------------------------
+
+def test_local_cluster_warns_nothing_when_port_8787_is_taken(capfd):
+    """distributed's scheduler starts an HTTP server even with dashboard_address=None, by default on
+    port 8787, and warns 'Port 8787 is already in use' when another cluster holds it."""
+    import warnings
+
+    from memstribo.simulations.study import _connect
+
+    holder = socket.socket()
+    try:
+        holder.bind(("0.0.0.0", 8787))  # as another cluster's dashboard would
+        holder.listen()
+    except OSError:
+        pass  # already held by someone else: the same situation
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            client, cluster = _connect(None, 1)
+            try:
+                assert client.submit(abs, -3, pure=False).result(timeout=60) == 3
+            finally:
+                client.close()
+                cluster.close()
+    finally:
+        holder.close()
+    messages = [str(w.message) for w in caught] + [capfd.readouterr().err]
+    assert not [m for m in messages if "already in use" in m], messages
+
+
+# --- `memstribo run` with [run] map: the map as the last stage, and its section of report.html ------------------
+
+def test_run_with_a_map_spec_writes_the_map_and_its_report_section(tmp_path):
+    import xarray as xr
+
+    from memstribo.cli.main import main
+
+    write(tmp_path / "tiny-map.toml", TINY)
+    config = write(tmp_path / "run.toml", '[run]\nstages = ["gear"]\nvalidation = false\nmap = "tiny-map.toml"\n')
+    out = tmp_path / "out"
+    assert main(["run", str(config), "--out", str(out), "--quiet", "--progress", "off"]) == 0
+    manifest = json.loads((out / "run.json").read_text())
+    stages = {s["name"]: s for s in manifest["stages"]}
+    assert stages["design_map"]["status"] == "done" and stages["gear"]["status"] == "done"
+    assert "map/map.nc" in stages["design_map"]["files"]
+    summary = manifest["summaries"]["design_map"]
+    assert (summary["points"], summary["computed"], summary["realisations"]) == (4, 4, 2)
+    with xr.open_dataset(out / "map" / "map.nc") as disk:
+        assert disk["stiction_probability"].dims == ("drive_torque", "face_width")
+        assert "polonsky_keer_1999" in disk.attrs["models_cited"]
+        probability = disk["stiction_probability"].values
+    assert summary["points_sticking"] == int((probability >= 0.5).sum())
+    assert (out / "figures" / "design_map_stiction.png").is_file()
+    assert (out / "figures" / "design_map_efficiency.svg").is_file()
+    report = (out / "report.html").read_text()
+    section = report[report.index("<h2>Design map</h2>"):report.index("<h2>Stages</h2>")]
+    assert "id='fig-design_map_stiction'" in section and "id='fig-design_map_efficiency'" in section
+    assert "50 % boundary" in section and "4 designs" in section
+    assert report.count("id='fig-design_map_stiction'") == 1  # not also among the other figures
+    assert "polonsky_keer_1999" in (out / "references.txt").read_text()  # cited on the map's workers
+    # resumable: the finished points are read back, not computed again
+    before = {p.name: p.read_text() for p in (out / "map" / "points").glob("*.json")}
+    assert main(["run", str(config), "--out", str(out), "--resume", "--quiet", "--progress", "off"]) == 0
+    again = json.loads((out / "run.json").read_text())["summaries"]["design_map"]
+    assert (again["computed"], again["reused"]) == (0, 4)
+    assert {p.name: p.read_text() for p in (out / "map" / "points").glob("*.json")} == before
+
+
+def test_run_without_a_map_has_no_map_stage_and_a_bad_map_stops_before_the_first_stage(tmp_path):
+    from memstribo.job.chain import STAGES, RunOptions
+    from memstribo.cli.main import main
+    from memstribo.job.report import _design_map_html
+
+    assert "design_map" not in STAGES and RunOptions().map is None
+    config = write(tmp_path / "run.toml", '[run]\nstages = ["gear"]\nvalidation = false\n')
+    assert main(["run", str(config), "--out", str(tmp_path / "plain"), "--quiet"]) == 0
+    manifest = json.loads((tmp_path / "plain" / "run.json").read_text())
+    assert [s["name"] for s in manifest["stages"]] == list(STAGES)
+    assert "Design map" not in (tmp_path / "plain" / "report.html").read_text()
+    with pytest.raises(InputError, match="does not exist"):
+        RunOptions.from_table({"map": "missing.toml"}, tmp_path)
+    write(tmp_path / "bad.toml", TINY.replace("realisations = 2", "realisation = 2"))
+    with pytest.raises(InputError, match="\\[run\\] map: .*realisations"):
+        RunOptions.from_table({"map": "bad.toml"}, tmp_path)
+    bad = write(tmp_path / "bad-run.toml", '[run]\nstages = ["gear"]\nmap = "bad.toml"\n')
+    assert main(["run", str(bad), "--out", str(tmp_path / "never")]) == 2
+    assert not (tmp_path / "never" / "run.json").exists()
+    assert _design_map_html(type("R", (), {"stages": []})()) == ""
+
+
+def test_longest_points_are_submitted_first():
+    """Task order by cost (rows x steps x cycles): the map's tail is short points, not one long one."""
+    import functools
+
+    from memstribo.simulations.design_map import _point_cost, _study_of, map_point
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.study import prepare_points
+
+    spec = map_spec({"realisations": 2, "grid": {"face_width": ["1 um", "4 um"], "coating": ["none", "OTS"]}})
+    points = prepare_points(_study_of(spec), get_parameter_values())
+    plain = functools.partial(map_point, cycles_observed=None, wear_sweep=[0.0, 1.0])
+    life = functools.partial(map_point, cycles_observed=1e6, wear_sweep=[0.0, 1.0])
+    costs = [_point_cost(p, plain) for p in points]  # (1 um, none), (1 um, OTS), (4 um, none), (4 um, OTS)
+    assert costs[0] == costs[1] < costs[2] == costs[3]
+    assert costs[2] / costs[0] == (4e-6 // 195.5e-9) / (1e-6 // 195.5e-9)
+    # 2 realisations + the worn state 1 of the coating life (state 0 is the point's own: its first cycle)
+    assert _point_cost(points[1], life) == costs[1] * 1.5
+
+
+def test_report_section_while_the_map_runs_and_when_it_failed():
+    from types import SimpleNamespace
+
+    from memstribo.job.chain import MAP_STAGE, StageRecord
+    from memstribo.job.report import _design_map_html
+
+    record = StageRecord(*MAP_STAGE)
+    pending = _design_map_html(SimpleNamespace(stages=[record], summaries={}, figures=[]))
+    assert "<h2>Design map</h2>" in pending and "runs after the other stages" in pending
+    record.status, record.message = "failed", "InputError: <bad> spec"
+    failed = _design_map_html(SimpleNamespace(stages=[record], summaries={}, figures=[]))
+    assert "did not finish" in failed and "&lt;bad&gt;" in failed and "<bad>" not in failed
+
+
+def test_coated_point_reuses_its_first_cycle_in_the_wear_sweep(monkeypatch):
+    """The point's realisation-0 cycle is the wear sweep's state at its own wear: computed once, same numbers."""
+    from memstribo.simulations import coating_wear as coating
+    from memstribo.simulations import mesh
+    from memstribo.simulations.design_map import map_point
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values().updated({"realisations": 2})
+    calls = []
+    simulate = mesh.simulate_mesh
+
+    def counting(*args, **kwargs):
+        calls.append(kwargs.get("wear"))
+        return simulate(*args, **kwargs)
+
+    monkeypatch.setattr(mesh, "simulate_mesh", counting)
+    reused = map_point(params, "OTS", 0.0, steps=11, cycles_observed=1e6, wear_sweep=[0.0, 0.5, 1.0])
+    assert len(calls) == 2 + 3 - 1  # 2 realisations, 3 worn states, one of them the first realisation
+    sweep = coating.wear_sweep
+    monkeypatch.setattr(coating, "wear_sweep", lambda *a, known=None, **k: sweep(*a, **k))  # compute every state
+    calls.clear()
+    fresh = map_point(params, "OTS", 0.0, steps=11, cycles_observed=1e6, wear_sweep=[0.0, 0.5, 1.0])
+    assert len(calls) == 2 + 3
+    assert reused.keys() == fresh.keys()
+    for key in reused:
+        assert reused[key] == fresh[key] or (reused[key] != reused[key] and fresh[key] != fresh[key]), key

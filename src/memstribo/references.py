@@ -3,11 +3,18 @@
 Each model function names its sources with :func:`cites`; calling it records the keys,
 so a run can list the papers it rests on (:func:`used_references`), as PyBaMM's
 ``print_citations`` does. Add new sources to :data:`REFERENCES`.
+
+Work done elsewhere (a Dask worker process computing a study or map point) records its keys
+in that process: :func:`collect_references` gathers the keys one piece of work used (in this
+thread), so that the worker can return them with the result, and :func:`record_references`
+adds returned keys to this process's record.
 """
 
 from __future__ import annotations
 
+import contextlib
 import functools
+import threading
 
 REFERENCES: dict[str, str] = {
     "thesis": (
@@ -98,6 +105,7 @@ REFERENCES: dict[str, str] = {
 }
 
 _used: dict[str, None] = {}
+_local = threading.local()  # .collectors: the dicts of the open collect_references() blocks of this thread
 
 
 def cites(*keys: str):
@@ -111,6 +119,11 @@ def cites(*keys: str):
         def wrapper(*args, **kwargs):
             for key in keys:
                 _used[key] = None
+            collectors = getattr(_local, "collectors", None)
+            if collectors:
+                for collected in collectors:
+                    for key in keys:
+                        collected[key] = None
             return function(*args, **kwargs)
 
         wrapper.references = keys
@@ -127,3 +140,44 @@ def used_references() -> list[tuple[str, str]]:
 def reset_used_references() -> None:
     """Forget the references recorded so far."""
     _used.clear()
+
+
+def record_references(keys) -> None:
+    """Add ``keys`` (reference keys used by work done in another process) to the run's record.
+
+    Raises
+    ------
+    KeyError
+        A key that is not in :data:`REFERENCES`.
+    """
+    keys = list(keys)
+    unknown = [key for key in keys if key not in REFERENCES]
+    if unknown:
+        raise KeyError(f"unknown reference key(s) {unknown}; add them to memstribo.references.REFERENCES")
+    for key in keys:
+        _used[key] = None
+
+
+@contextlib.contextmanager
+def collect_references():
+    """Collect the reference keys used inside the ``with`` block, in this thread, in order of first use.
+
+    Yields a dict whose keys fill in as cited functions run (the process-wide record of
+    :func:`used_references` fills as before). Blocks may nest; each collects what ran inside it::
+
+        with collect_references() as used:
+            simulate_mesh(params)
+        list(used)   # ['thesis', 'model', ...]
+    """
+    collected: dict[str, None] = {}
+    stack = getattr(_local, "collectors", None)
+    if stack is None:
+        stack = _local.collectors = []
+    stack.append(collected)
+    try:
+        yield collected
+    finally:
+        for i in range(len(stack) - 1, -1, -1):  # by identity: nested blocks may hold equal dicts
+            if stack[i] is collected:
+                del stack[i]
+                break

@@ -124,7 +124,7 @@ def run(args, params):
 
 
 #: What a results folder of memstribo holds (removed by --overwrite; anything else stays and is refused).
-_OWN = ("data", "figures", "report.html", "run.json", "parameters.toml", "references.txt")
+_OWN = ("data", "figures", "report.html", "run.json", "parameters.toml", "references.txt", "map")
 
 
 def _prepare_folder(folder, overwrite: bool) -> None:

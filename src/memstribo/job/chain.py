@@ -41,8 +41,8 @@ import numpy as np
 from memstribo.errors import InputError, MemstriboError, did_you_mean
 from memstribo.output import atomic_write_text, dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
 
-__all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain", "STAGES", "cycle_summary",
-           "verdict"]
+__all__ = ["RunOptions", "StageRecord", "FigureRecord", "RunResult", "RunChain", "STAGES", "MAP_STAGE",
+           "cycle_summary", "verdict"]
 
 #: The stages of the main job, in order, with their titles.
 STAGES: dict[str, str] = {
@@ -70,6 +70,11 @@ DEPENDS: dict[str, tuple[str, ...]] = {
 #: dependencies or inputs are run again.
 USES: dict[str, tuple[str, ...]] = {"mesh": ("gear",), "coated": ("gear",), "wear_sweep": ("gear",),
                                     "damage": ("gear", "wear_sweep")}
+
+#: The optional last stage, a design map (``[run] map = "SPEC.toml"``, :meth:`RunChain.map_stage`): name and title.
+#: It is not one of :data:`STAGES`, so a run without a map has the same stages as before.
+MAP_STAGE: tuple[str, str] = ("design_map", "Design map: stiction probability, mesh efficiency and coating life over "
+                                            "a grid of designs")
 
 #: The datasets a resumed run reads back from ``DIR/data`` for the stages after them (stage: (result key, stem)).
 RELOADED: dict[str, tuple[str, str]] = {"coated": ("coated", "mesh_coated"), "wear_sweep": ("wear_sweep", "wear_sweep")}
@@ -108,6 +113,9 @@ class RunOptions:
         Put the validation table (every topic's rows, computed at the end) into the report.
     realisations : int
         Independent roughness realisations of the bare verdict (MODEL 7b).
+    map : str or None
+        A design map spec file (absolute path; :func:`memstribo.simulations.design_map.load_map_spec`) run as
+        the last stage (:meth:`RunChain.map_stage`); None: no map.
     """
 
     steps: int | None = None
@@ -122,6 +130,7 @@ class RunOptions:
     sliding_distance: float | None = None
     validation: bool = True
     realisations: int = 16
+    map: str | None = None
 
     @classmethod
     def from_table(cls, table: Mapping[str, Any] | None, base_folder: str | Path | None = None) -> "RunOptions":
@@ -221,7 +230,29 @@ class RunOptions:
             if not distance > 0:
                 raise InputError(f"[run] sliding_distance = {table['sliding_distance']!r}: give a length > 0.")
             options["sliding_distance"] = distance
+        if "map" in table:
+            options["map"] = _map_option(table["map"], base_folder)
         return cls(**options)
+
+
+def _map_option(value, base_folder) -> str:
+    """``[run] map``: the absolute path of a map spec file, read and validated whole before the first stage."""
+    from memstribo.simulations.design_map import load_map_spec
+    from memstribo.units import printable
+
+    if not isinstance(value, str) or not value.strip():
+        raise InputError(f"[run] map = {printable(repr(value), 60)}: give the path of a map spec file (TOML with a "
+                         "[map] table, see docs/design-maps.md).")
+    path = Path(value).expanduser()
+    if not path.is_absolute() and base_folder is not None:
+        path = Path(base_folder) / path
+    if not path.is_file():
+        raise InputError(f"[run] map: '{printable(value, 200)}' does not exist.")
+    try:
+        load_map_spec(path)
+    except InputError as exc:
+        raise InputError(f"[run] map: {exc}") from None
+    return str(path.resolve())
 
 
 @dataclass
@@ -299,8 +330,9 @@ class RunResult:
 
     @property
     def ok(self) -> bool:
-        """True when every requested stage is done."""
-        return all(s.status == "done" for s in self.stages if s.name in self.options.stages)
+        """True when every requested stage is done (the design map too, when ``[run] map`` asks for one)."""
+        return all(s.status == "done" for s in self.stages
+                   if s.name in self.options.stages or s.name == MAP_STAGE[0])
 
 
 def cycle_summary(dataset) -> dict[str, Any]:
@@ -630,6 +662,8 @@ class RunChain:
         self.figures: list[FigureRecord] = []
         self.inputs: list[dict[str, Any]] = []
         self.records = {name: StageRecord(name, title) for name, title in STAGES.items()}
+        if self.options.map:
+            self.records[MAP_STAGE[0]] = StageRecord(*MAP_STAGE)
         self._current: StageRecord | None = None
         self.kept: list[str] = []
         self.previous = self._read_previous() if resume else None
@@ -1017,6 +1051,61 @@ class RunChain:
         for stem, (figure, caption) in getattr(outcome, "figures", {}).items():
             self._figure(figure, stem, caption)
 
+    def map_stage(self):
+        """Design map of ``[run] map`` (:func:`memstribo.simulations.design_map.design_map`, docs/design-maps.md): every grid
+        point an ensemble verdict (stiction probability, margin, COF, mesh efficiency, coating life).
+
+        The points run on Dask's local cluster and are kept point by point in ``DIR/map/points``, so that
+        ``--resume`` computes only the missing ones; ``DIR/map/map.nc`` (one dimension per axis) and
+        ``map.csv`` hold the map; the figures (stiction probability with its 50 % boundary, efficiency,
+        coating life where known) go to ``DIR/figures``. The run's parameters are the map's base
+        (its ``[parameters]`` on top); ``[run] steps`` applies when the spec gives no ``steps``.
+        """
+        from memstribo.simulations.design_map import design_map, load_map_spec, map_figures
+
+        spec = load_map_spec(self.options.map)
+        if spec.steps is None and self.options.steps is not None:
+            spec = replace(spec, steps=self.options.steps)
+        folder = self.folder / "map"
+        result = design_map(spec, folder, self.params, resume=self.previous is not None, progress=self.progress,
+                            figures=False)
+        self._files(path for path in (folder / "map.json", folder / "map.nc", folder / "map.csv") if path.is_file())
+        self.results["design_map"] = result.dataset
+        written, figure_notes = map_figures(result.dataset, self.folder / "figures", spec.plot)
+        self._files(written)
+        stems = {path.stem for path in written}
+        for stem, caption in _map_captions(spec, result.dataset).items():
+            if stem in stems:
+                self.figures.append(FigureRecord(stem, self._current.name, caption))
+        self.summaries["design_map"] = _map_summary(spec, result, list(result.notes) + figure_notes)
+        if result.n_failed:
+            first = next(iter(result.errors.items()))
+            raise InputError(f"{result.n_failed} of {result.n_points} map points failed (first, {first[0]}: "
+                             f"{first[1]}); the others are kept in map/points; --resume runs the failed ones again")
+
+    def _run_map_stage(self, log) -> StageRecord:
+        """Run :meth:`map_stage` and record how it went (as :meth:`run_stage` does for the stages of :data:`STAGES`)."""
+        name = MAP_STAGE[0]
+        record = self.records[name] = StageRecord(*MAP_STAGE)
+        self._current = record
+        self.figures = [f for f in self.figures if f.stage != name]
+        (self.folder / f"error_{name}.txt").unlink(missing_ok=True)  # an earlier attempt's traceback
+        log.info("stage %s (the design map of [run] map) ...", name)
+        start = time.perf_counter()
+        try:
+            self.map_stage()
+            record.status = "done"
+        except MemstriboError as exc:
+            record.status, record.message = "failed", f"{type(exc).__name__}: {exc}"
+        except Exception as exc:  # a bug: keep the run's other results, say so loudly
+            record.status = "failed"
+            record.message = f"internal error {type(exc).__name__}: {exc}"
+            (self.folder / f"error_{name}.txt").write_text(traceback.format_exc(), encoding="utf-8")
+        record.seconds = time.perf_counter() - start
+        log.info("stage %s: %s in %.1f s%s", name, record.status, record.seconds,
+                 f" ({record.message})" if record.message else "")
+        return record
+
     # running -------------------------------------------------------------------------------------
     def _tick(self, values, label):
         if not self.progress:
@@ -1091,6 +1180,9 @@ class RunChain:
                      f" ({record.message})" if record.message else "")
             self._finish(time.perf_counter() - start)
         bar.close()
+        if self.options.map:
+            self._run_map_stage(log)
+            self._finish(time.perf_counter() - start)
         validation = None
         if self.options.validation:
             from memstribo.job.report import validation_rows
@@ -1124,6 +1216,45 @@ class RunChain:
             "references": [key for key, _ in references], "kept": list(self.kept)}))
         write_report(result, self.folder / "report.html", validation)
         return result
+
+
+def _map_captions(spec, dataset) -> dict[str, str]:
+    """Captions of the design map's figures (by file stem)."""
+    axes = ", ".join(f"{key} ({len(values)})" for key, values in spec.axes)
+    common = (f"Design map '{spec.name}' over {axes}; every point {spec.realisations} roughness realisation(s) of "
+              "the meshing cycle (dots: the grid points; other axes than the two plotted: one panel per value).")
+    return {
+        "design_map_stiction": f"{common} Stiction probability: the fraction of realisations in which the friction of "
+                               "the pairs in mesh exceeds F_t somewhere on the path of contact; the black line is the "
+                               "50 % boundary (drawn where the map crosses it).",
+        "design_map_efficiency": f"{common} Mesh efficiency, median over the realisations.",
+        "design_map_coating_life": f"{common} Coated points: log10 of the meshing cycles until the coating first "
+                                   "fails (from the damage coefficient c1 or the observed life).",
+    }
+
+
+def _map_summary(spec, result, notes) -> dict[str, Any]:
+    """Scalar summary of a design map for run.json and the report."""
+    dataset = result.dataset
+
+    def finite(name):
+        values = np.asarray(dataset[name].values, dtype=float)
+        return values[np.isfinite(values)]
+
+    probability = finite("stiction_probability")
+    summary: dict[str, Any] = {
+        "spec": spec.source, "name": spec.name, "axes": {key: len(values) for key, values in spec.axes},
+        "plot": list(spec.plot), "realisations": spec.realisations, "steps": spec.steps,
+        "points": result.n_points, "computed": result.n_computed, "reused": result.n_reused,
+        "failed": result.n_failed, "map_netcdf": "map/map.nc", "map_csv": "map/map.csv",
+        "points_sticking": int((probability >= 0.5).sum()), "points_free": int((probability == 0).sum()),
+        "notes": notes,
+    }
+    for name in ("stiction_probability", "mesh_efficiency_median", "cycles_to_failure", "cycles_to_stiction"):
+        values = finite(name)
+        summary[f"{name}_min"] = float(values.min()) if values.size else None
+        summary[f"{name}_max"] = float(values.max()) if values.size else None
+    return summary
 
 
 def options_for_test(**changes) -> RunOptions:

@@ -227,6 +227,8 @@ def _stages_html(result) -> str:
 def _figures_html(result) -> str:
     parts = []
     for number, figure in enumerate(result.figures, start=1):
+        if figure.stage == _MAP_STAGE:
+            continue  # in the design map's own section (_design_map_html)
         path = Path(result.folder) / "figures" / f"{figure.stem}.png"
         try:
             data = base64.b64encode(path.read_bytes()).decode("ascii")
@@ -237,6 +239,61 @@ def _figures_html(result) -> str:
                      f"src='data:image/png;base64,{data}'><figcaption><b>Figure {number}.</b> {_e(figure.caption)} "
                      f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
     return "".join(parts) or "<p>No figures: the stages that draw them did not run.</p>"
+
+
+_MAP_STAGE = "design_map"  # memstribo.job.chain.MAP_STAGE's name (the report does not import the chain)
+
+
+def _design_map_html(result) -> str:
+    """The section of a design map (``[run] map``): what was mapped, what it says, its figures; "" without a map."""
+    record = next((s for s in result.stages if s.name == _MAP_STAGE), None)
+    if record is None:
+        return ""
+    head = "<h2>Design map</h2>"
+    summary = result.summaries.get(_MAP_STAGE)
+    if summary is None and record.status == "pending":
+        return head + "<p>The design map runs after the other stages (finished points: <code>map/points/</code>).</p>"
+    if summary is None:
+        return head + f"<p class='bad'>The design map did not finish: {_e(record.status)} {_e(record.message)}</p>"
+    axes = ", ".join(f"<code>{_e(k)}</code> ({_e(n)} values)" for k, n in summary["axes"].items())
+    p_min, p_max = summary.get("stiction_probability_min"), summary.get("stiction_probability_max")
+    parts = [head, f"<p>Map <b>{_e(summary['name'])}</b> (spec <code>{_e(os.path.basename(summary['spec']))}</code>): "
+             f"{_e(summary['points'])} designs over {axes}; every design is an ensemble of "
+             f"{_e(summary['realisations'])} roughness realisation(s) of the meshing cycle "
+             f"({_e(summary['steps'] or 'the model default')} steps). The whole map, one dimension per axis, is "
+             "<code>map/map.nc</code> (and <code>map/map.csv</code>); see docs/design-maps.md for how to read it.</p>"]
+    items = []
+    if p_min is not None:
+        cls = "bad" if summary["points_sticking"] else "good"
+        items.append(f"<li><span class='{cls}'>{_e(summary['points_sticking'])} of {_e(summary['points'])} designs "
+                     "stick more often than not</span> (stiction probability &ge; 50 %); "
+                     f"{_e(summary['points_free'])} never stuck in any realisation; the probability ranges from "
+                     f"{p_min * 100:.0f} % to {p_max * 100:.0f} %.</li>")
+    if summary.get("mesh_efficiency_median_min") is not None:
+        items.append(f"<li>Mesh efficiency (median over the realisations) from "
+                     f"{_quantity(summary['mesh_efficiency_median_min'])} to "
+                     f"{_quantity(summary['mesh_efficiency_median_max'])}.</li>")
+    if summary.get("cycles_to_failure_min") is not None:
+        items.append(f"<li>Coated designs: the coating first fails after {_quantity(summary['cycles_to_failure_min'])} "
+                     f"to {_quantity(summary['cycles_to_failure_max'])} meshing cycles.</li>")
+    if summary.get("failed"):
+        items.append(f"<li class='bad'>{_e(summary['failed'])} point(s) failed (the <code>error</code> variable of "
+                     "map.nc says why).</li>")
+    items += [f"<li class='note'>{_e(note)}</li>" for note in summary.get("notes", [])]
+    parts.append("<ul>" + "".join(items) + "</ul>")
+    for number, figure in enumerate(result.figures, start=1):
+        if figure.stage != _MAP_STAGE:
+            continue
+        path = Path(result.folder) / "figures" / f"{figure.stem}.png"
+        try:
+            data = base64.b64encode(path.read_bytes()).decode("ascii")
+        except OSError:
+            parts.append(f"<p class='bad'>Figure {number} ({_e(figure.stem)}) is missing.</p>")
+            continue
+        parts.append(f"<figure id='fig-{_e(figure.stem)}'><img alt='{_e(figure.caption)}' "
+                     f"src='data:image/png;base64,{data}'><figcaption><b>Figure {number}.</b> {_e(figure.caption)} "
+                     f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
+    return "".join(parts)
 
 
 def _validation_html(validation) -> str:
@@ -301,6 +358,7 @@ def render_report(result, validation=None) -> str:
         "<h2>Verdict</h2>", _verdict_html(result),
         "<h2>Inputs and their provenance</h2>", _inputs_html(result),
         "<h2>Figures</h2>", _figures_html(result),
+        _design_map_html(result),
         "<h2>Stages</h2>", _stages_html(result),
         "<h2>Validation: thesis against memstribo</h2>", _validation_html(validation),
         "<h2>References used by this run</h2>", _references_html(),

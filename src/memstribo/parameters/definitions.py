@@ -290,6 +290,8 @@ RUN_KEYS = {
     "sliding_distance": "sliding distance of the structure in the sliding stage (default: the model's)",
     "cycles_observed": "observed coating life [meshing cycles] to calibrate c1 (default: none)",
     "realisations": "independent roughness realisations of the bare verdict (default 16: a 5-95 % band)",
+    "map": "a design map spec file (memstribo map's TOML) run as the last stage: DIR/map/map.nc, the map figures "
+           "and a report section (default: none)",
 }
 
 #: Defaults of the ``[run]`` table that other layers need too (the validation of the run's verdict).

@@ -51,7 +51,7 @@ def _summary_value(summary: dict, dataset, key: str) -> float:
 
 @cites("thesis", "model")
 def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, steps: int | None = None,
-               progress: bool = False):
+               progress: bool = False, known=None):
     """COF, its split, friction force and stiction margin for each worn fraction Omega (5.5.3).
 
     Parameters
@@ -68,6 +68,10 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
         Steps of each meshing-cycle simulation (the mesh's default if None).
     progress : bool
         Show a progress bar over the wear states on stderr.
+    known : mapping of float to xarray.Dataset, optional
+        Meshing cycles already computed with exactly these arguments (``simulate_mesh(params,
+        roughness, steps=steps, coating=coating, wear=Omega)``), by Omega: used instead of
+        computing them again (the same numbers; a design map passes its point's first cycle).
 
     Returns
     -------
@@ -96,8 +100,11 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
         from tqdm.auto import tqdm
 
         states = tqdm(states, total=omega.size, desc="wear states", unit="cycle", file=sys.stderr, leave=False)
+    known = {float(w): dataset for w, dataset in (known or {}).items()}
     for i, w in states:  # one meshing-cycle simulation per wear state
-        dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w))
+        dataset = known.get(float(w))
+        if dataset is None:
+            dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w))
         summary = mesh.summarize(dataset)
         for key in SWEEP_VARIABLES:
             rows[key][i] = _summary_value(summary, dataset, key)

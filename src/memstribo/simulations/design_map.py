@@ -349,8 +349,10 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
         from memstribo.physics import damage
 
         try:
+            # the point's first cycle (realisation 0, its own wear) is one of the sweep's states when its
+            # wear is in wear_sweep: reused, not computed again (the same call, the same numbers)
             sweep = coating_module.wear_sweep(params, coating_object, list(wear_sweep), roughness=surface,
-                                              steps=steps)
+                                              steps=steps, known={float(wear): first})
             outcome = damage.run_damage(params, first, wear_sweep=sweep, cycles_observed=cycles_observed,
                                         figures=False)
             summary = outcome.summary
@@ -412,6 +414,7 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
     from memstribo.output import provenance_attributes, write_dataset
     from memstribo.parameters import get_parameter_values
     from memstribo.simulations.study import _finished_points, _hash, _write_json_atomic, POINTS_FOLDER, prepare_points
+    from memstribo.simulations.study import points_references
 
     start = time.perf_counter()
     params = params if params is not None else get_parameter_values()
@@ -458,8 +461,10 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
                          "--resume.")
     ordered = [records[p.id] for p in points]
     dataset = map_dataset(ordered, spec, points)
+    cited = points_references(ordered)  # recorded on the workers, returned with each point
     provenance = provenance_attributes(base, extra={
-        "title": spec.name, "stage": "design map", "map_axes": json.dumps(list(spec.dims)),
+        "title": spec.name, "stage": "design map", "models_cited": ", ".join(cited) or "none recorded",
+        "map_axes": json.dumps(list(spec.dims)),
         "map_realisations": spec.realisations, "map_spec": spec.source,
         "map_cycles_observed": "none" if spec.cycles_observed is None else spec.cycles_observed,
         "map_wear_sweep": json.dumps(list(spec.wear_sweep))})
@@ -488,9 +493,13 @@ def _compute(spec, function, todo, folder, total, already, client, scheduler, wo
                disable=not progress, dynamic_ncols=True)
     try:
         futures = {}
-        for point in todo:
+        # the longest points first (and with the highest priority): the last tasks are then the short
+        # ones, so that no worker waits long for another's long point at the end of the map
+        ordered = sorted(todo, key=lambda point: -_point_cost(point, function))
+        for rank, point in enumerate(ordered):
             future = client.submit(evaluate_point, function, point.params, point.options,
-                                   key=f"memstribo-map-{point.id}-{os.getpid()}-{time.time_ns()}", pure=False)
+                                   key=f"memstribo-map-{point.id}-{os.getpid()}-{time.time_ns()}", pure=False,
+                                   priority=len(ordered) - rank)
             futures[future] = point
         for future in as_completed(list(futures), loop=client.loop):
             point = futures.pop(future)
@@ -508,6 +517,29 @@ def _compute(spec, function, todo, folder, total, already, client, scheduler, wo
             client.close()
             if cluster is not None:
                 cluster.close()
+
+
+def _point_cost(point, function=None) -> float:
+    """Relative cost of a map point, for the order of the tasks: rows x steps x meshing cycles.
+
+    The contact solves dominate a meshing cycle, one per nanoblock row and step; a coated point
+    whose coating life is computed adds one cycle per worn fraction of ``wear_sweep`` other than
+    its own (that one is its first realisation's cycle, reused). Only the
+    order of the tasks depends on it, never a result.
+    """
+    try:
+        params = point.params
+        rows = max(1, int(float(params["face_width"]) // float(params["adhesive_width"])))
+        steps = point.options.get("steps") or params["mesh_steps"]
+        cycles = int(params["realisations"])
+        if point.options.get("coating"):
+            options = getattr(function, "keywords", {}) or {}
+            if params["damage_coefficient"] is not None or options.get("cycles_observed") is not None:
+                states = {float(w) for w in options.get("wear_sweep", DEFAULT_WEAR_SWEEP)}
+                cycles += len(states - {float(point.options.get("wear", 0.0))})  # the point's own: reused
+        return float(rows * int(steps) * cycles)
+    except (KeyError, TypeError, ValueError, MemstriboError):
+        return 1.0
 
 
 # --- the dataset ---------------------------------------------------------------------------------------

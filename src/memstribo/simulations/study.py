@@ -66,7 +66,8 @@ from memstribo.units import printable
 
 __all__ = ["StudySpec", "StudyResult", "STUDY_KEYS", "POINT_FUNCTIONS", "MAX_STUDY_POINTS", "load_study_spec",
            "study_spec", "prepare_points", "run_study", "evaluate_point", "mesh_point", "gear_point", "slide_point",
-           "register_point_function", "resolve_function", "function_name", "study_dataset", "grid_dataset"]
+           "register_point_function", "resolve_function", "function_name", "study_dataset", "grid_dataset",
+           "points_references"]
 
 #: Keys of a point that are not model parameters, with their unit and meaning.
 STUDY_KEYS: dict[str, tuple[str, str]] = {
@@ -76,6 +77,14 @@ STUDY_KEYS: dict[str, tuple[str, str]] = {
     "seed": ("", "seed of the synthetic roughness (sets the parameter roughness_seed)"),
     "steps": ("", "number of positions along the path of contact (default: the model's)"),
 }
+
+#: Options of the embedded LocalCluster that keep it quiet: no dashboard, and the scheduler's HTTP
+#: server (which distributed starts even without a dashboard, by default on port 8787, with a
+#: "Port 8787 is already in use" warning when another cluster holds it) on a free port of
+#: 127.0.0.1 chosen by the system (port 0: nothing to warn about, nothing exposed beyond this host).
+LOCAL_CLUSTER_QUIET: dict[str, Any] = {"dashboard_address": None,
+                                       "scheduler_kwargs": {"dashboard_address": "127.0.0.1:0"},
+                                       "silence_logs": logging.ERROR}
 
 #: How long to wait for an existing Dask scheduler before giving up.
 CONNECT_TIMEOUT = "10s"
@@ -521,27 +530,44 @@ def resolve_function(function) -> Callable:
 
 
 def evaluate_point(function, params, options: Mapping[str, Any]) -> dict[str, Any]:
-    """Run one point (on a worker): ``{"values": {...}, "error": None or message, "seconds": ...}``.
+    """Run one point (on a worker): ``{"values": {...}, "error": None or message, "seconds": ..., ...}``.
 
     Model errors (:class:`memstribo.errors.MemstriboError`) are recorded, not raised, so that
     one impossible point (e.g. stiction at start-up) does not stop a study of thousands.
+    ``references`` lists the keys of :data:`memstribo.references.REFERENCES` that the point's
+    model functions cited (recorded in the worker's process, so they travel back with the result).
     """
-    from memstribo.references import reset_used_references
+    from memstribo.references import collect_references
 
-    reset_used_references()
     start = time.perf_counter()
-    try:
-        name = function_name(function)
-        function = resolve_function(function)
-        values = function(params, **options)
-        if not isinstance(values, Mapping):
-            raise InputError(f"point function {name!r} returned {type(values).__name__}, not a dict.")
-        values = {str(k): to_jsonable(v) for k, v in values.items()}
-        error = None
-    except MemstriboError as exc:
-        values, error = {}, f"{type(exc).__name__}: {exc}"
+    with collect_references() as used:
+        try:
+            name = function_name(function)
+            function = resolve_function(function)
+            values = function(params, **options)
+            if not isinstance(values, Mapping):
+                raise InputError(f"point function {name!r} returned {type(values).__name__}, not a dict.")
+            values = {str(k): to_jsonable(v) for k, v in values.items()}
+            error = None
+        except MemstriboError as exc:
+            values, error = {}, f"{type(exc).__name__}: {exc}"
     return {"values": values, "error": error, "seconds": time.perf_counter() - start,
-            "host": socket.gethostname(), "pid": os.getpid()}
+            "host": socket.gethostname(), "pid": os.getpid(), "references": list(used)}
+
+
+def points_references(records) -> list[str]:
+    """The reference keys the points used (``references`` of their records), in order of first use.
+
+    The keys are also added to this process's record (:func:`memstribo.references.record_references`),
+    so that ``references.txt`` and the report of a run list them. Keys unknown to this version
+    (a point file of another version) are left out.
+    """
+    from memstribo.references import REFERENCES, record_references
+
+    keys = list(dict.fromkeys(key for record in records for key in (record.get("references") or ())
+                              if key in REFERENCES))
+    record_references(keys)
+    return keys
 
 
 # --- running -------------------------------------------------------------------------------------------
@@ -590,8 +616,7 @@ def _connect(scheduler: str | None, workers: int | None):
             raise InputError(f"cannot connect to the Dask scheduler at '{scheduler}': {exc}. "
                              "Start one with 'dask scheduler' (see docs/studies.md).") from None
     n_workers = workers or os.cpu_count() or 1
-    cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                           silence_logs=logging.ERROR)
+    cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, **LOCAL_CLUSTER_QUIET)
     return Client(cluster, set_as_default=False), cluster
 
 
@@ -668,8 +693,10 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     from memstribo.output import provenance_attributes, write_dataset
 
     base = params.updated(spec.parameters, origin=f"study spec {spec.source}") if spec.parameters else params
+    cited = points_references(ordered)  # recorded on the workers, returned with each point
     provenance = provenance_attributes(base, extra={"command": "memstribo study", "study_spec": str(spec.source),
-                                                    "study_function": function_name(spec.function)})
+                                                    "study_function": function_name(spec.function),
+                                                    "models_cited": ", ".join(cited) or "none recorded"})
     write_dataset(dataset, folder, "results", provenance=provenance)
     if spec.grid:
         try:
