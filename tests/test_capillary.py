@@ -101,7 +101,101 @@ def test_humid_air_in_the_meshing_cycle():
     assert 0 < coated["cof_capillary"] < humid["cof_capillary"]
 
 
-def test_cli_sweep_humidity(cli):
-    out = cli.json("sweep", "humidity", "--values", "0,0.7", "--steps", "11")
+def test_cli_sweep_humidity(cli, tmp_path):
+    out = cli.json("sweep", "humidity", "--values", "0,0.7", "--steps", "11", "--out", tmp_path)
     dry, wet = out["points"]
     assert dry["relative_humidity"] == 0.0 and dry["cof_capillary"] == 0.0 and wet["cof_capillary"] > 0
+    # the default case does not stick: no critical humidity in the range, and a note that says so
+    assert out["critical_humidity"] is None and "no stiction in the swept range" in out["critical_humidity_note"]
+    assert out["coating"] == "none" and "warnings" in out
+    import xarray as xr
+
+    with xr.open_dataset(tmp_path / "sweep_humidity.nc") as saved:
+        assert np.isnan(saved.attrs["critical_humidity"]) and "no stiction" in saved.attrs["critical_humidity_note"]
+        assert saved["relative_humidity"].attrs["units"] == "1"
+
+
+def test_critical_humidity_interpolates_the_margin_and_its_spread():
+    from memstribo.mesh import critical_humidity
+
+    points = [{"relative_humidity": rh, "stiction_margin": m,
+               "stiction_margin_realisations": [m, m - 1e-6, m + 5e-6]}
+              for rh, m in ((0.0, 3e-6), (0.2, 2e-6), (0.4, -2e-6), (0.6, -4e-6))]
+    out = critical_humidity(points[::-1])  # any order
+    assert out["critical_humidity"] == pytest.approx(0.3)  # 2 uN at 0.2, -2 uN at 0.4: zero half way
+    assert out["critical_humidity_realisations"][0] == pytest.approx(0.3)
+    assert out["critical_humidity_realisations"][1] == pytest.approx(0.2 + 0.2 * 1 / 4)  # 1 uN -> -3 uN
+    assert out["critical_humidity_realisations"][2] is None  # +5 uN: never sticks up to 0.6
+    assert out["critical_humidity_crossing_fraction"] == pytest.approx(2 / 3)
+    assert out["critical_humidity_p05"] <= out["critical_humidity_median"] <= out["critical_humidity_p95"]
+    assert "1 of 3 realisation(s) do not stick" in out["critical_humidity_note"]
+    stuck = critical_humidity([{"relative_humidity": 0.1, "stiction_margin": -1.0},
+                               {"relative_humidity": 0.5, "stiction_margin": -2.0}])
+    assert stuck["critical_humidity"] == 0.1 and "already at the lowest" in stuck["critical_humidity_note"]
+    with pytest.raises(InputError, match="humidity sweep"):
+        critical_humidity([{"normal_load": 1e-6}])
+
+
+def test_menisci_pull_inside_the_cycles_contact_solve():
+    """In air the menisci's traction is part of each step's contact solve: the teeth are pulled together (wider
+    contact), and the capillary part of F_adh is the solves' meniscus line load."""
+    from memstribo.mesh import simulate_mesh
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    dry = simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.0}), steps=11)
+    wet = simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=11)
+    assert float(wet["contact_width"].mean()) > float(dry["contact_width"].mean())
+    r_k = kelvin_radius(0.6)
+    # the solve's wetted fraction against the wetted elements of its final gap: the same area within 10 %
+    assert np.allclose(wet["capillary_force"], laplace_pressure(r_k) * wet["wetted_area"], rtol=0.1)
+
+
+def test_menisci_inside_the_contact_solve_give_the_cylinder_relation():
+    """Issue #17: the Laplace pressure gamma/r_K over gaps <= h_c as a Dugdale-type traction in the line-contact
+    solve. In the rigid limit (stiff teeth, near-zero load) the meniscus line load of a cylinder on a flat is the
+    closed form 2 gamma sqrt(2 R h_c) / r_K; softer teeth flatten and wet more (a larger pull)."""
+    from memstribo.contact import cylinder_on_flat, solve_line_contact
+
+    radius, theta = 10e-6, math.radians(20)
+    r_k = kelvin_radius(0.5)
+    closed = capillary_force_cylinder(radius, r_k, theta)
+    separation, dx = cylinder_on_flat(radius, 1.2e-6, 4096)
+    zone = {"capillary_stress": laplace_pressure(r_k), "capillary_range": condensation_height(r_k, theta)}
+    stiff = solve_line_contact(separation, dx, 1e13, load=1e-3, **zone)
+    assert stiff.converged and stiff.adhesive_load == 0.0
+    assert stiff.capillary_load == pytest.approx(closed, rel=0.01)
+    # the net load is the applied one; the contact's compressive part (p + gamma/r_K) carries it plus the pull
+    assert stiff.load == pytest.approx(1e-3, rel=1e-6)
+    compressive = (stiff.pressure[stiff.contact] + zone["capillary_stress"]).sum() * dx
+    assert compressive == pytest.approx(1e-3 + stiff.capillary_load, rel=1e-3)
+    soft = solve_line_contact(separation, dx, 1e11, load=1e-3, **zone)
+    assert soft.converged and closed < soft.capillary_load < 1.2 * closed
+
+
+def test_capillary_zone_off_is_the_plain_solve_and_zones_add():
+    from memstribo.contact import cylinder_on_flat, solve_line_contact
+
+    separation, dx = cylinder_on_flat(10e-6, 1.2e-6, 2048)
+    plain = solve_line_contact(separation, dx, 100e9, load=5.0)
+    for zone in ({"capillary_stress": 0.0, "capillary_range": 1e-9},  # dry air: r_K = 0, gamma/r_K := 0
+                 {"capillary_stress": 1e8, "capillary_range": 0.0}):  # hydrophobic: h_c = 0
+        dry = solve_line_contact(separation, dx, 100e9, load=5.0, **zone)
+        assert np.array_equal(dry.pressure, plain.pressure) and dry.capillary_load == 0.0
+    # two zones of the same range are one zone of the summed stress (vdW Dugdale zone plus menisci)
+    both = solve_line_contact(separation, dx, 100e9, load=5.0, cohesive_stress=3e8, cohesive_range=1e-9,
+                              capillary_stress=1e8, capillary_range=1e-9)
+    one = solve_line_contact(separation, dx, 100e9, load=5.0, cohesive_stress=4e8, cohesive_range=1e-9)
+    assert both.converged and one.converged
+    assert np.allclose(both.pressure, one.pressure, atol=1e-6 * one.max_pressure)
+    assert both.adhesive_load + both.capillary_load == pytest.approx(
+        one.adhesive_load + 1e8 * dx * both.contact.sum(), rel=1e-3)
+    # per-element condensation heights (bare and coated parts): a zero-height half wets less
+    half = np.where(np.arange(separation.size) < separation.size // 2, 1e-9, 0.0)
+    mixed = solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8, capillary_range=half)
+    full = solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8, capillary_range=1e-9)
+    assert mixed.converged and 0.4 * full.capillary_load < mixed.capillary_load < 0.6 * full.capillary_load
+    with pytest.raises(InputError, match="capillary_range"):
+        solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8, capillary_range=np.ones(3))
+    with pytest.raises(InputError, match="both"):
+        solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8)

@@ -74,7 +74,7 @@ from .adhesion import contact_modulus
 from .gear import GearPair, hertz_line_contact, tangential_force
 from .references import cites
 
-__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "SUMMARY_UNITS", "BLOCK_LOAD_VARIANT",
+__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidity", "SUMMARY_UNITS", "BLOCK_LOAD_VARIANT",
            "dundurs_beta", "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
            "lattice_overlap_across", "sliding_average", "resisting_force", "step_convergence",
            "simulate_ensemble", "ensemble_summary"]
@@ -345,8 +345,16 @@ def _cohesive_zone(params):
     return float(constants.maugis_stress), float(constants.maugis_range)
 
 
-def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar):
-    """Rough contact of every step of one row: pressure, deformed gap, solver info, cohesive line load."""
+def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar, capillary=None, warm_start=None):
+    """Rough contact of every step of one row: pressure, deformed gap, solver info, cohesive line load.
+
+    ``capillary``: (Laplace pressure [Pa], condensation height per step and element [m], shape
+    (steps, n)) of the menisci in humid air, a second Dugdale-type traction inside the solve
+    (:func:`memstribo.contact.solve_line_contact`, docs/humidity.md); the sixth info column is
+    then the menisci's line load [N/m]. ``warm_start``: a dict of each row's pressures (steps, n) of
+    a previous cycle, the initial pressure of each step's solve where present (:func:`simulate_mesh`);
+    this row's pressures are stored in it.
+    """
     from .contact import solve_line_contact
 
     grid = setup.grid
@@ -360,20 +368,36 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar)
     n_steps = separation.shape[0]
     pressure = np.zeros_like(separation)
     gap = np.zeros_like(separation)
-    info = np.zeros((n_steps, 5))  # converged, residual, iterations, approach, cohesive line load
-    sigma0, h0 = _cohesive_zone(params)
+    info = np.zeros((n_steps, 5 if capillary is None else 6))  # converged, residual, iterations, approach,
+    sigma0, h0 = _cohesive_zone(params)                            # cohesive line load (, capillary line load)
     adhesive = {} if sigma0 is None else {"cohesive_stress": sigma0, "cohesive_range": h0}
     previous = None
+    start = None
+    stress = (sigma0 or 0.0) + (capillary[0] if capillary is not None else 0.0)  # the tensile traction's limit
+    if warm_start is not None and row in warm_start:
+        start, stress_before = warm_start[row]
+        if start.shape != separation.shape:
+            start = None
+        else:  # tensile parts scaled to this traction (the Laplace pressure changes with humidity)
+            start = np.where(start < 0.0, start * (stress / stress_before if stress_before > 0 else 0.0), start)
     for i in range(n_steps):
+        if start is not None:
+            previous = start[i]
+        if capillary is not None:
+            adhesive = {**adhesive, "capillary_stress": capillary[0], "capillary_range": capillary[1][i]}
         solution = solve_line_contact(separation[i], dx, modulus, load=line_load[i],
                                       tolerance=params["mesh_contact_tolerance"], initial_pressure=previous,
                                       **adhesive)
         pressure[i], gap[i] = solution.pressure, solution.gap
-        info[i] = (solution.converged, solution.residual, solution.iterations, solution.approach,
-                   getattr(solution, "adhesive_load", 0.0))
+        info[i, :5] = (solution.converged, solution.residual, solution.iterations, solution.approach,
+                       getattr(solution, "adhesive_load", 0.0))
+        if capillary is not None:
+            info[i, 5] = solution.capillary_load
         previous = solution.pressure
         if pbar is not None:
             pbar.update(1)
+    if warm_start is not None:
+        warm_start[row] = (pressure.copy(), stress)
     return pressure, gap, info
 
 
@@ -469,7 +493,7 @@ def _lattice(roll, w_adh, grid_half):
     return k0[:, None] + np.arange(slots)[None, :]
 
 
-def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress):
+def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress, warm_start=None):
     from .nanoblock.mechanics import BlockStiffness, structure_fixed_load
     from .nanoblock.geometry import adhesive_layer_thickness
 
@@ -538,14 +562,18 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                              "contact_adhesion 'none'); use mesh_contact = 'line' for the others.")
         strip_pressure, strip_gap, strip_info = _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar)
     for row in range(n_rows_solved):
+        zone = None
+        if humid and not surface:  # the menisci's Laplace pressure inside the contact solve (docs/humidity.md)
+            zone = _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coating, wear)
         if surface:
             pressure, gap = strip_pressure[row], strip_gap[row]
             info = strip_info  # one solve for all rows
         elif beta != 0.0 and mu_previous is not None:
             pressure, gap, info = _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
-                                                    slip, pbar)
+                                                    slip, pbar, zone)
         else:
-            pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, pbar)
+            pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, pbar, zone,
+                                                  warm_start)
         # window check: the contact must stay clear of the window's ends (5 % margin each side)
         edge = max(1, grid.size // 20)
         out["window_exceeded"] += (pressure[:, :edge].any(axis=1) | pressure[:, -edge:].any(axis=1))
@@ -644,7 +672,9 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
             wet = (gap <= height) & (height > 0)
             area = wet * (w_adh * dx)
             out["wetted"] += area.sum(axis=1)
-            out["f_cap_adh"] += capillary.laplace_pressure(r_kelvin) * area.sum(axis=1)  # attraction
+            # attraction: the contact solve's meniscus line load over the row (line contact), else the wetted area's
+            out["f_cap_adh"] += (info[:, 5] * w_adh if zone is not None
+                                 else capillary.laplace_pressure(r_kelvin) * area.sum(axis=1))
             # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
             rupture = capillary.WATER["surface_tension"] * (np.cos(theta_bare) + np.cos(theta_gear))
             out["f_cap"] += (area * rupture).sum(axis=1) / renewal
@@ -677,6 +707,28 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                                   sliding_fraction=sliding_fraction)
 
 
+def _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coating, wear):
+    """(Laplace pressure gamma / r_K [Pa], condensation height h_c [m] per step, or per step and element) of a row, or None.
+
+    The traction of the menisci inside the line-contact solve (issue #17, docs/humidity.md;
+    :mod:`memstribo.capillary`): h_c = r_K (cos theta_1 + cos theta_2) with the pinion bare and
+    each gear block bare or coated (the same low-discrepancy choice as the cycle's). None when
+    no meniscus forms (dry air, a hydrophobic pair).
+    """
+    from memstribo import capillary
+
+    stress = float(capillary.laplace_pressure(r_kelvin))
+    if coating is None:  # one height per step (a number: the plain Maugis-Dugdale iteration of the solver)
+        height = float(capillary.condensation_height(r_kelvin, theta_bare))
+        return (stress, np.full(s2.size, height)) if stress > 0.0 and height > 0.0 else None
+    k2_at_x = np.floor((s2[:, None] + grid[None, :]) / w_adh).astype(int)
+    bare = np.mod(k2_at_x * _GOLDEN + row * _SILVER, 1.0) < wear
+    heights = capillary.condensation_height(r_kelvin, theta_bare, np.where(bare, theta_bare, theta_coat))
+    if stress == 0.0 or not np.any(heights > 0):
+        return None
+    return stress, heights
+
+
 def _interlocking(k, comp_at, comp_adh, stiffness, interlocking_energy):
     """Sum over material blocks of 1/2 k de^2 (3-25, ``interlocking_energy``) between consecutive steps."""
     n_steps = k.shape[0]
@@ -693,15 +745,15 @@ def _interlocking(k, comp_at, comp_adh, stiffness, interlocking_energy):
             + interlocking_energy(stiffness.adhesive, d_adh).sum(axis=1))
 
 
-def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar):
+def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar, capillary=None):
     """Contacts with the normal gap change of the friction traction mu p (dissimilar materials)."""
     # first the frictionless solution gives p; the traction term uses it (one fixed-point sweep per pass)
-    pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None)
+    pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None, capillary)
     dx = setup.grid_spacing
     integral = np.cumsum(pressure, axis=1) * dx
     integral -= integral.mean(axis=1, keepdims=True)
     shear = (2 * beta / modulus) * (mu * np.sign(slip))[:, None] * integral
-    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, pbar)
+    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, pbar, capillary)
 
 
 def _geometry(params):
@@ -767,7 +819,7 @@ def resisting_force(positions, friction_force, first_contact, last_contact, base
 
 @cites("thesis", "model", "johnson_1985", "polonsky_keer_1999", "hu_1986")
 def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False, realisation=0,
-                  sliding_axis="x"):
+                  sliding_axis="x", warm_start=None):
     """Friction, adhesion, COF and the stiction margin of rough teeth over one meshing cycle (thesis 4.6, 4.9).
 
     Parameters
@@ -793,6 +845,12 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     sliding_axis : {"x", "y"}
         Which axis of a 2D map runs along the flank (the sliding direction): ``"x"`` (the scan
         lines, default) or ``"y"`` (the map's columns).
+    warm_start : dict, optional
+        Contact pressures of a previous cycle of the same case (same steps, roughness and
+        geometry) to start each contact solve from, filled in by the call: a humidity sweep
+        passes one dict through its points (:func:`sweep`), so each point starts from the
+        previous humidity's contacts (the result agrees with a cold start to the contact
+        tolerance). Used with the line contact of identical teeth only (Dundurs beta 0).
 
     Returns
     -------
@@ -846,7 +904,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     max_passes = 30
     while True:
         passes += 1
-        out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress)
+        out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress,
+                                           warm_start if beta == 0.0 else None)
         sliding = kin["sliding"]
         f_el = np.divide(out["e_el"], sliding, out=np.zeros_like(sliding), where=sliding > 0)
         friction = out["f_chem"] + out["f_vdw"] + f_el + out["f_cap"]
@@ -1245,6 +1304,7 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
 
         iterator = tqdm(values, desc=f"sweep {parameter}", unit="cycle")
     points = []
+    warm = None
     for value in iterator:
         if parameter == "load":
             if value <= 0:
@@ -1256,6 +1316,7 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
                 raise InputError(f"sweep humidity values are relative humidities from 0 to 0.99, got {value!r}.")
             point_params = params.updated({"environment": "air", "relative_humidity": value}, origin="sweep")
             head = {"relative_humidity": value}
+            warm = {} if warm is None else warm  # each point starts from the previous one's contacts
         elif parameter == "torque":
             if value <= 0:
                 raise InputError(f"sweep torque values must be positive torques, got {value!r} N m.")
@@ -1272,7 +1333,80 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
                                          coating=coating, wear=wear, client=client)
             summary = dict(ensemble["summaries"][0])
             summary.update({k: v for k, v in ensemble.items() if k not in ("summaries", "per_realisation")})
+            if parameter == "humidity":  # each realisation's margin, for its critical humidity
+                summary["stiction_margin_realisations"] = [r["stiction_margin"] for r in ensemble["per_realisation"]]
         else:
-            summary = summarize(simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear))
+            summary = summarize(simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear,
+                                              warm_start=warm))
         points.append({**head, **summary})
     return points
+
+
+def _first_crossing(humidity, margin):
+    """RH [-] where ``margin`` first falls to <= 0, linear between sweep points; None without a crossing."""
+    for i, value in enumerate(margin):
+        if value <= 0.0:
+            if i == 0:
+                return float(humidity[0])
+            before = margin[i - 1]
+            return float(humidity[i - 1] + (humidity[i] - humidity[i - 1]) * before / (before - value))
+    return None
+
+
+def critical_humidity(points) -> dict:
+    """Relative humidity at which stiction sets in, from a humidity sweep (issue #17, docs/humidity.md).
+
+    The stiction margin M = F_t - max R(c) (MODEL 7b) of each point is interpolated linearly in RH
+    between neighbouring sweep points; the critical humidity is the lowest RH where it reaches 0
+    (stiction for every RH above, up to the next crossing back, if any). With several roughness
+    realisations per point (``sweep(..., realisations=N)``) each realisation's margin gives its own
+    critical humidity, and their 5/50/95 % quantiles give the spread.
+
+    Parameters
+    ----------
+    points : list of dict
+        :func:`sweep` ``"humidity"`` points: ``relative_humidity`` [-] and ``stiction_margin`` [N]
+        (and ``stiction_margin_realisations`` with realisations).
+
+    Returns
+    -------
+    dict
+        ``critical_humidity`` [-] (None when the margin does not cross zero in the swept range),
+        ``critical_humidity_note`` (why, in words), ``critical_humidity_range`` [RH min, RH max];
+        with realisations also ``critical_humidity_realisations`` (one value or None each),
+        ``critical_humidity_p05``/``_median``/``_p95`` over the realisations that cross and
+        ``critical_humidity_crossing_fraction``.
+    """
+    if not points or any("relative_humidity" not in p or "stiction_margin" not in p for p in points):
+        raise InputError("critical_humidity needs the points of a humidity sweep (relative_humidity, "
+                         "stiction_margin).")
+    ordered = sorted(points, key=lambda p: p["relative_humidity"])
+    humidity = np.array([p["relative_humidity"] for p in ordered], dtype=float)
+    margin = np.array([p["stiction_margin"] for p in ordered], dtype=float)
+    low, high = float(humidity[0]), float(humidity[-1])
+    value = _first_crossing(humidity, margin)
+    if value is None:
+        note = (f"no stiction in the swept range RH {low:g}-{high:g}: the stiction margin stays positive (smallest "
+                f"{margin.min() * 1e6:.4g} uN at RH {humidity[int(np.argmin(margin))]:g}); the critical humidity, if "
+                "any, lies above the range")
+    elif value == low and margin[0] <= 0.0:
+        note = (f"stiction already at the lowest swept humidity RH {low:g}: the critical humidity is at or below it "
+                "(extend the sweep downwards)")
+    else:
+        note = (f"the stiction margin crosses zero at RH {value:.3f} (linear between the sweep points; resolution "
+                f"{np.diff(humidity).max() if humidity.size > 1 else 0:.3g})")
+    out = {"critical_humidity": value, "critical_humidity_note": note, "critical_humidity_range": [low, high]}
+    if all("stiction_margin_realisations" in p for p in ordered):
+        per = np.array([p["stiction_margin_realisations"] for p in ordered], dtype=float)  # (points, realisations)
+        values = [_first_crossing(humidity, per[:, j]) for j in range(per.shape[1])]
+        crossing = np.array([v for v in values if v is not None])
+        out["critical_humidity_realisations"] = values
+        out["critical_humidity_crossing_fraction"] = float(crossing.size / len(values))
+        for name, q in (("p05", 0.05), ("median", 0.5), ("p95", 0.95)):
+            out[f"critical_humidity_{name}"] = float(np.quantile(crossing, q)) if crossing.size else None
+        if crossing.size == 0:
+            out["critical_humidity_note"] += f"; none of the {len(values)} realisations sticks in the range"
+        elif crossing.size < len(values):
+            out["critical_humidity_note"] += (f"; {len(values) - crossing.size} of {len(values)} realisation(s) do "
+                                              "not stick in the range (the quantiles are over those that do)")
+    return out
