@@ -1163,11 +1163,16 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
     zones += ((sigma_c, reach),)
     stress = sum(sigma for sigma, _ in zones)
     reach_max = max(float(np.max(r)) for _, r in zones)
-    solution = _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
-                               max_iterations, reference_distance, initial_pressure, precondition, continuation,
-                               stress, reach_max, zones=None if len(zones) == 1 and np.ndim(reach) == 0 else zones)
+    solution = None
+    if approach is None and h.size <= _DENSE_CAPILLARY_MAX:  # small grids (a meshing cycle): dense matrices
+        solution = _small_capillary(h, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
+                                    reference_distance, initial_pressure, stress, reach_max, zones)
+    if solution is None:
+        solution = _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
+                                   max_iterations, reference_distance, initial_pressure, precondition, continuation,
+                                   stress, reach_max, zones=None if len(zones) == 1 and np.ndim(reach) == 0 else zones)
     contact, gap = solution.contact, solution.gap
-    wetted = _cohesive_fraction(gap, reach, contact, periodic) * (np.asarray(reach) > 0.0)
+    wetted = _dense_fraction(gap, ((1.0, reach),), contact, periodic)
     capillary_load = float(sigma_c * solution.dx * wetted.sum())
     adhesive_load = 0.0
     if vdw:
@@ -1178,6 +1183,172 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
                else ")"))
     message = kind + solution.message[solution.message.index("),") + 1:]
     return dataclasses.replace(solution, adhesive_load=adhesive_load, capillary_load=capillary_load, message=message)
+
+
+#: Grids up to this many elements solve the capillary problem (load control) with dense matrices:
+#: a meshing cycle's window (~100 elements, thousands of solves) is dominated by per-call overhead.
+_DENSE_CAPILLARY_MAX = 512
+
+
+@functools.lru_cache(maxsize=8)
+def _full_matrix(n, dx, contact_modulus, periodic, reference_distance):
+    """The dense influence matrix [m/Pa] of the whole grid (small grids only), cached per grid."""
+    operator = _half_plane(n, dx, contact_modulus, periodic, reference_distance)
+    matrix = operator.matrix(np.arange(n), operator.green_kernel)
+    matrix.setflags(write=False)
+    return matrix
+
+
+def _dense_fraction(gap, zones, contact, periodic):
+    """:func:`_cohesive_fraction` with ``zones`` on a small grid (the same formula, less overhead)."""
+    neighbours = np.empty((2, gap.size))
+    if periodic:
+        neighbours[0], neighbours[1] = np.roll(gap, 1), np.roll(gap, -1)
+    else:
+        neighbours[0, 0], neighbours[0, 1:] = gap[0], gap[:-1]
+        neighbours[1, -1], neighbours[1, :-1] = gap[-1], gap[1:]
+    edge = 0.5 * (neighbours + gap)
+    low, high = np.minimum(edge, gap), np.maximum(edge, gap)
+    span = high - low
+    positive = span > 0.0
+    total = 0.0
+    out = np.zeros(gap.size)
+    for sigma, reach in zones:
+        part = np.divide(reach - low, span, out=(low <= reach) * 1.0, where=positive)
+        fraction = 0.5 * np.minimum(np.maximum(part, 0.0), 1.0).sum(axis=0)
+        fraction[contact] = 1.0
+        if np.ndim(reach):
+            fraction[reach <= 0.0] = 0.0
+        out += sigma * fraction
+        total += sigma
+    return out / total
+
+
+def _dense_contact(matrix, h, total, contact, tolerance_abs):
+    """Non-adhesive contact on a small grid under load control: primal-dual active set with Cholesky solves.
+
+    ``A_CC p_C - delta = -h_C``, ``sum(p_C) = total`` on the contact set C, then C updated (p < 0
+    leaves, penetration joins) until it settles. Returns (p, gap, contact, delta) or None (no
+    set, cycling, not positive definite: the caller falls back to the general solver).
+    """
+    if not contact.any():
+        contact = h <= h.min()
+    seen = set()
+    potrf, potrs = scipy.linalg.get_lapack_funcs(("potrf", "potrs"), (matrix,))
+    for _ in range(_MAX_OUTER):
+        indices = np.flatnonzero(contact)
+        block = matrix[indices[:, None], indices]
+        # LAPACK directly (as _direct_solution: the scipy wrappers cost more than these small solves)
+        factor, info = potrf(block.T, lower=False, clean=False, overwrite_a=True)
+        if info != 0:
+            return None
+        rhs = np.empty((indices.size, 2), order="F")
+        rhs[:, 0] = 1.0
+        np.negative(h[indices], out=rhs[:, 1])
+        y, info = potrs(factor, rhs, lower=False, overwrite_b=True)
+        if info != 0:
+            return None
+        ones = y[:, 0].sum()
+        if not np.isfinite(ones) or ones <= 0.0:
+            return None
+        delta = (total - y[:, 1].sum()) / ones
+        p = np.zeros(h.size)
+        p[indices] = delta * y[:, 0] + y[:, 1]
+        gap = h + matrix @ p - delta
+        new = (contact & (p > 0.0)) | (~contact & (gap < -tolerance_abs))
+        if not (new ^ contact).any():
+            gap[contact] = 0.0
+            return p, gap, contact, delta
+        key = np.packbits(new).tobytes()
+        if key in seen or not new.any():
+            return None
+        seen.add(key)
+        contact = new
+    return None
+
+
+def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start, tolerance):
+    """The capillary (and vdW) zone problem on a small grid under load control, by dense matrices.
+
+    The same fixed point on the cohesive fraction as :func:`_cohesive_iteration` (traction
+    -sigma f, the non-adhesive problem for p+ with the gap h - sigma A f and the sum
+    total + sigma sum(f); settled when no fraction moves by more than ``_FRACTION_TOLERANCE``, or
+    the zone's load by less than ``_ZONE_LOAD_TOLERANCE`` with no fraction moving by more than
+    ``_ZONE_MAX_CHANGE``; Aitken extrapolation of creeping fronts every third update), each
+    inner problem solved exactly (:func:`_dense_contact`). ``h`` has its minimum at 0. Returns
+    (p, gap, contact, fraction, delta, updates) or None where it cannot (the general solver then runs).
+    """
+    n = h.size
+    matrix = _full_matrix(n, dx, modulus, periodic, reference)
+    sigma = sum(s for s, _ in zones)
+    scale = float(h.max()) if h.max() > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
+    if p_start is not None:
+        fraction = np.minimum(np.clip(-p_start / sigma, 0.0, 1.0) + (p_start > 0.0), 1.0)
+        contact = p_start > 0.0
+    else:
+        fraction = np.zeros(n)
+        contact = np.zeros(n, dtype=bool)
+    gaps = []
+    for outer in range(1, _ADHESIVE_MAX_OUTER + 1):
+        extra = sigma * fraction.sum()
+        if total + extra <= 0.0:
+            return None
+        h_eff = h - sigma * (matrix @ fraction) if fraction.any() else h
+        state = _dense_contact(matrix, h_eff, total + extra, contact, tolerance * scale)
+        if state is None:
+            return None
+        p_plus, gap, contact, delta = state
+        new = _dense_fraction(gap, zones, contact, periodic)
+        step = np.abs(new - fraction)
+        change = step.max()
+        zone = float(new[~contact].sum())
+        if change <= _FRACTION_TOLERANCE or (change <= _ZONE_MAX_CHANGE
+                                            and step.sum() <= _ZONE_LOAD_TOLERANCE * max(zone, 1.0)):
+            return p_plus - sigma * fraction, gap, contact, fraction, delta, outer
+        gaps.append(np.where(contact, 0.0, gap))
+        if len(gaps) >= 3 and outer % 3 == 0:
+            d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
+            denominator = _dot(d0, d0)
+            ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
+            if ratio >= _AITKEN_MIN_RATIO:
+                new = _dense_fraction(gap + d1 * (ratio / (1.0 - ratio)), zones, contact, periodic)
+        del gaps[:-3]
+        fraction = new
+    return None
+
+
+def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
+                     reference_distance, initial_pressure, stress, reach, zones):
+    """:func:`_dense_capillary` as a :class:`ContactSolution`, or None (the general solver then runs)."""
+    start = time.perf_counter()
+    h = _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure, None, tolerance, max_iterations,
+                               reference_distance, initial_pressure, stress, reach)
+    n = h.size
+    dx = float(dx)
+    modulus = float(contact_modulus)
+    reference = float(reference_distance) if reference_distance is not None else n * dx
+    offset = float(h.min())
+    h = h - offset
+    total = float(load) / dx if load is not None else float(mean_pressure) * n
+    p_start = np.asarray(initial_pressure, dtype=float) if initial_pressure is not None else None
+    state = _dense_capillary(h, dx, modulus, total, bool(periodic), reference, zones, p_start, tolerance)
+    if state is None:
+        return None
+    p, gap, contact, fraction, delta, outer = state
+    scale = float(h.max()) if h.max() > 0 else max(abs(total) * dx / modulus, reach)
+    # complementarity residual as the general solver's: penetration outside the contact set (its gap is exact)
+    residual = float(np.maximum(-gap[~contact], 0.0).max(initial=0.0)) / scale
+    converged = residual <= tolerance
+    cohesive = (fraction > 0.0) & ~contact
+    message = (f"capillary (dense), load control, dense matrices: {'converged' if converged else 'NOT converged'} after {outer} "
+               f"cohesive-zone update(s), {outer} direct solve(s) (residual {residual:.2e}, tolerance {tolerance:.1e})")
+    if not periodic and (contact[0] or contact[-1] or cohesive[0] or cohesive[-1]):
+        message += "; the contact or cohesive zone reaches the edge of the domain: enlarge it"
+    return ContactSolution(pressure=p, gap=np.maximum(gap, 0.0) if converged else gap, contact=contact,
+                           approach=float(delta) + offset, load=float(p.sum() * dx), iterations=outer,
+                           residual=residual, converged=bool(converged), solve_time=time.perf_counter() - start,
+                           message=message, dx=dx, periodic=bool(periodic), coarse_iterations=0,
+                           adhesive_load=float(stress * dx * fraction[cohesive].sum()), cohesive=cohesive)
 
 
 def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
