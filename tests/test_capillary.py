@@ -129,9 +129,16 @@ def test_critical_humidity_interpolates_the_margin_and_its_spread():
     assert out["critical_humidity_crossing_fraction"] == pytest.approx(2 / 3)
     assert out["critical_humidity_p05"] <= out["critical_humidity_median"] <= out["critical_humidity_p95"]
     assert "1 of 3 realisation(s) do not stick" in out["critical_humidity_note"]
+    assert out["critical_humidity_stuck_at_lowest"] == 0
     stuck = critical_humidity([{"relative_humidity": 0.1, "stiction_margin": -1.0},
                                {"relative_humidity": 0.5, "stiction_margin": -2.0}])
     assert stuck["critical_humidity"] == 0.1 and "already at the lowest" in stuck["critical_humidity_note"]
+    # a crossing below RH 0.1 (Kelvin radius of a molecular size) is flagged; a realisation stuck when dry is counted
+    early = critical_humidity([{"relative_humidity": rh, "stiction_margin": m, "stiction_margin_realisations": [m, -1.0]}
+                               for rh, m in ((0.0, 1.0), (0.1, -1.0))])
+    assert early["critical_humidity"] == pytest.approx(0.05) and "does not hold" in early["critical_humidity_note"]
+    assert early["critical_humidity_stuck_at_lowest"] == 1 and "already stick at the lowest" in early[
+        "critical_humidity_note"]
     with pytest.raises(InputError, match="humidity sweep"):
         critical_humidity([{"normal_load": 1e-6}])
 
@@ -236,3 +243,15 @@ def test_silicon_oxide_air_u_vdw_is_calibrated_to_the_published_cof_in_air():
     summary = summarize(simulate_mesh(oxide))
     assert summary["cof_mean"] == pytest.approx(0.30, rel=0.01)
     assert 0 < summary["cof_capillary"] < 0.01 * summary["cof_mean"]  # the menisci's share stays below 1 %
+
+
+def test_a_humidity_below_the_meniscus_regime_is_warned_about():
+    from memstribo.mesh import simulate_mesh, summarize
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    low = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.05}), steps=11))
+    assert any("molecular size" in w for w in low["warnings"])
+    for rh in (0.0, 0.3):
+        ok = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": rh}), steps=11))
+        assert not any("molecular size" in w for w in ok["warnings"])

@@ -1098,6 +1098,13 @@ def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converge
     if (efficiency <= 0).any():
         warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
                         "step(s): friction takes more power than the drive supplies there")
+    if params["environment"] == "air" and 0.0 < params["relative_humidity"] < _LOWEST_MENISCUS_HUMIDITY:
+        from memstribo.capillary import kelvin_radius
+
+        warnings.append(f"relative humidity {params['relative_humidity']:g} is below {_LOWEST_MENISCUS_HUMIDITY:g}: the "
+                        f"Kelvin radius ({kelvin_radius(params['relative_humidity'], params['temperature']) * 1e9:.2g} "
+                        "nm) is about a molecular size, where adsorbed water films, not menisci, dominate; the capillary "
+                        "terms are outside their validity (docs/humidity.md)")
     return warnings
 
 
@@ -1342,6 +1349,11 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
     return points
 
 
+#: Below this relative humidity the Kelvin radius is about a molecular size (0.23 nm at RH 0.1, 25 degC):
+#: the meniscus model's lower limit (docs/humidity.md).
+_LOWEST_MENISCUS_HUMIDITY = 0.1
+
+
 def _first_crossing(humidity, margin):
     """RH [-] where ``margin`` first falls to <= 0, linear between sweep points; None without a crossing."""
     for i, value in enumerate(margin):
@@ -1375,7 +1387,8 @@ def critical_humidity(points) -> dict:
         ``critical_humidity_note`` (why, in words), ``critical_humidity_range`` [RH min, RH max];
         with realisations also ``critical_humidity_realisations`` (one value or None each),
         ``critical_humidity_p05``/``_median``/``_p95`` over the realisations that cross and
-        ``critical_humidity_crossing_fraction``.
+        ``critical_humidity_crossing_fraction`` and ``critical_humidity_stuck_at_lowest`` (realisations
+        that already stick at the lowest RH, counted there). A crossing below RH 0.1 is flagged in the note.
     """
     if not points or any("relative_humidity" not in p or "stiction_margin" not in p for p in points):
         raise InputError("critical_humidity needs the points of a humidity sweep (relative_humidity, "
@@ -1385,6 +1398,11 @@ def critical_humidity(points) -> dict:
     margin = np.array([p["stiction_margin"] for p in ordered], dtype=float)
     low, high = float(humidity[0]), float(humidity[-1])
     value = _first_crossing(humidity, margin)
+    if value is not None and 0.0 < value < _LOWEST_MENISCUS_HUMIDITY:
+        low_note = (f"; RH {value:.3f} is below {_LOWEST_MENISCUS_HUMIDITY:g}, where the Kelvin radius is about a "
+                    "molecular size and the meniscus model does not hold: read it as 'as soon as menisci form'")
+    else:
+        low_note = ""
     if value is None:
         note = (f"no stiction in the swept range RH {low:g}-{high:g}: the stiction margin stays positive (smallest "
                 f"{margin.min() * 1e6:.4g} uN at RH {humidity[int(np.argmin(margin))]:g}); the critical humidity, if "
@@ -1395,7 +1413,8 @@ def critical_humidity(points) -> dict:
     else:
         note = (f"the stiction margin crosses zero at RH {value:.3f} (linear between the sweep points; resolution "
                 f"{np.diff(humidity).max() if humidity.size > 1 else 0:.3g})")
-    out = {"critical_humidity": value, "critical_humidity_note": note, "critical_humidity_range": [low, high]}
+    out = {"critical_humidity": value, "critical_humidity_note": note + low_note,
+           "critical_humidity_range": [low, high]}
     if all("stiction_margin_realisations" in p for p in ordered):
         per = np.array([p["stiction_margin_realisations"] for p in ordered], dtype=float)  # (points, realisations)
         values = [_first_crossing(humidity, per[:, j]) for j in range(per.shape[1])]
@@ -1404,6 +1423,11 @@ def critical_humidity(points) -> dict:
         out["critical_humidity_crossing_fraction"] = float(crossing.size / len(values))
         for name, q in (("p05", 0.05), ("median", 0.5), ("p95", 0.95)):
             out[f"critical_humidity_{name}"] = float(np.quantile(crossing, q)) if crossing.size else None
+        stuck = sum(1 for j, v in enumerate(values) if v is not None and v == low and per[0, j] <= 0.0)
+        out["critical_humidity_stuck_at_lowest"] = stuck
+        if stuck:
+            out["critical_humidity_note"] += (f"; {stuck} of {len(values)} realisation(s) already stick at the lowest "
+                                              f"RH {low:g} (counted there)")
         if crossing.size == 0:
             out["critical_humidity_note"] += f"; none of the {len(values)} realisations sticks in the range"
         elif crossing.size < len(values):
