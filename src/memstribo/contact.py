@@ -1164,7 +1164,7 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
     stress = sum(sigma for sigma, _ in zones)
     reach_max = max(float(np.max(r)) for _, r in zones)
     solution = None
-    if approach is None and h.size <= _DENSE_CAPILLARY_MAX:  # small grids (a meshing cycle): dense matrices
+    if approach is None and not periodic and h.size <= _DENSE_CAPILLARY_MAX:  # small free-boundary grids: dense
         solution = _small_capillary(h, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
                                     reference_distance, initial_pressure, stress, reach_max, zones)
     if solution is None:
@@ -1185,7 +1185,7 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
     return dataclasses.replace(solution, adhesive_load=adhesive_load, capillary_load=capillary_load, message=message)
 
 
-#: Grids up to this many elements solve the capillary problem (load control) with dense matrices:
+#: Free-boundary grids up to this many elements solve the capillary problem (load control) with dense matrices:
 #: a meshing cycle's window (~100 elements, thousands of solves) is dominated by per-call overhead.
 _DENSE_CAPILLARY_MAX = 512
 
