@@ -255,3 +255,21 @@ def test_a_humidity_below_the_meniscus_regime_is_warned_about():
     for rh in (0.0, 0.3):
         ok = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": rh}), steps=11))
         assert not any("molecular size" in w for w in ok["warnings"])
+
+
+def test_a_humidity_sweep_reuses_the_previous_points_contacts_without_changing_the_result():
+    """Each sweep point starts its contact solves from the previous humidity's (what does not depend on RH is
+    reused); the result is a cold start's to the contact tolerance."""
+    from memstribo.mesh import simulate_mesh, summarize, sweep
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    warm = sweep(params, "humidity", [0.4, 0.6], steps=21)[-1]
+    cold = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=21))
+    for key in ("cof_mean", "cof_capillary", "adhesion_force_mean", "stiction_margin"):
+        assert warm[key] == pytest.approx(cold[key], rel=1e-3), key
+    # the store is per row and holds each step's pressure with the traction's limit it was solved with
+    store = {}
+    simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=11, warm_start=store)
+    pressure, stress = store[0]
+    assert pressure.shape[0] == 11 and stress > 0 and pressure.min() >= -stress * (1 + 1e-9)
