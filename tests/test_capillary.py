@@ -178,6 +178,14 @@ def test_menisci_inside_the_contact_solve_give_the_cylinder_relation():
     assert compressive == pytest.approx(1e-3 + stiff.capillary_load, rel=1e-3)
     soft = solve_line_contact(separation, dx, 1e11, load=1e-3, **zone)
     assert soft.converged and closed < soft.capillary_load < 1.2 * closed
+    # the pull under approach control: the largest tensile load, just before touching, is the closed form
+    pulls = {}
+    for offset in (-0.3e-9, -0.1e-9, -0.01e-9, 0.05e-9):
+        solution = solve_line_contact(separation, dx, 1e13, approach=separation.min() + offset, **zone)
+        assert solution.converged
+        pulls[offset] = -solution.load
+    assert max(pulls.values()) == pytest.approx(closed, rel=0.01) and max(pulls, key=pulls.get) == -0.01e-9
+    assert pulls[-0.3e-9] == pytest.approx(closed * math.sqrt(1 - 0.3e-9 / zone["capillary_range"]), rel=0.01)
 
 
 def test_capillary_zone_off_is_the_plain_solve_and_zones_add():
