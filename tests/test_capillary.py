@@ -134,8 +134,8 @@ def test_critical_humidity_interpolates_the_margin_and_its_spread():
                                {"relative_humidity": 0.5, "stiction_margin": -2.0}])
     assert stuck["critical_humidity"] == 0.1 and "already at the lowest" in stuck["critical_humidity_note"]
     # a crossing below RH 0.1 (Kelvin radius of a molecular size) is flagged; a realisation stuck when dry is counted
-    early = critical_humidity([{"relative_humidity": rh, "stiction_margin": m, "stiction_margin_realisations": [m, -1.0]}
-                               for rh, m in ((0.0, 1.0), (0.1, -1.0))])
+    early = critical_humidity([{"relative_humidity": rh, "stiction_margin": m,
+                                "stiction_margin_realisations": [m, -1.0]} for rh, m in ((0.0, 1.0), (0.1, -1.0))])
     assert early["critical_humidity"] == pytest.approx(0.05) and "does not hold" in early["critical_humidity_note"]
     assert early["critical_humidity_stuck_at_lowest"] == 1 and "already stick at the lowest" in early[
         "critical_humidity_note"]

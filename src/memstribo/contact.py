@@ -1340,8 +1340,10 @@ def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, perio
     residual = float(np.maximum(-gap[~contact], 0.0).max(initial=0.0)) / scale
     converged = residual <= tolerance
     cohesive = (fraction > 0.0) & ~contact
-    message = (f"capillary (dense), load control, dense matrices: {'converged' if converged else 'NOT converged'} after {outer} "
-               f"cohesive-zone update(s), {outer} direct solve(s) (residual {residual:.2e}, tolerance {tolerance:.1e})")
+    verdict = "converged" if converged else "NOT converged"
+    message = (f"capillary (dense), load control, dense matrices: {verdict} after {outer} "
+               f"cohesive-zone update(s), each inner problem solved exactly (Cholesky) (residual {residual:.2e}, "
+               f"tolerance {tolerance:.1e})")
     if not periodic and (contact[0] or contact[-1] or cohesive[0] or cohesive[-1]):
         message += "; the contact or cohesive zone reaches the edge of the domain: enlarge it"
     return ContactSolution(pressure=p, gap=np.maximum(gap, 0.0) if converged else gap, contact=contact,

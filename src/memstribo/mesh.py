@@ -74,8 +74,8 @@ from .adhesion import contact_modulus
 from .gear import GearPair, hertz_line_contact, tangential_force
 from .references import cites
 
-__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidity", "SUMMARY_UNITS", "BLOCK_LOAD_VARIANT",
-           "dundurs_beta", "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
+__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidity", "SUMMARY_UNITS",
+           "BLOCK_LOAD_VARIANT", "dundurs_beta", "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
            "lattice_overlap_across", "sliding_average", "resisting_force", "step_convergence",
            "simulate_ensemble", "ensemble_summary"]
 
@@ -708,7 +708,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
 
 
 def _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coating, wear):
-    """(Laplace pressure gamma / r_K [Pa], condensation height h_c [m] per step, or per step and element) of a row, or None.
+    """(Laplace pressure gamma / r_K [Pa], h_c [m] per step, or per step and element) of a row's menisci, or None.
 
     The traction of the menisci inside the line-contact solve (issue #17, docs/humidity.md;
     :mod:`memstribo.capillary`): h_c = r_K (cos theta_1 + cos theta_2) with the pinion bare and
