@@ -239,6 +239,11 @@ def _figures_html(result) -> str:
     return "".join(parts) or "<p>No figures: the stages that draw them did not run.</p>"
 
 
+def _share(part, total) -> str:
+    """``part`` as a percentage of ``total`` (text)."""
+    return f"{100.0 * part / total:.2g} %" if total else "-"
+
+
 def _humidity_html(result) -> str:
     """The humid-air section (issue #17): only for a run in air (its ``humidity`` summary), else nothing."""
     humidity = result.summaries.get("humidity")
@@ -256,12 +261,13 @@ def _humidity_html(result) -> str:
              "γ/r_K pulls the teeth together inside each contact solve and adds to F_adh, and breaking them "
              "dissipates energy (the capillary part of the COF). Model and limits: docs/humidity.md.</p>"]
     labels = [label for label in ("bare", "coated") if humidity.get(label)]
-    head = "".join(f"<th>COF, {_e(humidity[label]['name'])}</th><th>capillary part</th><th>margin [µN]</th>"
+    head = "".join(f"<th>COF, {_e(humidity[label]['name'])}</th><th>capillary part (share)</th><th>margin [µN]</th>"
                    for label in labels)
     rows = []
     for i, rh in enumerate(humidity["relative_humidity"]):
         cells = "".join(
-            f"<td>{humidity[label]['cof_mean'][i]:.4g}</td><td>{humidity[label]['cof_capillary'][i]:.3g}</td>"
+            f"<td>{humidity[label]['cof_mean'][i]:.4g}</td><td>{humidity[label]['cof_capillary'][i]:.3g} "
+            f"({_share(humidity[label]['cof_capillary'][i], humidity[label]['cof_mean'][i])})</td>"
             f"<td>{humidity[label]['stiction_margin'][i] * 1e6:.4g}</td>" for label in labels)
         rows.append(f"<tr><td>{rh:.2f}</td>{cells}</tr>")
     parts.append(f"<table><tr><th>RH</th>{head}</tr>{''.join(rows)}</table>")
