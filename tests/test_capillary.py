@@ -101,7 +101,183 @@ def test_humid_air_in_the_meshing_cycle():
     assert 0 < coated["cof_capillary"] < humid["cof_capillary"]
 
 
-def test_cli_sweep_humidity(cli):
-    out = cli.json("sweep", "humidity", "--values", "0,0.7", "--steps", "11")
+def test_cli_sweep_humidity(cli, tmp_path):
+    out = cli.json("sweep", "humidity", "--values", "0,0.7", "--steps", "11", "--out", tmp_path)
     dry, wet = out["points"]
     assert dry["relative_humidity"] == 0.0 and dry["cof_capillary"] == 0.0 and wet["cof_capillary"] > 0
+    # the default case does not stick: no critical humidity in the range, and a note that says so
+    assert out["critical_humidity"] is None and "no stiction in the swept range" in out["critical_humidity_note"]
+    assert out["coating"] == "none" and "warnings" in out
+    import xarray as xr
+
+    with xr.open_dataset(tmp_path / "sweep_humidity.nc") as saved:
+        assert np.isnan(saved.attrs["critical_humidity"]) and "no stiction" in saved.attrs["critical_humidity_note"]
+        assert saved["relative_humidity"].attrs["units"] == "1"
+
+
+def test_critical_humidity_interpolates_the_margin_and_its_spread():
+    from memstribo.simulations.mesh import critical_humidity
+
+    points = [{"relative_humidity": rh, "stiction_margin": m,
+               "stiction_margin_realisations": [m, m - 1e-6, m + 5e-6]}
+              for rh, m in ((0.0, 3e-6), (0.2, 2e-6), (0.4, -2e-6), (0.6, -4e-6))]
+    out = critical_humidity(points[::-1])  # any order
+    assert out["critical_humidity"] == pytest.approx(0.3)  # 2 uN at 0.2, -2 uN at 0.4: zero half way
+    assert out["critical_humidity_realisations"][0] == pytest.approx(0.3)
+    assert out["critical_humidity_realisations"][1] == pytest.approx(0.2 + 0.2 * 1 / 4)  # 1 uN -> -3 uN
+    assert out["critical_humidity_realisations"][2] is None  # +5 uN: never sticks up to 0.6
+    assert out["critical_humidity_crossing_fraction"] == pytest.approx(2 / 3)
+    assert out["critical_humidity_p05"] <= out["critical_humidity_median"] <= out["critical_humidity_p95"]
+    assert "1 of 3 realisation(s) do not stick" in out["critical_humidity_note"]
+    assert out["critical_humidity_stuck_at_lowest"] == 0
+    stuck = critical_humidity([{"relative_humidity": 0.1, "stiction_margin": -1.0},
+                               {"relative_humidity": 0.5, "stiction_margin": -2.0}])
+    assert stuck["critical_humidity"] == 0.1 and "already at the lowest" in stuck["critical_humidity_note"]
+    # a crossing below RH 0.1 (Kelvin radius of a molecular size) is flagged; a realisation stuck when dry is counted
+    early = critical_humidity([{"relative_humidity": rh, "stiction_margin": m,
+                                "stiction_margin_realisations": [m, -1.0]} for rh, m in ((0.0, 1.0), (0.1, -1.0))])
+    assert early["critical_humidity"] == pytest.approx(0.05) and "does not hold" in early["critical_humidity_note"]
+    assert early["critical_humidity_stuck_at_lowest"] == 1 and "already stick at the lowest" in early[
+        "critical_humidity_note"]
+    with pytest.raises(InputError, match="humidity sweep"):
+        critical_humidity([{"normal_load": 1e-6}])
+
+
+def test_menisci_pull_inside_the_cycles_contact_solve():
+    """In air the menisci's traction is part of each step's contact solve: the teeth are pulled together (wider
+    contact), and the capillary part of F_adh is the solves' meniscus line load."""
+    from memstribo.simulations.mesh import simulate_mesh
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    dry = simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.0}), steps=11)
+    wet = simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=11)
+    assert float(wet["contact_width"].mean()) > float(dry["contact_width"].mean())
+    r_k = kelvin_radius(0.6)
+    # the solve's wetted fraction against the wetted elements of its final gap: the same area within 10 %
+    assert np.allclose(wet["capillary_force"], laplace_pressure(r_k) * wet["wetted_area"], rtol=0.1)
+
+
+def test_menisci_inside_the_contact_solve_give_the_cylinder_relation():
+    """Issue #17: the Laplace pressure gamma/r_K over gaps <= h_c as a Dugdale-type traction in the line-contact
+    solve. In the rigid limit (stiff teeth, near-zero load) the meniscus line load of a cylinder on a flat is the
+    closed form 2 gamma sqrt(2 R h_c) / r_K; softer teeth flatten and wet more (a larger pull)."""
+    from memstribo.physics.contact import cylinder_on_flat, solve_line_contact
+
+    radius, theta = 10e-6, math.radians(20)
+    r_k = kelvin_radius(0.5)
+    closed = capillary_force_cylinder(radius, r_k, theta)
+    separation, dx = cylinder_on_flat(radius, 1.2e-6, 4096)
+    zone = {"capillary_stress": laplace_pressure(r_k), "capillary_range": condensation_height(r_k, theta)}
+    stiff = solve_line_contact(separation, dx, 1e13, load=1e-3, **zone)
+    assert stiff.converged and stiff.adhesive_load == 0.0
+    assert stiff.capillary_load == pytest.approx(closed, rel=0.01)
+    # the net load is the applied one; the contact's compressive part (p + gamma/r_K) carries it plus the pull
+    assert stiff.load == pytest.approx(1e-3, rel=1e-6)
+    compressive = (stiff.pressure[stiff.contact] + zone["capillary_stress"]).sum() * dx
+    assert compressive == pytest.approx(1e-3 + stiff.capillary_load, rel=1e-3)
+    soft = solve_line_contact(separation, dx, 1e11, load=1e-3, **zone)
+    assert soft.converged and closed < soft.capillary_load < 1.2 * closed
+    # the pull under approach control: the largest tensile load, just before touching, is the closed form
+    pulls = {}
+    for offset in (-0.3e-9, -0.1e-9, -0.01e-9, 0.05e-9):
+        solution = solve_line_contact(separation, dx, 1e13, approach=separation.min() + offset, **zone)
+        assert solution.converged
+        pulls[offset] = -solution.load
+    assert max(pulls.values()) == pytest.approx(closed, rel=0.01) and max(pulls, key=pulls.get) == -0.01e-9
+    assert pulls[-0.3e-9] == pytest.approx(closed * math.sqrt(1 - 0.3e-9 / zone["capillary_range"]), rel=0.01)
+
+
+def test_capillary_zone_off_is_the_plain_solve_and_zones_add():
+    from memstribo.physics.contact import cylinder_on_flat, solve_line_contact
+
+    separation, dx = cylinder_on_flat(10e-6, 1.2e-6, 2048)
+    plain = solve_line_contact(separation, dx, 100e9, load=5.0)
+    for zone in ({"capillary_stress": 0.0, "capillary_range": 1e-9},  # dry air: r_K = 0, gamma/r_K := 0
+                 {"capillary_stress": 1e8, "capillary_range": 0.0}):  # hydrophobic: h_c = 0
+        dry = solve_line_contact(separation, dx, 100e9, load=5.0, **zone)
+        assert np.array_equal(dry.pressure, plain.pressure) and dry.capillary_load == 0.0
+    # two zones of the same range are one zone of the summed stress (vdW Dugdale zone plus menisci)
+    both = solve_line_contact(separation, dx, 100e9, load=5.0, cohesive_stress=3e8, cohesive_range=1e-9,
+                              capillary_stress=1e8, capillary_range=1e-9)
+    one = solve_line_contact(separation, dx, 100e9, load=5.0, cohesive_stress=4e8, cohesive_range=1e-9)
+    assert both.converged and one.converged
+    assert np.allclose(both.pressure, one.pressure, atol=1e-6 * one.max_pressure)
+    assert both.adhesive_load + both.capillary_load == pytest.approx(
+        one.adhesive_load + 1e8 * dx * both.contact.sum(), rel=1e-3)
+    # per-element condensation heights (bare and coated parts): a zero-height half wets less
+    half = np.where(np.arange(separation.size) < separation.size // 2, 1e-9, 0.0)
+    mixed = solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8, capillary_range=half)
+    full = solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8, capillary_range=1e-9)
+    assert mixed.converged and 0.4 * full.capillary_load < mixed.capillary_load < 0.6 * full.capillary_load
+    with pytest.raises(InputError, match="capillary_range"):
+        solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8, capillary_range=np.ones(3))
+    with pytest.raises(InputError, match="both"):
+        solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8)
+
+
+def test_dense_small_grid_capillary_solve_agrees_with_the_general_solver(monkeypatch):
+    """Small grids (a meshing window, ~100 elements) take dense matrices; the result is the general solver's."""
+    import memstribo.physics.contact as contact
+    from memstribo.parameters import get_parameter_values
+    from memstribo.surfaces.roughness import default_profile
+
+    profile = default_profile(get_parameter_values(), length=2e-6)
+    n = 200
+    x = (np.arange(n) - n / 2) * 1e-9
+    separation = x**2 / (2 * 5e-6) - np.interp(np.linspace(0, 1.9e-6, n), profile.x - profile.x[0], profile.z)
+    for zone in ({"capillary_stress": 1e8, "capillary_range": 1.4e-9},
+                 {"capillary_stress": 5e7, "capillary_range": 4e-9, "cohesive_stress": 3e8, "cohesive_range": 3e-10}):
+        dense = contact.solve_line_contact(separation, 1e-9, 1e11, load=2.0, **zone)
+        monkeypatch.setattr(contact, "_DENSE_CAPILLARY_MAX", 0)
+        general = contact.solve_line_contact(separation, 1e-9, 1e11, load=2.0, **zone)
+        monkeypatch.undo()
+        assert "dense matrices" in dense.message and "dense" not in general.message
+        assert dense.converged and general.converged
+        assert dense.capillary_load == pytest.approx(general.capillary_load, rel=1e-4)
+        assert dense.adhesive_load == pytest.approx(general.adhesive_load, rel=1e-3, abs=1e-9)
+        assert np.array_equal(dense.contact, general.contact)
+        assert np.allclose(dense.pressure, general.pressure, atol=1e-4 * general.max_pressure)
+
+
+def test_silicon_oxide_air_u_vdw_is_calibrated_to_the_published_cof_in_air():
+    """Issue #17: the one value of silicon_oxide_air without a measurement (U_vdW) is calibrated to the dynamic COF
+    ~0.3 of polysilicon in laboratory air (Gabriel, as cited by Srinivasan et al. 1998); its source says so."""
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.parameters import get_parameter_values
+
+    oxide = get_parameter_values("silicon_oxide_air")
+    assert "CALIBRATED" in oxide.source("vdw_bond_energy") and "10.2172/671989" in oxide.source("vdw_bond_energy")
+    summary = summarize(simulate_mesh(oxide))
+    assert summary["cof_mean"] == pytest.approx(0.30, rel=0.01)
+    assert 0 < summary["cof_capillary"] < 0.01 * summary["cof_mean"]  # the menisci's share stays below 1 %
+
+
+def test_a_humidity_below_the_meniscus_regime_is_warned_about():
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    low = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.05}), steps=11))
+    assert any("molecular size" in w for w in low["warnings"])
+    for rh in (0.0, 0.3):
+        ok = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": rh}), steps=11))
+        assert not any("molecular size" in w for w in ok["warnings"])
+
+
+def test_a_humidity_sweep_reuses_the_previous_points_contacts_without_changing_the_result():
+    """Each sweep point starts its contact solves from the previous humidity's (what does not depend on RH is
+    reused); the result is a cold start's to the contact tolerance."""
+    from memstribo.simulations.mesh import simulate_mesh, summarize, sweep
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    warm = sweep(params, "humidity", [0.4, 0.6], steps=21)[-1]
+    cold = summarize(simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=21))
+    for key in ("cof_mean", "cof_capillary", "adhesion_force_mean", "stiction_margin"):
+        assert warm[key] == pytest.approx(cold[key], rel=1e-3), key
+    # the store is per row and holds each step's pressure with the traction's limit it was solved with
+    store = {}
+    simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=11, warm_start=store)
+    pressure, stress = store[0]
+    assert pressure.shape[0] == 11 and stress > 0 and pressure.min() >= -stress * (1 + 1e-9)

@@ -430,3 +430,32 @@ def test_resume_after_a_kill_runs_the_unfinished_stages(params, tmp_path, monkey
     assert resumed.kept == ["roughness", "gear"] and resumed.ok
     assert (tmp_path / "out" / "data" / "mesh_coated.nc").is_file()
     assert resumed.verdict["coated_stiction_margin"] == resumed.summaries["coated"]["stiction_margin"]
+
+
+def test_a_run_in_air_adds_the_humid_air_section_and_a_vacuum_run_does_not(tmp_path):
+    """Issue #17: in air the run sweeps the humidity (bare and coated), draws COF, capillary part and margin
+    versus RH with the critical humidity, and the report gains a section; the default (vacuum) run is unchanged."""
+    from memstribo.job.chain import HUMIDITY_VALUES
+    from memstribo.parameters import get_parameter_values
+
+    options = options_for_test(stages=("gear",), validation=False)
+    vacuum = RunChain(get_parameter_values(), tmp_path / "vacuum", options).run()
+    assert "humidity" not in vacuum.summaries and all(s.name != "humidity" for s in vacuum.stages)
+    assert "Humid air" not in (tmp_path / "vacuum" / "report.html").read_text(encoding="utf-8")
+    air = get_parameter_values().updated({"environment": "air", "relative_humidity": 0.5})
+    run = RunChain(air, tmp_path / "air", options).run()
+    record = next(s for s in run.stages if s.name == "humidity")
+    assert record.status == "done", record.message
+    humidity = run.summaries["humidity"]
+    assert humidity["relative_humidity"] == list(HUMIDITY_VALUES)
+    for label in ("bare", "coated"):
+        part = humidity[label]
+        assert len(part["cof_mean"]) == len(HUMIDITY_VALUES) and part["cof_capillary"][0] == 0.0
+        assert part["critical_humidity"] is None or 0.0 <= part["critical_humidity"] <= 0.9
+        assert part["critical_humidity_note"]
+    assert max(humidity["bare"]["cof_capillary"]) > 0
+    assert (tmp_path / "air" / "figures" / "humidity_cof_margin.png").exists()
+    assert (tmp_path / "air" / "data" / "humidity_sweep.json").exists()
+    html = (tmp_path / "air" / "report.html").read_text(encoding="utf-8")
+    assert "Humid air: capillary adhesion and the critical humidity" in html and "humidity_cof_margin" in html
+    assert run.ok  # the extra section is not a requested stage: it does not change the run's status

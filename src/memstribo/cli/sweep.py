@@ -76,6 +76,13 @@ def run(args, params):
         raise InputError(f"--realisations must be at least 1, got {args.realisations}.")
     points = sweep(params, args.parameter, values, roughness, progress=progress, realisations=args.realisations,
                    **options)
+    critical = None
+    if args.parameter == "humidity":  # the RH at which stiction sets in (issue #17)
+        from memstribo.simulations.mesh import critical_humidity
+
+        critical = critical_humidity(points)
+        critical["coating"] = options.get("coating").name if options.get("coating") is not None else "none"
+        critical["wear"] = float(options.get("wear", 1.0))
     head = _HEAD[args.parameter]
     extra = ["stiction_probability", "stiction_margin_p05", "stiction_margin_median", "stiction_margin_p95",
              "cof_mean_p05", "cof_mean_median", "cof_mean_p95"] if args.realisations > 1 else []
@@ -92,9 +99,9 @@ def run(args, params):
         provenance = provenance_attributes(
             params, roughness=default_profile(params) if roughness is None else roughness,
             extra={"command": f"memstribo sweep {args.parameter}", "models": "memstribo.simulations.mesh.sweep (thesis 4.9.3-4.9.4)"})
-        notes.extend(_write(args.parameter, points, args.out, provenance))
+        notes.extend(_write(args.parameter, points, args.out, provenance, critical))
     if args.json:
-        return CommandResult(values={"parameter": args.parameter, "points": points})
+        return CommandResult(values={"parameter": args.parameter, "points": points, **(critical or {})})
     lines = [f"  {head[0]:>13} {'cof_mean':>9} {'chemical':>9} {'vdW':>9} {'elastic':>9} {'F_f mean':>10} "
              f"{'F_adh mean':>11} {'energy':>10} {'margin':>10} {'efficiency':>10}"
              + (f" {'P(stiction)':>11}" if args.realisations > 1 else "")]
@@ -107,6 +114,14 @@ def run(args, params):
                      f"{p['adhesion_force_mean'] * 1e6:8.4g} uN {p['energy_dissipated'] * 1e12:7.4g} pJ "
                      f"{p['stiction_margin'] * 1e3:7.3g} mN {p['mesh_efficiency']:10.3g}"
                      + (f" {p['stiction_probability']:11.2f}" if args.realisations > 1 else ""))
+    if critical is not None:
+        lines.append(f"  critical humidity ({critical['coating']}, wear {critical['wear']:g}): "
+                     + (f"RH {critical['critical_humidity']:.3f}" if critical["critical_humidity"] is not None
+                        else "none in the range") + f" -- {critical['critical_humidity_note']}")
+        if critical.get("critical_humidity_median") is not None:
+            lines.append(f"  over {len(critical['critical_humidity_realisations'])} realisations: median RH "
+                         f"{critical['critical_humidity_median']:.3f} (5-95 %: {critical['critical_humidity_p05']:.3f}"
+                         f"-{critical['critical_humidity_p95']:.3f})")
     return CommandResult(values={}, title=f"sweep over {args.parameter}" + {"load": " (thesis 4.9.3, load case thesis)",
                                                                       "area": " (thesis 4.9.4)",
                                                                       "torque": " (load case torque)",
@@ -114,7 +129,7 @@ def run(args, params):
                          notes=lines + notes)
 
 
-def _write(parameter, points, folder, provenance=None) -> list[str]:
+def _write(parameter, points, folder, provenance=None, critical=None) -> list[str]:
     import numpy as np
     import xarray as xr
 
@@ -123,13 +138,21 @@ def _write(parameter, points, folder, provenance=None) -> list[str]:
 
     dim = _HEAD[parameter][0]
     coordinate = np.array([p[dim] for p in points], dtype=float)
-    keys = [k for k in points[0] if k not in ("normal_load", "drive_torque", "area_multiple", "area", "stiction")
+    keys = [k for k in points[0] if k not in ("normal_load", "drive_torque", "area_multiple", "area", "stiction", dim)
             and isinstance(points[0][k], (int, float)) and not isinstance(points[0][k], bool)]
     data = {k: (dim, np.array([p[k] for p in points], dtype=float), {"units": SUMMARY_UNITS.get(k, ""),
                                                                        "long_name": k.replace("_", " ")})
             for k in keys}
     dataset = xr.Dataset(data, coords={dim: (dim, coordinate, {"units": _UNITS[parameter] or "1",
                                                               "long_name": dim.replace("_", " ")})})
+    if critical is not None:  # NetCDF attributes: NaN and the note where no crossing lies in the range
+        for key, value in critical.items():
+            if key == "critical_humidity_realisations":
+                dataset.attrs[key] = np.array([np.nan if v is None else v for v in value], dtype=float)
+            elif key == "critical_humidity_range":
+                dataset.attrs[key] = np.array(value, dtype=float)
+            else:
+                dataset.attrs[key] = np.nan if value is None else value
     written = write_dataset(dataset, folder, f"sweep_{parameter}", provenance=provenance)
     x = coordinate * (1e6 if parameter == "load" else 1.0)
     xlabel = {"load": "external load [uN]", "torque": "drive torque [N m]", "humidity": "relative humidity [-]",

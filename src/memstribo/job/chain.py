@@ -599,6 +599,50 @@ def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""
     return figure
 
 
+#: Relative humidities [-] of the humid-air section of a run in air (issue #17).
+HUMIDITY_VALUES = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9)
+#: Title of that section (not a stage of :data:`STAGES`: it runs only when the environment is air).
+HUMIDITY_TITLE = "Humid air: COF, capillary share and stiction margin versus relative humidity"
+
+
+def plot_humidity(humidity, title=""):
+    """COF with its capillary share, and the stiction margin, versus relative humidity, bare and coated (issue #17).
+
+    ``humidity`` is the run's humidity summary (:meth:`RunChain.humid_air`): per label ("bare",
+    "coated") the lists ``cof_mean``, ``cof_capillary``, ``stiction_margin`` [N] over
+    ``relative_humidity``, and ``critical_humidity`` (None: no crossing in the range).
+    """
+    from memstribo.output import new_figure
+
+    figure, (left, right) = new_figure(1, 2, figsize=(10, 3.8))
+    rh = np.asarray(humidity["relative_humidity"], dtype=float)
+    for label, style in (("bare", "-"), ("coated", "--")):
+        part = humidity.get(label)
+        if not part:
+            continue
+        name = part.get("name", label)
+        cof = np.asarray(part["cof_mean"], dtype=float)
+        left.plot(rh, cof, "o" + style, ms=3, label=f"COF, {name}")
+        left.plot(rh, np.asarray(part["cof_capillary"], dtype=float), "s" + style, ms=3,
+                  label=f"capillary part, {name}")
+        line, = right.plot(rh, np.asarray(part["stiction_margin"], dtype=float) * 1e6, "o" + style, ms=3,
+                           label=f"margin, {name}")
+        critical = part.get("critical_humidity")
+        if critical is not None:
+            right.axvline(critical, color=line.get_color(), lw=0.8, ls=":",
+                          label=f"critical RH {critical:.2f} ({name})")
+    right.axhline(0.0, color="k", lw=0.8)
+    left.set_xlabel("relative humidity [-]")
+    left.set_ylabel("mean COF over the cycle [-]")
+    left.legend(fontsize=7)
+    right.set_xlabel("relative humidity [-]")
+    right.set_ylabel("stiction margin F_t - max R [µN]")
+    right.legend(fontsize=7)
+    figure.suptitle(title, fontsize=10)
+    figure.tight_layout()
+    return figure
+
+
 def _sweep_dataset(dimension, values, unit, long_name, summaries):
     """Summaries (:func:`memstribo.simulations.mesh.summarize`) of a sweep as a Dataset over ``dimension``."""
     import xarray as xr
@@ -1107,6 +1151,50 @@ class RunChain:
         return record
 
     # running -------------------------------------------------------------------------------------
+    def humid_air(self):
+        """Humid air (issue #17): COF, its capillary share and the stiction margin versus relative humidity, bare
+        and coated (memstribo.simulations.mesh.sweep 'humidity'), and the critical humidity at which stiction sets in
+        (memstribo.simulations.mesh.critical_humidity)."""
+        from memstribo.simulations import mesh
+        from memstribo.physics.coating import get_coating
+
+        values = list(HUMIDITY_VALUES)
+        roughness = self.results.get("mesh_roughness")
+        summary = {"relative_humidity": values}
+        coating = get_coating(self.options.coating, self.model_params)
+        for label, kwargs in (("bare", {}), ("coated", {"coating": coating, "wear": 0.0})):
+            points = mesh.sweep(self.model_params, "humidity", values, roughness, steps=self.options.steps, **kwargs)
+            part = {"name": "bare silicon" if label == "bare" else f"{coating.name}-coated, Omega = 0"}
+            for key in ("cof_mean", "cof_capillary", "cof_chemical", "cof_vdw", "adhesion_force_mean",
+                        "stiction_margin"):
+                part[key] = [float(p[key]) for p in points]
+            part.update(mesh.critical_humidity(points))
+            summary[label] = part
+        self.summaries["humidity"] = summary
+        self._json(summary, "humidity_sweep")
+        self._figure(plot_humidity(summary, f"environment air, T = {float(self.model_params['temperature']):.4g} K"),
+                     "humidity_cof_margin",
+                     "COF over the cycle with its capillary part (breaking menisci), and the stiction margin "
+                     "F_t - max R(c), versus relative humidity, bare silicon and the coated pair (Omega = 0); dotted: "
+                     "the critical humidity where the margin crosses zero (issue #17, docs/humidity.md).")
+
+    def _run_humid_air(self):
+        """Run :meth:`humid_air` as an extra record after the stages (runs in air only; vacuum runs are unchanged)."""
+        record = self.records.setdefault("humidity", StageRecord("humidity", HUMIDITY_TITLE))
+        self._current = record
+        self.figures = [f for f in self.figures if f.stage != "humidity"]
+        start = time.perf_counter()
+        try:
+            self.humid_air()
+            record.status, record.message = "done", ""
+        except MemstriboError as exc:
+            record.status, record.message = "failed", f"{type(exc).__name__}: {exc}"
+        except Exception as exc:  # a bug: keep the rest of the run, say so loudly
+            record.status, record.message = "failed", f"internal error {type(exc).__name__}: {exc}"
+            (self.folder / "error_humidity.txt").write_text(traceback.format_exc(), encoding="utf-8")
+        record.seconds = time.perf_counter() - start
+        return record
+
     def _tick(self, values, label):
         if not self.progress:
             return values
@@ -1182,6 +1270,11 @@ class RunChain:
         bar.close()
         if self.options.map:
             self._run_map_stage(log)
+        if self.model_params["environment"] == "air":  # the humid-air section (issue #17)
+            log.info("humid air: COF and stiction margin versus relative humidity ...")
+            record = self._run_humid_air()
+            log.info("humid air: %s in %.1f s%s", record.status, record.seconds,
+                     f" ({record.message})" if record.message else "")
             self._finish(time.perf_counter() - start)
         validation = None
         if self.options.validation:

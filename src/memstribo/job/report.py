@@ -293,6 +293,53 @@ def _design_map_html(result) -> str:
         parts.append(f"<figure id='fig-{_e(figure.stem)}'><img alt='{_e(figure.caption)}' "
                      f"src='data:image/png;base64,{data}'><figcaption><b>Figure {number}.</b> {_e(figure.caption)} "
                      f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
+
+
+def _share(part, total) -> str:
+    """``part`` as a percentage of ``total`` (text)."""
+    return f"{100.0 * part / total:.2g} %" if total else "-"
+
+
+def _humidity_html(result) -> str:
+    """The humid-air section (issue #17): only for a run in air (its ``humidity`` summary), else nothing."""
+    humidity = result.summaries.get("humidity")
+    if not humidity:
+        record = next((s for s in result.stages if s.name == "humidity"), None)
+        if record is None:
+            return ""
+        return (f"<h2>Humid air</h2><p class='bad'>The humid-air section did not finish: {_e(record.message)}</p>")
+    temperature = float(result.params["temperature"])
+    model_rh = float(result.params["relative_humidity"])
+    parts = ["<h2>Humid air: capillary adhesion and the critical humidity</h2>",
+             f"<p>Environment air at T = {temperature:.4g} K (the model's "
+             f"relative humidity {model_rh:.2f}). Water condenses where "
+             "the local gap is below the condensation height r_K (cos θ1 + cos θ2); the menisci's Laplace pressure "
+             "γ/r_K pulls the teeth together inside each contact solve and adds to F_adh, and breaking them "
+             "dissipates energy (the capillary part of the COF). Model and limits: docs/humidity.md.</p>"]
+    labels = [label for label in ("bare", "coated") if humidity.get(label)]
+    head = "".join(f"<th>COF, {_e(humidity[label]['name'])}</th><th>capillary part (share)</th><th>margin [µN]</th>"
+                   for label in labels)
+    rows = []
+    for i, rh in enumerate(humidity["relative_humidity"]):
+        cells = "".join(
+            f"<td>{humidity[label]['cof_mean'][i]:.4g}</td><td>{humidity[label]['cof_capillary'][i]:.3g} "
+            f"({_share(humidity[label]['cof_capillary'][i], humidity[label]['cof_mean'][i])})</td>"
+            f"<td>{humidity[label]['stiction_margin'][i] * 1e6:.4g}</td>" for label in labels)
+        rows.append(f"<tr><td>{rh:.2f}</td>{cells}</tr>")
+    parts.append(f"<table><tr><th>RH</th>{head}</tr>{''.join(rows)}</table>")
+    items = []
+    for label in labels:
+        part = humidity[label]
+        value = part.get("critical_humidity")
+        verdict = (f"critical humidity RH {value:.3f}" if value is not None
+                   else "no critical humidity in the swept range")
+        items.append(f"<li><b>{_e(part['name'])}</b>: {_e(verdict)} ({_e(part.get('critical_humidity_note', ''))})"
+                     "</li>")
+    parts.append(f"<ul>{''.join(items)}</ul>")
+    figure = next((i for i, f in enumerate(result.figures, start=1) if f.stem == "humidity_cof_margin"), None)
+    if figure is not None:
+        parts.append(f"<p>Figure {figure} draws these curves; the numbers are in <code>data/humidity_sweep.json"
+                     "</code>.</p>")
     return "".join(parts)
 
 
@@ -357,6 +404,7 @@ def render_report(result, validation=None) -> str:
         f"<h2>The question</h2><p>{_e(QUESTION)}</p>",
         "<h2>Verdict</h2>", _verdict_html(result),
         "<h2>Inputs and their provenance</h2>", _inputs_html(result),
+        _humidity_html(result),
         "<h2>Figures</h2>", _figures_html(result),
         _design_map_html(result),
         "<h2>Stages</h2>", _stages_html(result),

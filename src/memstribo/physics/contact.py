@@ -49,6 +49,7 @@ References
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import time
 from dataclasses import dataclass
@@ -170,6 +171,10 @@ class ContactSolution:
         Boolean mask of the cohesive zone: elements out of contact (gap in (0, h0], the front
         elements partly) on which the Dugdale traction acts (-sigma0 times the fraction of the
         element within h0); None for the non-adhesive solver (no zone).
+    capillary_load : float
+        Line load of the capillary (meniscus) zone, ``capillary_stress * dx * (sum of the
+        fractions of the elements whose gap is below ``capillary_range``, contact included)``
+        [N/m], >= 0; 0 without it. Not part of ``adhesive_load`` (the vdW zone alone).
 
     Notes
     -----
@@ -193,6 +198,7 @@ class ContactSolution:
     coarse_iterations: int = 0
     adhesive_load: float = 0.0
     cohesive: np.ndarray | None = None
+    capillary_load: float = 0.0
 
     @property
     def contact_length(self) -> float:
@@ -701,7 +707,7 @@ def _nested_guess(h, dx, modulus, target, periodic, reference, cap, small=True):
 def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_pressure=None, periodic=False,
                        tolerance=1e-8, max_iterations=None, reference_distance=None, initial_pressure=None,
                        precondition=True, continuation=True, method="active-set", cohesive_stress=None,
-                       cohesive_range=None, approach=None):
+                       cohesive_range=None, approach=None, capillary_stress=None, capillary_range=None):
     r"""Solve the normal contact of a rough line contact under a given load (or approach), optionally adhesive.
 
     Parameters
@@ -750,6 +756,15 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
         Rigid-body approach [m] (same datum as :attr:`ContactSolution.approach`): displacement
         control instead of ``load``/``mean_pressure`` (with or without adhesion). Needed to
         follow a load-approach curve through the pull-off instability.
+    capillary_stress : float, optional
+        Laplace pressure gamma / r_K [Pa] of capillary menisci (humid air,
+        :func:`memstribo.physics.capillary.laplace_pressure`): a second Dugdale-type traction
+        (-capillary_stress where the gap is at most ``capillary_range``), alone or added to the
+        Maugis-Dugdale zone above: the traction is then a sum of two step functions of the gap.
+        Give it with ``capillary_range``; None or 0 (default): no menisci, the solvers above unchanged.
+    capillary_range : float or array_like, optional
+        Condensation height h_c [m] (:func:`memstribo.physics.capillary.condensation_height`), a number
+        or one value per element (e.g. bare and coated parts of a flank).
 
     Returns
     -------
@@ -795,6 +810,10 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     >>> sol.converged, round(sol.contact_length * 1e9)
     (True, 32)
     """
+    if capillary_stress is not None or capillary_range is not None:
+        return _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
+                                max_iterations, reference_distance, initial_pressure, precondition, continuation,
+                                cohesive_stress, cohesive_range, capillary_stress, capillary_range)
     if cohesive_stress is not None or cohesive_range is not None or approach is not None:
         return _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
                                max_iterations, reference_distance, initial_pressure, precondition, continuation,
@@ -974,14 +993,22 @@ def _approach_contact(operator, h, delta, p_start, tolerance_abs, cap, factors=N
     return p, g, contact, iterations, outer, False
 
 
-def _cohesive_fraction(gap, h0, contact, periodic):
+def _cohesive_fraction(gap, h0, contact, periodic, zones=None):
     """Fraction [-] of each element on which the Dugdale stress acts: gap <= h0 on the linear interpolant.
+
+    ``zones``: ((sigma_1, h_1), (sigma_2, h_2), ...) for a traction made of several step functions
+    of the gap (vdW and capillary zones): the sigma-weighted mean of their fractions, so that
+    ``sum(sigma_i) * fraction`` is the traction (``h0`` is then unused; ``h_i`` a number or per element).
 
     The gap is interpolated linearly between element centres; each half element contributes the
     part of it where the interpolant is <= h0 (1 in contact). A continuous (not 0/1) cohesive
     front makes the discrete Dugdale problem's solution unique up to the tolerance: with 0/1
     elements a band of several elements of consistent fronts exists (3-5 % in a).
     """
+    if zones is not None:  # an element of zero range carries none of that zone, not even in contact
+        total = sum(sigma for sigma, _ in zones)
+        return sum(sigma * _cohesive_fraction(gap, reach, contact, periodic) * (np.asarray(reach) > 0.0)
+                   for sigma, reach in zones) / total
     if periodic:
         left, right = np.roll(gap, 1), np.roll(gap, -1)
     else:
@@ -1000,7 +1027,7 @@ def _cohesive_fraction(gap, h0, contact, periodic):
 
 
 def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
-                        fraction_tolerance, max_outer=_ADHESIVE_MAX_OUTER):
+                        fraction_tolerance, max_outer=_ADHESIVE_MAX_OUTER, zones=None):
     """Fixed point on the cohesive fraction: traction -sigma0*fraction, inner non-adhesive solve for p+.
 
     ``inner(h_eff, extra, guess, tol)`` solves the non-adhesive problem for p+ >= 0 with the gap h_eff
@@ -1024,7 +1051,7 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
         state = (p_plus - sigma0 * fraction, gap, contact, fraction, approach, iterations, outer, residual)
         if not ok and (tol <= tolerance or not np.isfinite(residual)):
             return state + (False, why)
-        new = _cohesive_fraction(gap, h0, contact, periodic)
+        new = _cohesive_fraction(gap, h0, contact, periodic, zones)
         step = np.abs(new - fraction)
         change = step.max()
         # settled: no element's fraction moves by more than fraction_tolerance, or (many fronts,
@@ -1047,14 +1074,15 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             denominator = _dot(d0, d0)
             ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
             if ratio >= _AITKEN_MIN_RATIO:  # a creeping front (a smooth contact); rough contacts rarely
-                new = _cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, periodic)
+                new = _cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, periodic, zones)
         del gaps[:-3]
         fraction = new
         guess = p_plus
     return state + (False, f"the cohesive zone did not settle (last change of the cohesive fraction {change:.1e})")
 
 
-def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, sigma0, h0, cap, precondition):
+def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, sigma0, h0, cap, precondition,
+                     zones=None):
     """Initial p+ [Pa] and cohesive fraction from the adhesive problem on nested coarser grids (every other point).
 
     Each level is solved loosely (``_COARSE_TOLERANCE``, cohesive fraction to
@@ -1067,7 +1095,8 @@ def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, s
     coarse_mean = None if mean_pressure is None else mean_pressure
     state = _solve_adhesive(h[::2], 2.0 * dx, modulus, load, coarse_mean, None, periodic, _COARSE_TOLERANCE, cap,
                             reference, None, precondition, True, sigma0, h0,
-                            fraction_tolerance=_COARSE_FRACTION_TOLERANCE, internal=True)
+                            fraction_tolerance=_COARSE_FRACTION_TOLERANCE, internal=True,
+                            zones=_coarse_zones(zones))
     p_plus, fraction, used = state
     if p_plus is None:
         return None, None, used
@@ -1082,12 +1111,256 @@ def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, s
     return interpolate(p_plus), interpolate(fraction), used
 
 
+def _coarse_zones(zones):
+    """The zones of :func:`_cohesive_fraction` on the nested coarser grid (every other point)."""
+    if zones is None:
+        return None
+    return tuple((sigma, reach if np.ndim(reach) == 0 else reach[::2]) for sigma, reach in zones)
+
+
+@cites("israelachvili_2011")
+def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
+                     max_iterations, reference_distance, initial_pressure, precondition, continuation,
+                     cohesive_stress, cohesive_range, capillary_stress, capillary_range):
+    """:func:`solve_line_contact` with capillary menisci inside the solve (humid air, issue #17, docs/humidity.md).
+
+    The meniscus pulls with its Laplace pressure ``gamma / r_K`` [Pa] wherever the gap is at most the
+    condensation height h_c [m] (Eq. (17.3) in Israelachvili 2011; :mod:`memstribo.physics.capillary`): a
+    Dugdale-type traction of stress ``capillary_stress`` and range ``capillary_range``. Alone it is
+    the Maugis-Dugdale problem with (sigma0, h0) = (gamma / r_K, h_c); with a vdW cohesive zone the
+    traction is the sum of the two step functions of the gap, ``-(sigma0 1[g <= h0] + sigma_c 1[g <= h_c])``,
+    solved by the same fixed point with the sigma-weighted cohesive fraction (:func:`_cohesive_fraction`).
+    Without menisci (zero stress or range, e.g. RH 0 or a hydrophobic pair) the plain or adhesive
+    solve is returned unchanged.
+    """
+    h = _check_problem(separation, dx, contact_modulus)
+    if (capillary_stress is None) != (capillary_range is None):
+        raise InputError("give both capillary_stress [Pa] and capillary_range [m] (the Laplace pressure gamma/r_K "
+                         "and the condensation height h_c), or neither")
+    if not np.isscalar(capillary_stress) or not np.isfinite(capillary_stress) or capillary_stress < 0:
+        raise InputError(f"capillary_stress must be a finite number >= 0 [Pa], got {capillary_stress!r}")
+    reach = np.asarray(capillary_range, dtype=float)
+    if (reach.ndim not in (0, 1) or (reach.ndim == 1 and reach.shape != h.shape) or not np.all(np.isfinite(reach))
+            or np.any(reach < 0)):
+        raise InputError("capillary_range must be finite and >= 0 [m], a number or one value per element of "
+                         "separation")
+    sigma_c = float(capillary_stress)
+    reach = float(reach) if reach.ndim == 0 else reach
+    if sigma_c == 0.0 or not np.any(np.asarray(reach) > 0):
+        if cohesive_stress is None and cohesive_range is None and approach is None:
+            return solve_line_contact(separation, dx, contact_modulus, load=load, mean_pressure=mean_pressure,
+                                      periodic=periodic, tolerance=tolerance, max_iterations=max_iterations,
+                                      reference_distance=reference_distance, initial_pressure=initial_pressure,
+                                      precondition=precondition, continuation=continuation)
+        return _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
+                               max_iterations, reference_distance, initial_pressure, precondition, continuation,
+                               cohesive_stress, cohesive_range)
+    if (cohesive_stress is None) != (cohesive_range is None):
+        raise InputError("give both cohesive_stress [Pa] and cohesive_range [m] (the Maugis-Dugdale sigma0 and h0), "
+                         "or neither")
+    vdw = bool(cohesive_stress) and bool(cohesive_range)
+    zones = ((float(cohesive_stress), float(cohesive_range)),) if vdw else ()
+    zones += ((sigma_c, reach),)
+    stress = sum(sigma for sigma, _ in zones)
+    reach_max = max(float(np.max(r)) for _, r in zones)
+    solution = None
+    if approach is None and not periodic and h.size <= _DENSE_CAPILLARY_MAX:  # small free-boundary grids: dense
+        solution = _small_capillary(h, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
+                                    reference_distance, initial_pressure, stress, reach_max, zones)
+    if solution is None:
+        solution = _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
+                                   max_iterations, reference_distance, initial_pressure, precondition, continuation,
+                                   stress, reach_max, zones=None if len(zones) == 1 and np.ndim(reach) == 0 else zones)
+    contact, gap = solution.contact, solution.gap
+    wetted = _dense_fraction(gap, ((1.0, reach),), contact, periodic)
+    capillary_load = float(sigma_c * solution.dx * wetted.sum())
+    adhesive_load = 0.0
+    if vdw:
+        sigma0, h0 = zones[0]
+        adhesive_load = float(sigma0 * solution.dx * _cohesive_fraction(gap, h0, contact, periodic)[~contact].sum())
+    kind = (f"capillary (Laplace pressure {sigma_c:.4g} Pa over gaps <= {float(np.max(reach)):.4g} m"
+            + (f", plus the Maugis-Dugdale zone sigma0 = {zones[0][0]:.4g} Pa, h0 = {zones[0][1]:.4g} m)" if vdw
+               else ")"))
+    message = kind + solution.message[solution.message.index("),") + 1:]
+    return dataclasses.replace(solution, adhesive_load=adhesive_load, capillary_load=capillary_load, message=message)
+
+
+#: Free-boundary grids up to this many elements solve the capillary problem (load control) with dense matrices:
+#: a meshing cycle's window (~100 elements, thousands of solves) is dominated by per-call overhead.
+_DENSE_CAPILLARY_MAX = 512
+
+
+@functools.lru_cache(maxsize=8)
+def _full_matrix(n, dx, contact_modulus, periodic, reference_distance):
+    """The dense influence matrix [m/Pa] of the whole grid (small grids only), cached per grid."""
+    operator = _half_plane(n, dx, contact_modulus, periodic, reference_distance)
+    matrix = operator.matrix(np.arange(n), operator.green_kernel)
+    matrix.setflags(write=False)
+    return matrix
+
+
+def _dense_fraction(gap, zones, contact, periodic):
+    """:func:`_cohesive_fraction` with ``zones`` on a small grid (the same formula, less overhead)."""
+    neighbours = np.empty((2, gap.size))
+    if periodic:
+        neighbours[0], neighbours[1] = np.roll(gap, 1), np.roll(gap, -1)
+    else:
+        neighbours[0, 0], neighbours[0, 1:] = gap[0], gap[:-1]
+        neighbours[1, -1], neighbours[1, :-1] = gap[-1], gap[1:]
+    edge = 0.5 * (neighbours + gap)
+    low, high = np.minimum(edge, gap), np.maximum(edge, gap)
+    span = high - low
+    positive = span > 0.0
+    total = 0.0
+    out = np.zeros(gap.size)
+    for sigma, reach in zones:
+        part = np.divide(reach - low, span, out=(low <= reach) * 1.0, where=positive)
+        fraction = 0.5 * np.minimum(np.maximum(part, 0.0), 1.0).sum(axis=0)
+        fraction[contact] = 1.0
+        if np.ndim(reach):
+            fraction[reach <= 0.0] = 0.0
+        out += sigma * fraction
+        total += sigma
+    return out / total
+
+
+def _dense_contact(matrix, h, total, contact, tolerance_abs):
+    """Non-adhesive contact on a small grid under load control: primal-dual active set with Cholesky solves.
+
+    ``A_CC p_C - delta = -h_C``, ``sum(p_C) = total`` on the contact set C, then C updated (p < 0
+    leaves, penetration joins) until it settles. Returns (p, gap, contact, delta) or None (no
+    set, cycling, not positive definite: the caller falls back to the general solver).
+    """
+    if not contact.any():
+        contact = h <= h.min()
+    seen = set()
+    potrf, potrs = scipy.linalg.get_lapack_funcs(("potrf", "potrs"), (matrix,))
+    for _ in range(_MAX_OUTER):
+        indices = np.flatnonzero(contact)
+        block = matrix[indices[:, None], indices]
+        # LAPACK directly (as _direct_solution: the scipy wrappers cost more than these small solves)
+        factor, info = potrf(block.T, lower=False, clean=False, overwrite_a=True)
+        if info != 0:
+            return None
+        rhs = np.empty((indices.size, 2), order="F")
+        rhs[:, 0] = 1.0
+        np.negative(h[indices], out=rhs[:, 1])
+        y, info = potrs(factor, rhs, lower=False, overwrite_b=True)
+        if info != 0:
+            return None
+        ones = y[:, 0].sum()
+        if not np.isfinite(ones) or ones <= 0.0:
+            return None
+        delta = (total - y[:, 1].sum()) / ones
+        p = np.zeros(h.size)
+        p[indices] = delta * y[:, 0] + y[:, 1]
+        gap = h + matrix @ p - delta
+        new = (contact & (p > 0.0)) | (~contact & (gap < -tolerance_abs))
+        if not (new ^ contact).any():
+            gap[contact] = 0.0
+            return p, gap, contact, delta
+        key = np.packbits(new).tobytes()
+        if key in seen or not new.any():
+            return None
+        seen.add(key)
+        contact = new
+    return None
+
+
+def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start, tolerance):
+    """The capillary (and vdW) zone problem on a small grid under load control, by dense matrices.
+
+    The same fixed point on the cohesive fraction as :func:`_cohesive_iteration` (traction
+    -sigma f, the non-adhesive problem for p+ with the gap h - sigma A f and the sum
+    total + sigma sum(f); settled when no fraction moves by more than ``_FRACTION_TOLERANCE``, or
+    the zone's load by less than ``_ZONE_LOAD_TOLERANCE`` with no fraction moving by more than
+    ``_ZONE_MAX_CHANGE``; Aitken extrapolation of creeping fronts every third update), each
+    inner problem solved exactly (:func:`_dense_contact`). ``h`` has its minimum at 0. Returns
+    (p, gap, contact, fraction, delta, updates) or None where it cannot (the general solver then runs).
+    """
+    n = h.size
+    matrix = _full_matrix(n, dx, modulus, periodic, reference)
+    sigma = sum(s for s, _ in zones)
+    scale = float(h.max()) if h.max() > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
+    if p_start is not None:
+        fraction = np.minimum(np.clip(-p_start / sigma, 0.0, 1.0) + (p_start > 0.0), 1.0)
+        contact = p_start > 0.0
+    else:
+        fraction = np.zeros(n)
+        contact = np.zeros(n, dtype=bool)
+    gaps = []
+    for outer in range(1, _ADHESIVE_MAX_OUTER + 1):
+        extra = sigma * fraction.sum()
+        if total + extra <= 0.0:
+            return None
+        h_eff = h - sigma * (matrix @ fraction) if fraction.any() else h
+        state = _dense_contact(matrix, h_eff, total + extra, contact, tolerance * scale)
+        if state is None:
+            return None
+        p_plus, gap, contact, delta = state
+        new = _dense_fraction(gap, zones, contact, periodic)
+        step = np.abs(new - fraction)
+        change = step.max()
+        zone = float(new[~contact].sum())
+        if change <= _FRACTION_TOLERANCE or (change <= _ZONE_MAX_CHANGE
+                                            and step.sum() <= _ZONE_LOAD_TOLERANCE * max(zone, 1.0)):
+            return p_plus - sigma * fraction, gap, contact, fraction, delta, outer
+        gaps.append(np.where(contact, 0.0, gap))
+        if len(gaps) >= 3 and outer % 3 == 0:
+            d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
+            denominator = _dot(d0, d0)
+            ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
+            if ratio >= _AITKEN_MIN_RATIO:
+                new = _dense_fraction(gap + d1 * (ratio / (1.0 - ratio)), zones, contact, periodic)
+        del gaps[:-3]
+        fraction = new
+    return None
+
+
+def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
+                     reference_distance, initial_pressure, stress, reach, zones):
+    """:func:`_dense_capillary` as a :class:`ContactSolution`, or None (the general solver then runs)."""
+    start = time.perf_counter()
+    h = _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure, None, tolerance, max_iterations,
+                               reference_distance, initial_pressure, stress, reach)
+    n = h.size
+    dx = float(dx)
+    modulus = float(contact_modulus)
+    reference = float(reference_distance) if reference_distance is not None else n * dx
+    offset = float(h.min())
+    h = h - offset
+    total = float(load) / dx if load is not None else float(mean_pressure) * n
+    p_start = np.asarray(initial_pressure, dtype=float) if initial_pressure is not None else None
+    state = _dense_capillary(h, dx, modulus, total, bool(periodic), reference, zones, p_start, tolerance)
+    if state is None:
+        return None
+    p, gap, contact, fraction, delta, outer = state
+    scale = float(h.max()) if h.max() > 0 else max(abs(total) * dx / modulus, reach)
+    # complementarity residual as the general solver's: penetration outside the contact set (its gap is exact)
+    residual = float(np.maximum(-gap[~contact], 0.0).max(initial=0.0)) / scale
+    converged = residual <= tolerance
+    cohesive = (fraction > 0.0) & ~contact
+    verdict = "converged" if converged else "NOT converged"
+    message = (f"capillary (dense), load control, dense matrices: {verdict} after {outer} "
+               f"cohesive-zone update(s), each inner problem solved exactly (Cholesky) (residual {residual:.2e}, "
+               f"tolerance {tolerance:.1e})")
+    if not periodic and (contact[0] or contact[-1] or cohesive[0] or cohesive[-1]):
+        message += "; the contact or cohesive zone reaches the edge of the domain: enlarge it"
+    return ContactSolution(pressure=p, gap=np.maximum(gap, 0.0) if converged else gap, contact=contact,
+                           approach=float(delta) + offset, load=float(p.sum() * dx), iterations=outer,
+                           residual=residual, converged=bool(converged), solve_time=time.perf_counter() - start,
+                           message=message, dx=dx, periodic=bool(periodic), coarse_iterations=0,
+                           adhesive_load=float(stress * dx * fraction[cohesive].sum()), cohesive=cohesive)
+
+
 def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
                     max_iterations, reference_distance, initial_pressure, precondition, continuation,
-                    cohesive_stress, cohesive_range, fraction_tolerance=None, internal=False):
+                    cohesive_stress, cohesive_range, fraction_tolerance=None, internal=False, zones=None):
     """:func:`solve_line_contact` with a Maugis-Dugdale zone and/or under approach control.
 
     ``internal``: return (p+, cohesive fraction, CG iterations) for the nested levels instead.
+    ``zones``: a traction of several step functions (:func:`_cohesive_fraction`); ``cohesive_stress``
+    is then their summed stress and ``cohesive_range`` their largest range (:func:`_solve_capillary`).
     """
     start = time.perf_counter()
     fraction_tolerance = _FRACTION_TOLERANCE if fraction_tolerance is None else fraction_tolerance
@@ -1124,7 +1397,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
 
         if sigma0:
             fraction = (np.clip(-p_start / sigma0, 0.0, 1.0) + (p_start > 0.0) if p_start is not None
-                        else _cohesive_fraction(h - delta, h0, h - delta <= 0.0, periodic))
+                        else _cohesive_fraction(h - delta, h0, h - delta <= 0.0, periodic, zones))
             fraction = np.minimum(fraction, 1.0)
     else:
         total = float(load) / dx if load is not None else float(mean_pressure) * n
@@ -1156,7 +1429,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
         nested_guess = None
         if sigma0 and p_start is None and continuation and precondition:
             nested_guess, nested_fraction, used = _adhesive_nested(h + offset, dx, modulus, load, mean_pressure,
-                                                                   periodic, reference, sigma0, h0, cap, precondition)
+                                                                   periodic, reference, sigma0, h0, cap, precondition,
+                                                                   zones)
             coarse[0] += used
         if sigma0:
             if nested_guess is not None:
@@ -1166,14 +1440,15 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
             elif total > 0.0:
                 fraction = np.zeros(n)
             else:
-                fraction = _cohesive_fraction(h, h0, h <= 0.0, periodic)
+                fraction = _cohesive_fraction(h, h0, h <= 0.0, periodic, zones)
     if sigma0:
         guess = np.maximum(p_start + sigma0 * fraction, 0.0) if p_start is not None else None
         if approach is None and nested_guess is not None:
             guess = nested_guess
         (p, gap, contact, fraction, approach_out, iterations, outer, residual, settled,
          why) = _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
-                                    fraction_tolerance, _COARSE_MAX_UPDATES if internal else _ADHESIVE_MAX_OUTER)
+                                    fraction_tolerance, _COARSE_MAX_UPDATES if internal else _ADHESIVE_MAX_OUTER,
+                                    zones)
         if internal:
             ok = np.isfinite(residual)
             return (p + sigma0 * fraction if ok else None), (fraction if ok else None), iterations + coarse[0]

@@ -74,8 +74,8 @@ from memstribo.materials.pair import contact_modulus_of, dundurs_beta, no_slip_c
 from memstribo.physics.gear import GearPair, hertz_line_contact, tangential_force
 from memstribo.references import cites
 
-__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "SUMMARY_UNITS", "BLOCK_LOAD_VARIANT",
-           "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
+__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidity", "SUMMARY_UNITS",
+           "BLOCK_LOAD_VARIANT", "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
            "lattice_overlap_across", "sliding_average", "resisting_force", "step_convergence",
            "simulate_ensemble", "ensemble_summary"]
 
@@ -319,8 +319,16 @@ def _cohesive_zone(params):
     return float(constants.maugis_stress), float(constants.maugis_range)
 
 
-def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar):
-    """Rough contact of every step of one row: pressure, deformed gap, solver info, cohesive line load."""
+def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar, capillary=None, warm_start=None):
+    """Rough contact of every step of one row: pressure, deformed gap, solver info, cohesive line load.
+
+    ``capillary``: (Laplace pressure [Pa], condensation height per step and element [m], shape
+    (steps, n)) of the menisci in humid air, a second Dugdale-type traction inside the solve
+    (:func:`memstribo.physics.contact.solve_line_contact`, docs/humidity.md); the sixth info column is
+    then the menisci's line load [N/m]. ``warm_start``: a dict of each row's pressures (steps, n) of
+    a previous cycle, the initial pressure of each step's solve where present (:func:`simulate_mesh`);
+    this row's pressures are stored in it.
+    """
     from memstribo.physics.contact import solve_line_contact
 
     grid = setup.grid
@@ -334,20 +342,36 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar)
     n_steps = separation.shape[0]
     pressure = np.zeros_like(separation)
     gap = np.zeros_like(separation)
-    info = np.zeros((n_steps, 5))  # converged, residual, iterations, approach, cohesive line load
-    sigma0, h0 = _cohesive_zone(params)
+    info = np.zeros((n_steps, 5 if capillary is None else 6))  # converged, residual, iterations, approach,
+    sigma0, h0 = _cohesive_zone(params)                            # cohesive line load (, capillary line load)
     adhesive = {} if sigma0 is None else {"cohesive_stress": sigma0, "cohesive_range": h0}
     previous = None
+    start = None
+    stress = (sigma0 or 0.0) + (capillary[0] if capillary is not None else 0.0)  # the tensile traction's limit
+    if warm_start is not None and row in warm_start:
+        start, stress_before = warm_start[row]
+        if start.shape != separation.shape:
+            start = None
+        else:  # tensile parts scaled to this traction (the Laplace pressure changes with humidity)
+            start = np.where(start < 0.0, start * (stress / stress_before if stress_before > 0 else 0.0), start)
     for i in range(n_steps):
+        if start is not None:
+            previous = start[i]
+        if capillary is not None:
+            adhesive = {**adhesive, "capillary_stress": capillary[0], "capillary_range": capillary[1][i]}
         solution = solve_line_contact(separation[i], dx, modulus, load=line_load[i],
                                       tolerance=params["mesh_contact_tolerance"], initial_pressure=previous,
                                       **adhesive)
         pressure[i], gap[i] = solution.pressure, solution.gap
-        info[i] = (solution.converged, solution.residual, solution.iterations, solution.approach,
-                   getattr(solution, "adhesive_load", 0.0))
+        info[i, :5] = (solution.converged, solution.residual, solution.iterations, solution.approach,
+                       getattr(solution, "adhesive_load", 0.0))
+        if capillary is not None:
+            info[i, 5] = solution.capillary_load
         previous = solution.pressure
         if pbar is not None:
             pbar.update(1)
+    if warm_start is not None:
+        warm_start[row] = (pressure.copy(), stress)
     return pressure, gap, info
 
 
@@ -443,7 +467,7 @@ def _lattice(roll, w_adh, grid_half):
     return k0[:, None] + np.arange(slots)[None, :]
 
 
-def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress):
+def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress, warm_start=None):
     from memstribo.physics.nanoblock.mechanics import BlockStiffness, structure_fixed_load
     from memstribo.physics.nanoblock.geometry import adhesive_layer_thickness
 
@@ -512,14 +536,18 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                              "contact_adhesion 'none'); use mesh_contact = 'line' for the others.")
         strip_pressure, strip_gap, strip_info = _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar)
     for row in range(n_rows_solved):
+        zone = None
+        if humid and not surface:  # the menisci's Laplace pressure inside the contact solve (docs/humidity.md)
+            zone = _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coating, wear)
         if surface:
             pressure, gap = strip_pressure[row], strip_gap[row]
             info = strip_info  # one solve for all rows
         elif beta != 0.0 and mu_previous is not None:
             pressure, gap, info = _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
-                                                    slip, pbar)
+                                                    slip, pbar, zone)
         else:
-            pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, pbar)
+            pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, pbar, zone,
+                                                  warm_start)
         # window check: the contact must stay clear of the window's ends (5 % margin each side)
         edge = max(1, grid.size // 20)
         out["window_exceeded"] += (pressure[:, :edge].any(axis=1) | pressure[:, -edge:].any(axis=1))
@@ -618,7 +646,9 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
             wet = (gap <= height) & (height > 0)
             area = wet * (w_adh * dx)
             out["wetted"] += area.sum(axis=1)
-            out["f_cap_adh"] += capillary.laplace_pressure(r_kelvin) * area.sum(axis=1)  # attraction
+            # attraction: the contact solve's meniscus line load over the row (line contact), else the wetted area's
+            out["f_cap_adh"] += (info[:, 5] * w_adh if zone is not None
+                                 else capillary.laplace_pressure(r_kelvin) * area.sum(axis=1))
             # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
             rupture = capillary.WATER["surface_tension"] * (np.cos(theta_bare) + np.cos(theta_gear))
             out["f_cap"] += (area * rupture).sum(axis=1) / renewal
@@ -651,6 +681,28 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
                                   sliding_fraction=sliding_fraction)
 
 
+def _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coating, wear):
+    """(Laplace pressure gamma / r_K [Pa], h_c [m] per step, or per step and element) of a row's menisci, or None.
+
+    The traction of the menisci inside the line-contact solve (issue #17, docs/humidity.md;
+    :mod:`memstribo.physics.capillary`): h_c = r_K (cos theta_1 + cos theta_2) with the pinion bare and
+    each gear block bare or coated (the same low-discrepancy choice as the cycle's). None when
+    no meniscus forms (dry air, a hydrophobic pair).
+    """
+    from memstribo.physics import capillary
+
+    stress = float(capillary.laplace_pressure(r_kelvin))
+    if coating is None:  # one height per step (a number: the plain Maugis-Dugdale iteration of the solver)
+        height = float(capillary.condensation_height(r_kelvin, theta_bare))
+        return (stress, np.full(s2.size, height)) if stress > 0.0 and height > 0.0 else None
+    k2_at_x = np.floor((s2[:, None] + grid[None, :]) / w_adh).astype(int)
+    bare = np.mod(k2_at_x * _GOLDEN + row * _SILVER, 1.0) < wear
+    heights = capillary.condensation_height(r_kelvin, theta_bare, np.where(bare, theta_bare, theta_coat))
+    if stress == 0.0 or not np.any(heights > 0):
+        return None
+    return stress, heights
+
+
 def _interlocking(k, comp_at, comp_adh, stiffness, interlocking_energy):
     """Sum over material blocks of 1/2 k de^2 (3-25, ``interlocking_energy``) between consecutive steps."""
     n_steps = k.shape[0]
@@ -667,15 +719,15 @@ def _interlocking(k, comp_at, comp_adh, stiffness, interlocking_energy):
             + interlocking_energy(stiffness.adhesive, d_adh).sum(axis=1))
 
 
-def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar):
+def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar, capillary=None):
     """Contacts with the normal gap change of the friction traction mu p (dissimilar materials)."""
     # first the frictionless solution gives p; the traction term uses it (one fixed-point sweep per pass)
-    pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None)
+    pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None, capillary)
     dx = setup.grid_spacing
     integral = np.cumsum(pressure, axis=1) * dx
     integral -= integral.mean(axis=1, keepdims=True)
     shear = (2 * beta / modulus) * (mu * np.sign(slip))[:, None] * integral
-    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, pbar)
+    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, pbar, capillary)
 
 
 def _geometry(params):
@@ -741,7 +793,7 @@ def resisting_force(positions, friction_force, first_contact, last_contact, base
 
 @cites("thesis", "model", "johnson_1985", "polonsky_keer_1999", "hu_1986")
 def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False, realisation=0,
-                  sliding_axis="x"):
+                  sliding_axis="x", warm_start=None):
     """Friction, adhesion, COF and the stiction margin of rough teeth over one meshing cycle (thesis 4.6, 4.9).
 
     Parameters
@@ -767,6 +819,12 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     sliding_axis : {"x", "y"}
         Which axis of a 2D map runs along the flank (the sliding direction): ``"x"`` (the scan
         lines, default) or ``"y"`` (the map's columns).
+    warm_start : dict, optional
+        Contact pressures of a previous cycle of the same case (same steps, roughness and
+        geometry) to start each contact solve from, filled in by the call: a humidity sweep
+        passes one dict through its points (:func:`sweep`), so each point starts from the
+        previous humidity's contacts (the result agrees with a cold start to the contact
+        tolerance). Used with the line contact of identical teeth only (Dundurs beta 0).
 
     Returns
     -------
@@ -819,7 +877,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     max_passes = 30
     while True:
         passes += 1
-        out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress)
+        out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress,
+                                           warm_start if beta == 0.0 else None)
         sliding = kin["sliding"]
         f_el = np.divide(out["e_el"], sliding, out=np.zeros_like(sliding), where=sliding > 0)
         friction = out["f_chem"] + out["f_vdw"] + f_el + out["f_cap"]
@@ -1012,6 +1071,13 @@ def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converge
     if (efficiency <= 0).any():
         warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
                         "step(s): friction takes more power than the drive supplies there")
+    if params["environment"] == "air" and 0.0 < params["relative_humidity"] < _LOWEST_MENISCUS_HUMIDITY:
+        from memstribo.physics.capillary import kelvin_radius
+
+        warnings.append(f"relative humidity {params['relative_humidity']:g} is below {_LOWEST_MENISCUS_HUMIDITY:g}: the "
+                        f"Kelvin radius ({kelvin_radius(params['relative_humidity'], params['temperature']) * 1e9:.2g} "
+                        "nm) is about a molecular size, where adsorbed water films, not menisci, dominate; the capillary "
+                        "terms are outside their validity (docs/humidity.md)")
     return warnings
 
 
@@ -1218,6 +1284,7 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
 
         iterator = tqdm(values, desc=f"sweep {parameter}", unit="cycle")
     points = []
+    warm = None
     for value in iterator:
         if parameter == "load":
             if value <= 0:
@@ -1229,6 +1296,7 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
                 raise InputError(f"sweep humidity values are relative humidities from 0 to 0.99, got {value!r}.")
             point_params = params.updated({"environment": "air", "relative_humidity": value}, origin="sweep")
             head = {"relative_humidity": value}
+            warm = {} if warm is None else warm  # each point starts from the previous one's contacts
         elif parameter == "torque":
             if value <= 0:
                 raise InputError(f"sweep torque values must be positive torques, got {value!r} N m.")
@@ -1245,7 +1313,97 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
                                          coating=coating, wear=wear, client=client)
             summary = dict(ensemble["summaries"][0])
             summary.update({k: v for k, v in ensemble.items() if k not in ("summaries", "per_realisation")})
+            if parameter == "humidity":  # each realisation's margin, for its critical humidity
+                summary["stiction_margin_realisations"] = [r["stiction_margin"] for r in ensemble["per_realisation"]]
         else:
-            summary = summarize(simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear))
+            summary = summarize(simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear,
+                                              warm_start=warm))
         points.append({**head, **summary})
     return points
+
+
+#: Below this relative humidity the Kelvin radius is about a molecular size (0.23 nm at RH 0.1, 25 degC):
+#: the meniscus model's lower limit (docs/humidity.md).
+_LOWEST_MENISCUS_HUMIDITY = 0.1
+
+
+def _first_crossing(humidity, margin):
+    """RH [-] where ``margin`` first falls to <= 0, linear between sweep points; None without a crossing."""
+    for i, value in enumerate(margin):
+        if value <= 0.0:
+            if i == 0:
+                return float(humidity[0])
+            before = margin[i - 1]
+            return float(humidity[i - 1] + (humidity[i] - humidity[i - 1]) * before / (before - value))
+    return None
+
+
+def critical_humidity(points) -> dict:
+    """Relative humidity at which stiction sets in, from a humidity sweep (issue #17, docs/humidity.md).
+
+    The stiction margin M = F_t - max R(c) (MODEL 7b) of each point is interpolated linearly in RH
+    between neighbouring sweep points; the critical humidity is the lowest RH where it reaches 0
+    (stiction for every RH above, up to the next crossing back, if any). With several roughness
+    realisations per point (``sweep(..., realisations=N)``) each realisation's margin gives its own
+    critical humidity, and their 5/50/95 % quantiles give the spread.
+
+    Parameters
+    ----------
+    points : list of dict
+        :func:`sweep` ``"humidity"`` points: ``relative_humidity`` [-] and ``stiction_margin`` [N]
+        (and ``stiction_margin_realisations`` with realisations).
+
+    Returns
+    -------
+    dict
+        ``critical_humidity`` [-] (None when the margin does not cross zero in the swept range),
+        ``critical_humidity_note`` (why, in words), ``critical_humidity_range`` [RH min, RH max];
+        with realisations also ``critical_humidity_realisations`` (one value or None each),
+        ``critical_humidity_p05``/``_median``/``_p95`` over the realisations that cross and
+        ``critical_humidity_crossing_fraction`` and ``critical_humidity_stuck_at_lowest`` (realisations
+        that already stick at the lowest RH, counted there). A crossing below RH 0.1 is flagged in the note.
+    """
+    if not points or any("relative_humidity" not in p or "stiction_margin" not in p for p in points):
+        raise InputError("critical_humidity needs the points of a humidity sweep (relative_humidity, "
+                         "stiction_margin).")
+    ordered = sorted(points, key=lambda p: p["relative_humidity"])
+    humidity = np.array([p["relative_humidity"] for p in ordered], dtype=float)
+    margin = np.array([p["stiction_margin"] for p in ordered], dtype=float)
+    low, high = float(humidity[0]), float(humidity[-1])
+    value = _first_crossing(humidity, margin)
+    if value is not None and 0.0 < value < _LOWEST_MENISCUS_HUMIDITY:
+        low_note = (f"; RH {value:.3f} is below {_LOWEST_MENISCUS_HUMIDITY:g}, where the Kelvin radius is about a "
+                    "molecular size and the meniscus model does not hold: read it as 'as soon as menisci form'")
+    else:
+        low_note = ""
+    if value is None:
+        note = (f"no stiction in the swept range RH {low:g}-{high:g}: the stiction margin stays positive (smallest "
+                f"{margin.min() * 1e6:.4g} uN at RH {humidity[int(np.argmin(margin))]:g}); the critical humidity, if "
+                "any, lies above the range")
+    elif value == low and margin[0] <= 0.0:
+        note = (f"stiction already at the lowest swept humidity RH {low:g}: the critical humidity is at or below it "
+                "(extend the sweep downwards)")
+    else:
+        note = (f"the stiction margin crosses zero at RH {value:.3f} (linear between the sweep points; resolution "
+                f"{np.diff(humidity).max() if humidity.size > 1 else 0:.3g})")
+    out = {"critical_humidity": value, "critical_humidity_note": note + low_note,
+           "critical_humidity_range": [low, high]}
+    if all("stiction_margin_realisations" in p for p in ordered):
+        per = np.array([p["stiction_margin_realisations"] for p in ordered], dtype=float)  # (points, realisations)
+        values = [_first_crossing(humidity, per[:, j]) for j in range(per.shape[1])]
+        crossing = np.array([v for v in values if v is not None])
+        out["critical_humidity_realisations"] = values
+        out["critical_humidity_crossing_fraction"] = float(crossing.size / len(values))
+        for name, q in (("p05", 0.05), ("median", 0.5), ("p95", 0.95)):
+            out[f"critical_humidity_{name}"] = float(np.quantile(crossing, q)) if crossing.size else None
+        stuck = sum(1 for j, v in enumerate(values) if v is not None and v == low and per[0, j] <= 0.0)
+        out["critical_humidity_stuck_at_lowest"] = stuck
+        if stuck:
+            out["critical_humidity_note"] += (f"; {stuck} of {len(values)} realisation(s) already stick at the lowest "
+                                              f"RH {low:g} (counted there)")
+        if crossing.size == 0:
+            out["critical_humidity_note"] += f"; none of the {len(values)} realisations sticks in the range"
+        elif crossing.size < len(values):
+            out["critical_humidity_note"] += (f"; {len(values) - crossing.size} of {len(values)} realisation(s) do "
+                                              "not stick in the range (the quantiles are over those that do)")
+    return out
