@@ -224,20 +224,22 @@ def _stages_html(result) -> str:
             "<th>time</th><th>note</th><th>datasets</th></tr>" + rows + "</table></div>")
 
 
+def _figure_html(folder, number, figure) -> str:
+    """Figure ``number`` of the run in ``folder``, its PNG inlined, or a line saying it is missing."""
+    path = Path(folder) / "figures" / f"{figure.stem}.png"
+    try:
+        data = base64.b64encode(path.read_bytes()).decode("ascii")
+    except OSError:
+        return f"<p class='bad'>Figure {number} ({_e(figure.stem)}) is missing.</p>"
+    return (f"<figure id='fig-{_e(figure.stem)}'><img alt='{_e(figure.caption)}' "
+            f"src='data:image/png;base64,{data}'><figcaption><b>Figure {number}.</b> {_e(figure.caption)} "
+            f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
+
+
 def _figures_html(result) -> str:
-    parts = []
-    for number, figure in enumerate(result.figures, start=1):
-        if figure.stage == _MAP_STAGE:
-            continue  # in the design map's own section (_design_map_html)
-        path = Path(result.folder) / "figures" / f"{figure.stem}.png"
-        try:
-            data = base64.b64encode(path.read_bytes()).decode("ascii")
-        except OSError:
-            parts.append(f"<p class='bad'>Figure {number} ({_e(figure.stem)}) is missing.</p>")
-            continue
-        parts.append(f"<figure id='fig-{_e(figure.stem)}'><img alt='{_e(figure.caption)}' "
-                     f"src='data:image/png;base64,{data}'><figcaption><b>Figure {number}.</b> {_e(figure.caption)} "
-                     f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
+    # the design map's figures are in its own section (_design_map_html); numbers count every figure
+    parts = [_figure_html(result.folder, number, figure)
+             for number, figure in enumerate(result.figures, start=1) if figure.stage != _MAP_STAGE]
     return "".join(parts) or "<p>No figures: the stages that draw them did not run.</p>"
 
 
@@ -281,18 +283,9 @@ def _design_map_html(result) -> str:
                      "map.nc says why).</li>")
     items += [f"<li class='note'>{_e(note)}</li>" for note in summary.get("notes", [])]
     parts.append("<ul>" + "".join(items) + "</ul>")
-    for number, figure in enumerate(result.figures, start=1):
-        if figure.stage != _MAP_STAGE:
-            continue
-        path = Path(result.folder) / "figures" / f"{figure.stem}.png"
-        try:
-            data = base64.b64encode(path.read_bytes()).decode("ascii")
-        except OSError:
-            parts.append(f"<p class='bad'>Figure {number} ({_e(figure.stem)}) is missing.</p>")
-            continue
-        parts.append(f"<figure id='fig-{_e(figure.stem)}'><img alt='{_e(figure.caption)}' "
-                     f"src='data:image/png;base64,{data}'><figcaption><b>Figure {number}.</b> {_e(figure.caption)} "
-                     f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
+    parts += [_figure_html(result.folder, number, figure)
+              for number, figure in enumerate(result.figures, start=1) if figure.stage == _MAP_STAGE]
+    return "".join(parts)
 
 
 def _share(part, total) -> str:

@@ -100,12 +100,7 @@ def hertz_line_peak_pressure(load, radius, contact_modulus):
 
     Parameters
     ----------
-    load : numeric
-        Load per unit face width w [N/m].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    load, radius, contact_modulus : as in :func:`hertz_line_half_width` (w [N/m], R [m], E* [Pa])
 
     Returns
     -------
@@ -130,12 +125,7 @@ def hertz_line_pressure(x, load, radius, contact_modulus):
     ----------
     x : numeric
         Position from the contact centre [m].
-    load : numeric
-        Load per unit face width w [N/m].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    load, radius, contact_modulus : as in :func:`hertz_line_half_width` (w [N/m], R [m], E* [Pa])
 
     Returns
     -------
@@ -160,12 +150,7 @@ def hertz_line_approach(load, radius, contact_modulus, reference_distance):
 
     Parameters
     ----------
-    load : numeric
-        Load per unit face width w [N/m].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    load, radius, contact_modulus : as in :func:`hertz_line_half_width` (w [N/m], R [m], E* [Pa])
     reference_distance : numeric
         Datum distance L [m]: the displacement due to a point load is taken as zero at
         distance L from it (module docstring).
@@ -199,12 +184,7 @@ def hertz_line_approach_to_point(load, radius, contact_modulus, distance):
 
     Parameters
     ----------
-    load : numeric
-        Load per unit face width w [N/m].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    load, radius, contact_modulus : as in :func:`hertz_line_half_width` (w [N/m], R [m], E* [Pa])
     distance : numeric
         Distance d >= a of the surface reference point from the contact centre [m].
 
@@ -268,17 +248,12 @@ def hertz_sphere_approach(force, radius, contact_modulus):
 
     Parameters
     ----------
-    force : numeric
-        Normal force F [N].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    force, radius, contact_modulus : as in :func:`hertz_sphere_radius` (F [N], R [m], E* [Pa])
 
     Returns
     -------
-    numeric
-        Approach delta = a²/R [m].
+    delta : numeric
+        Approach a²/R [m].
 
     Notes
     -----
@@ -293,17 +268,12 @@ def hertz_sphere_peak_pressure(force, radius, contact_modulus):
 
     Parameters
     ----------
-    force : numeric
-        Normal force F [N].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    force, radius, contact_modulus : as in :func:`hertz_sphere_radius` (F [N], R [m], E* [Pa])
 
     Returns
     -------
-    numeric
-        p0 = 3F/(2 pi a²) [Pa].
+    p0 : numeric
+        Peak pressure 3F/(2 pi a²) [Pa].
 
     Notes
     -----
@@ -321,12 +291,7 @@ def hertz_sphere_pressure(r, force, radius, contact_modulus):
     ----------
     r : numeric
         Radial distance from the contact centre [m].
-    force : numeric
-        Normal force F [N].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    force, radius, contact_modulus : as in :func:`hertz_sphere_radius` (F [N], R [m], E* [Pa])
 
     Returns
     -------
@@ -422,12 +387,7 @@ def westergaard_contact_half_width(mean_pressure, amplitude, wavelength, contact
     ----------
     mean_pressure : numeric
         Mean pressure p̄ [Pa]; at p̄ >= p* = π E* Δ/λ the contact is complete (a = λ/2).
-    amplitude : numeric
-        Amplitude Δ [m].
-    wavelength : numeric
-        Wavelength λ [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    amplitude, wavelength, contact_modulus : as in :func:`westergaard_mean_pressure` (Δ [m], λ [m], E* [Pa])
 
     Returns
     -------
@@ -453,12 +413,7 @@ def westergaard_pressure(x, mean_pressure, amplitude, wavelength, contact_modulu
         Position from a crest (the centre of a contact) [m].
     mean_pressure : numeric
         Mean pressure p̄ [Pa].
-    amplitude : numeric
-        Amplitude Δ [m] of :math:`h(x) = \Delta (1 - \cos(2\pi x/\lambda))`.
-    wavelength : numeric
-        Wavelength λ [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
+    amplitude, wavelength, contact_modulus : as in :func:`westergaard_mean_pressure` (Δ [m], λ [m], E* [Pa])
 
     Returns
     -------
@@ -534,17 +489,12 @@ def jkr_line_pull_off_load(radius, contact_modulus, work_of_adhesion):
 
     Parameters
     ----------
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
-    work_of_adhesion : numeric
-        Work of adhesion w [J/m²].
+    radius, contact_modulus, work_of_adhesion : as in :func:`jkr_line_load` (R [m], E* [Pa], w [J/m²])
 
     Returns
     -------
-    numeric
-        The (negative, tensile) load at pull-off [N/m], the minimum of :func:`jkr_line_load`.
+    load : numeric
+        The (negative, tensile) load at pull-off P_c [N/m], the minimum of :func:`jkr_line_load`.
 
     Notes
     -----
@@ -569,16 +519,11 @@ def jkr_line_pull_off_half_width(radius, contact_modulus, work_of_adhesion):
 
     Parameters
     ----------
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
-    work_of_adhesion : numeric
-        Work of adhesion w [J/m²].
+    radius, contact_modulus, work_of_adhesion : as in :func:`jkr_line_load` (R [m], E* [Pa], w [J/m²])
 
     Returns
     -------
-    numeric
+    half_width : numeric
         :math:`a_c = (2 R^2 w / (\pi E^*))^{1/3}` [m], where dP/da = 0 in :func:`jkr_line_load`.
     """
     radius = as_array(radius, "radius", "m", positive=True)
@@ -593,14 +538,9 @@ def maugis_line_parameter(radius, contact_modulus, work_of_adhesion, cohesive_st
 
     Parameters
     ----------
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
-    work_of_adhesion : numeric
-        Work of adhesion w [J/m²] (w = sigma0 h0).
+    radius, contact_modulus, work_of_adhesion : as in :func:`jkr_line_load` (R [m], E* [Pa], w [J/m²])
     cohesive_stress : numeric
-        Dugdale stress sigma0 [Pa].
+        Dugdale stress sigma0 [Pa] (w = sigma0 h0 sets the range h0).
 
     Returns
     -------
@@ -667,14 +607,8 @@ def maugis_dugdale_line_load(half_width, radius, contact_modulus, work_of_adhesi
 
     Parameters
     ----------
-    half_width : numeric
-        Contact half-width a [m].
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
-    work_of_adhesion : numeric
-        Work of adhesion w [J/m²].
+    half_width, radius, contact_modulus, work_of_adhesion : numeric
+        As in :func:`jkr_line_load` (a [m], R [m], E* [Pa], w [J/m²]).
     cohesive_stress : numeric
         Dugdale stress sigma0 [Pa]; the range is h0 = w / sigma0.
 
@@ -731,14 +665,8 @@ def maugis_dugdale_line_pull_off(radius, contact_modulus, work_of_adhesion, cohe
 
     Parameters
     ----------
-    radius : numeric
-        Effective radius R [m].
-    contact_modulus : numeric
-        Contact modulus E* [Pa].
-    work_of_adhesion : numeric
-        Work of adhesion w [J/m²].
-    cohesive_stress : numeric
-        Dugdale stress sigma0 [Pa].
+    radius, contact_modulus, work_of_adhesion, cohesive_stress : numeric
+        As in :func:`maugis_dugdale_line_load` (R [m], E* [Pa], w [J/m²], sigma0 [Pa]).
 
     Returns
     -------

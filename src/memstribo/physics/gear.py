@@ -358,12 +358,7 @@ def load_share_lubricated(position, first_contact, last_contact, base_pitch):
 
     Parameters
     ----------
-    position : array_like
-        c [m].
-    first_contact, last_contact : float
-        c_f, c_l [m].
-    base_pitch : float
-        p_b [m].
+    position, first_contact, last_contact, base_pitch : as in :func:`load_share_dry` (c, c_f, c_l, p_b [m])
 
     Returns
     -------

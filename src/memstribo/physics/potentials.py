@@ -57,6 +57,25 @@ def _result(value):
     return float(value) if np.ndim(value) == 0 else value
 
 
+def _pair_inputs(separation, epsilon, sigma):
+    """The checked separation [m], pair well depth epsilon [J] and zero-potential distance sigma [m]."""
+    return (as_array(separation, "separation", "m", positive=True),
+            as_array(epsilon, "epsilon", "J", positive=True),
+            as_array(sigma, "sigma", "m", positive=True))
+
+
+def _layer_inputs(separation, epsilon, sigma, areal_density):
+    """:func:`_pair_inputs` and the checked areal density N1 [1/m²] of an atomic layer."""
+    return (*_pair_inputs(separation, epsilon, sigma),
+            as_array(areal_density, "areal_density", "1/m^2", positive=True))
+
+
+def _half_space_inputs(separation, epsilon, sigma, areal_density, layer_spacing):
+    """:func:`_layer_inputs` and the checked layer spacing l_z [m]."""
+    return (*_layer_inputs(separation, epsilon, sigma, areal_density),
+            as_array(layer_spacing, "layer_spacing", "m", positive=True))
+
+
 def areal_density(bond_length):
     """Number of atoms per unit area of an atomic layer, N1 = 1 / D_chem².
 
@@ -84,7 +103,7 @@ def lennard_jones_sigma(bond_length):
     Parameters
     ----------
     bond_length : float or array_like
-        Bond length D_chem [m].
+        Bond length D_chem [m], the pair's equilibrium distance.
 
     Returns
     -------
@@ -175,9 +194,7 @@ def lennard_jones_potential(separation, epsilon, sigma):
     float or ndarray
         Potential energy [J]; minimum -epsilon at r = 2^(1/6) sigma.
     """
-    r = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
+    r, epsilon, sigma = _pair_inputs(separation, epsilon, sigma)
     s6 = (sigma / r) ** 6
     return _result(4.0 * epsilon * (s6 * s6 - s6))
 
@@ -192,19 +209,14 @@ def lennard_jones_force(separation, epsilon, sigma):
     ----------
     separation : float or array_like
         Distance r [m], > 0.
-    epsilon : float
-        Well depth [J].
-    sigma : float
-        Distance of zero potential [m].
+    epsilon, sigma : as in :func:`lennard_jones_potential` (well depth [J], distance of zero potential [m])
 
     Returns
     -------
     float or ndarray
         Force [N].
     """
-    r = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
+    r, epsilon, sigma = _pair_inputs(separation, epsilon, sigma)
     s6 = (sigma / r) ** 6
     return _result(24.0 * epsilon * (2.0 * s6 * s6 - s6) / r)
 
@@ -234,10 +246,7 @@ def particle_monolayer_potential(separation, epsilon, sigma, areal_density):
     float or ndarray
         Potential energy [J].
     """
-    z = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
-    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
+    z, epsilon, sigma, n1 = _layer_inputs(separation, epsilon, sigma, areal_density)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**2 * (s**10 / 5.0 - s**4 / 2.0))
 
@@ -250,10 +259,7 @@ def particle_monolayer_force(separation, epsilon, sigma, areal_density):
 
     Zero at z = sigma. Parameters as :func:`particle_monolayer_potential`; returns [N].
     """
-    z = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
-    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
+    z, epsilon, sigma, n1 = _layer_inputs(separation, epsilon, sigma, areal_density)
     s = sigma / z
     return _result(8.0 * np.pi * epsilon * n1 * sigma * (s**11 - s**5))
 
@@ -280,13 +286,9 @@ def particle_half_space_potential(separation, epsilon, sigma, areal_density, lay
     Returns
     -------
     float or ndarray
-        Potential energy [J].
+        Potential energy of the atom [J].
     """
-    z = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
-    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
-    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
+    z, epsilon, sigma, n1, lz = _half_space_inputs(separation, epsilon, sigma, areal_density, layer_spacing)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**3 / lz * (s**9 / 45.0 - s**3 / 6.0))
 
@@ -300,11 +302,7 @@ def particle_half_space_force(separation, epsilon, sigma, areal_density, layer_s
     Zero at z = (2/5)^(1/6) sigma. Parameters as :func:`particle_half_space_potential`;
     returns [N].
     """
-    z = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
-    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
-    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
+    z, epsilon, sigma, n1, lz = _half_space_inputs(separation, epsilon, sigma, areal_density, layer_spacing)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**2 / lz * (s**10 / 5.0 - s**4 / 2.0))
 
@@ -324,23 +322,16 @@ def chain_half_space_potential(separation, epsilon, sigma, areal_density, layer_
     ----------
     separation : float or array_like
         Distance z of the chain end from the surface [m], > 0.
-    epsilon, sigma : float
-        Pair parameters [J], [m].
-    areal_density : float
-        Atoms per unit area of one layer N1 [1/m²].
+    epsilon, sigma, areal_density : as in :func:`particle_half_space_potential` ([J], [m], N1 [1/m²])
     layer_spacing : float
         Distance l_z between atoms along the chain and between layers [m].
 
     Returns
     -------
     float or ndarray
-        Potential energy [J].
+        Potential energy of the chain [J].
     """
-    z = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
-    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
-    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
+    z, epsilon, sigma, n1, lz = _half_space_inputs(separation, epsilon, sigma, areal_density, layer_spacing)
     s = sigma / z
     return _result(4.0 * np.pi * epsilon * n1 * sigma**4 / lz**2 * (s**8 / 360.0 - s**2 / 12.0))
 
@@ -355,11 +346,7 @@ def chain_half_space_force(separation, epsilon, sigma, areal_density, layer_spac
     normal stress between two half-spaces a gap z apart. Parameters as
     :func:`chain_half_space_potential`; returns [N].
     """
-    z = as_array(separation, "separation", "m", positive=True)
-    epsilon = as_array(epsilon, "epsilon", "J", positive=True)
-    sigma = as_array(sigma, "sigma", "m", positive=True)
-    n1 = as_array(areal_density, "areal_density", "1/m^2", positive=True)
-    lz = as_array(layer_spacing, "layer_spacing", "m", positive=True)
+    z, epsilon, sigma, n1, lz = _half_space_inputs(separation, epsilon, sigma, areal_density, layer_spacing)
     s = sigma / z
     return _result(2.0 * np.pi * epsilon * n1 * sigma**3 / (3.0 * lz**2) * (2.0 / 15.0 * s**9 - s**3))
 

@@ -141,6 +141,19 @@ def _field_from(values, factor) -> StressField:
     return StressField(*(factor * v for v in values))
 
 
+def _point_load(x, y, z, load, poisson_ratio, kernels) -> StressField:
+    """Stresses of a point load ``load`` [N] on the surface, sigma = load (A + z B), with A and B the
+    unit-load components that ``kernels(x, y, z, R, nu)`` returns (see the point-load kernels below)."""
+    x, y, z = _points(x, y, z)
+    if np.any(z <= 0):
+        raise InputError("z must be > 0 [m] for a point load (the surface point itself is singular).")
+    nu = _poisson(poisson_ratio)
+    load = float(as_array(load, "load", "N"))
+    r = np.sqrt(x**2 + y**2 + z**2)
+    k = kernels(x, y, z, r, nu)
+    return _field_from([k[i] + z * k[i + 6] for i in range(6)], load)
+
+
 @cites("johnson_1985")
 def boussinesq(x, y, z, load, poisson_ratio):
     """Stresses under a normal point load on the surface of a half-space (Boussinesq).
@@ -161,14 +174,7 @@ def boussinesq(x, y, z, load, poisson_ratio):
     StressField
         E.g. sigma_zz = -3 P z³ / (2 pi R⁵) (Johnson section 3.2 in [3]_).
     """
-    x, y, z = _points(x, y, z)
-    if np.any(z <= 0):
-        raise InputError("z must be > 0 [m] for a point load (the surface point itself is singular).")
-    nu = _poisson(poisson_ratio)
-    load = float(as_array(load, "load", "N"))
-    r = np.sqrt(x**2 + y**2 + z**2)
-    k = _boussinesq_kernels(x, y, z, r, nu)
-    return _field_from([k[i] + z * k[i + 6] for i in range(6)], load)
+    return _point_load(x, y, z, load, poisson_ratio, _boussinesq_kernels)
 
 
 @cites("johnson_1985")
@@ -177,10 +183,7 @@ def cerruti(x, y, z, load, poisson_ratio):
 
     Parameters
     ----------
-    x, y : array_like
-        Position relative to the load along the surface [m].
-    z : array_like
-        Depth below the surface [m], > 0.
+    x, y, z : as in :func:`boussinesq` (position along the surface [m], depth [m] > 0)
     load : float
         Tangential load Q [N] along +x.
     poisson_ratio : float
@@ -191,14 +194,7 @@ def cerruti(x, y, z, load, poisson_ratio):
     StressField
         E.g. sigma_xz = -3 Q x² z / (2 pi R⁵) (Johnson section 3.3 in [3]_).
     """
-    x, y, z = _points(x, y, z)
-    if np.any(z <= 0):
-        raise InputError("z must be > 0 [m] for a point load (the surface point itself is singular).")
-    nu = _poisson(poisson_ratio)
-    load = float(as_array(load, "load", "N"))
-    r = np.sqrt(x**2 + y**2 + z**2)
-    k = _cerruti_kernels(x, y, z, r, nu)
-    return _field_from([k[i] + z * k[i + 6] for i in range(6)], load)
+    return _point_load(x, y, z, load, poisson_ratio, _cerruti_kernels)
 
 
 # --- pressures ------------------------------------------------------------------------------------

@@ -323,7 +323,7 @@ def rms_height(z):
     Parameters
     ----------
     z : array_like or Profile
-        Heights [m].
+        Heights [m], as in :func:`arithmetic_mean_height`.
 
     Returns
     -------
