@@ -89,7 +89,7 @@ def test_mesh_stages(small_run):
     assert loads["energy_dissipated"][1] > loads["energy_dissipated"][0]  # more load, more dissipation (4.9.3)
     single = summaries["sliding"]["single"]
     # thesis 2.6.2: one nanoblock on a flat, COF constant in time; the split adds up
-    assert single["cof"] == pytest.approx(single["cof_chemical"] + single["cof_vdw"] + single["cof_elastic"],
+    assert single["cof_mean"] == pytest.approx(single["cof_chemical"] + single["cof_vdw"] + single["cof_elastic"],
                                           rel=1e-9)
     assert single["fraction_chemical"] + single["fraction_vdw"] + single["fraction_elastic"] == pytest.approx(1)
     # a coating forms no chemical bonds: less friction than bare silicon (thesis 5.4)

@@ -72,7 +72,7 @@ def test_wear_outside_zero_one(bad):
 def _sweep(margins, cofs=None):
     wear = np.linspace(0, 1, len(margins))
     cofs = np.linspace(0.2, 0.8, len(margins)) if cofs is None else cofs
-    return xr.Dataset({"stiction_margin": ("wear", np.asarray(margins, float)), "cof": ("wear", cofs)},
+    return xr.Dataset({"stiction_margin": ("wear", np.asarray(margins, float)), "cof_mean": ("wear", cofs)},
                       coords={"wear": wear})
 
 
@@ -123,8 +123,8 @@ def test_wear_one_equals_the_bare_mesh(params, ots_sweep):
 
     bare = mesh.summarize(mesh.simulate_mesh(params, steps=STEPS))
     last = ots_sweep.sel(wear=1.0)
-    assert float(last["cof"]) == bare["cof_mean"]
-    assert float(last["friction_force"]) == bare["resisting_force_max"]
+    assert float(last["cof_mean"]) == bare["cof_mean"]
+    assert float(last["resisting_force_max"]) == bare["resisting_force_max"]
     assert float(last["stiction_margin"]) == bare["stiction_margin"]
     assert float(last["cof_chemical"]) == bare["cof_chemical"]
 
@@ -132,25 +132,28 @@ def test_wear_one_equals_the_bare_mesh(params, ots_sweep):
 def test_cli_wear_one_equals_cli_mesh(cli):
     coated = cli.json("coating", "--wear", "1", "--steps", str(STEPS))
     bare = cli.json("mesh", "--steps", str(STEPS))
-    assert coated["cof"] == bare["cof_mean"]
+    assert coated["cof_mean"] == bare["cof_mean"]
     assert coated["stiction_margin"] == bare["stiction_margin"]
     assert coated["tangential_force"] == bare["tangential_force"]
 
 
 def test_coated_cof_below_bare_at_every_wear(ots_sweep):
-    cof = ots_sweep["cof"].values
+    cof = ots_sweep["cof_mean"].values
     assert np.all(cof[:-1] < cof[-1])
     assert ots_sweep["cof_chemical"].values[0] == 0.0  # a fully coated pair forms no chemical bonds
     assert ots_sweep["cof_chemical"].values[-1] > 0  # bare silicon does
 
 
 def test_sweep_invariants(ots_sweep):
-    assert np.all(ots_sweep["cof"].values >= 0)
+    assert np.all(ots_sweep["cof_mean"].values >= 0)
     margin = ots_sweep["stiction_margin"].values
     stiction = ots_sweep["stiction"].values.astype(bool)
     np.testing.assert_array_equal(stiction, margin < 0)  # stiction only where F_f reaches F_t
-    for name, (unit, _) in __import__("memstribo.simulations.coating_wear", fromlist=["x"]).SWEEP_VARIABLES.items():
-        assert ots_sweep[name].attrs["units"] == unit and ots_sweep[name].attrs["long_name"]
+    from memstribo.quantities import quantity
+    from memstribo.simulations.coating_wear import SWEEP_VARIABLES
+
+    for name in SWEEP_VARIABLES:  # the names and units of the meshing cycle's summary (one vocabulary)
+        assert ots_sweep[name].attrs == {"units": quantity(name).unit, "long_name": quantity(name).long_name}
 
 
 def test_calibrated_ots_gives_the_thesis_cof(params):
@@ -159,7 +162,7 @@ def test_calibrated_ots_gives_the_thesis_cof(params):
 
     # at the thesis's reference conditions: its load case (25 uN) and its full-energy vdW band
     reference = params.updated({"load_case": "thesis", "interface_model": "thesis"})
-    cof = float(wear_sweep(reference, "OTS", [0.0])["cof"][0])
+    cof = float(wear_sweep(reference, "OTS", [0.0])["cof_mean"][0])
     # the mesh's default steps; tolerance 0.01 leaves room for small changes of the mesh model
     assert cof == pytest.approx(0.185, abs=0.01)
 
@@ -169,13 +172,13 @@ def test_calibration_reaches_its_target(params):
 
     calibrated, record = calibrate_vdw_bond_energy(params, "OTS", 0.25, steps=STEPS)
     assert record["converged"] and record["cof_after"] == pytest.approx(0.25, rel=1e-3)
-    assert float(wear_sweep(params, calibrated, [0.0], steps=STEPS)["cof"][0]) == pytest.approx(0.25, rel=1e-3)
+    assert float(wear_sweep(params, calibrated, [0.0], steps=STEPS)["cof_mean"][0]) == pytest.approx(0.25, rel=1e-3)
 
 
 def test_cli_table_and_json_points(cli, tmp_path):
     out = cli.json("coating", "--wear", "0,1", "--steps", str(STEPS), "--out", tmp_path)
     assert out["coating"] == "OTS" and [p["wear"] for p in out["points"]] == [0.0, 1.0]
-    assert set(out["points"][0]) == {"wear", "cof", "cof_chemical", "cof_vdw", "cof_elastic", "friction_force",
+    assert set(out["points"][0]) == {"wear", "cof_mean", "cof_chemical", "cof_vdw", "cof_elastic", "resisting_force_max",
                                      "tangential_force", "stiction", "stiction_margin"}
     for name in ("coating_wear.nc", "coating_wear.csv", "cof_vs_wear.png", "cof_vs_wear.svg",
                  "friction_vs_tangential.png"):
@@ -205,4 +208,4 @@ def test_coatings_are_parameter_sets_reached_by_set_and_config(cli, tmp_path):
     assert read_back["vdw_bond_energy"] == pytest.approx(record["vdw_bond_energy_after"], rel=1e-12)
     # the calibrated coating gives the target COF through the config file
     coated = cli.json("coating", "--wear", "0", "--steps", "11", "--config", target)
-    assert coated["cof"] == pytest.approx(0.3, rel=2e-3)
+    assert coated["cof_mean"] == pytest.approx(0.3, rel=2e-3)

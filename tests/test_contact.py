@@ -223,7 +223,7 @@ def test_bad_input(kwargs, match):
 # ------------------------------------------------------------------------------------------ CLI
 
 KEYS = {"contact_length", "max_pressure", "mean_pressure", "load", "approach", "converged", "iterations",
-        "residual", "solve_time"}
+        "residual", "solve_seconds"}
 
 
 def test_cli_flat_matches_hertz(cli):

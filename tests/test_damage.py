@@ -203,7 +203,7 @@ def test_stiction_only_when_friction_reaches_tangential_force(params):
     from memstribo.physics.damage import run_damage
 
     p = params.updated({"damage_coefficient": 1e-16})
-    sweep = xr.Dataset({"cof": ("wear", [0.2, 0.5, 0.8]), "stiction_margin": ("wear", [1e-3, 5e-4, -5e-4])},
+    sweep = xr.Dataset({"cof_mean": ("wear", [0.2, 0.5, 0.8]), "stiction_margin": ("wear", [1e-3, 5e-4, -5e-4])},
                        coords={"wear": [0.0, 0.5, 1.0]})
     outcome = run_damage(p, loads=TABLE_5_1_LOADS, wear_sweep=sweep, figures=False)
     s = outcome.summary

@@ -246,7 +246,7 @@ def test_coating_wear_one_equals_bare_and_zero_has_no_chemical_bonds(params, bas
     for name in ("friction_force", "adhesion_force", "cof", "energy_chemical", "block_load"):
         np.testing.assert_array_equal(worn[name].values, bare[name].values)
     fresh = simulate_mesh(params, steps=STEPS, coating=ots, wear=0.0)
-    assert np.all(fresh.chemical_bonds.values == 0)
+    assert np.all(fresh.bonds_chemical.values == 0)
     assert summarize(fresh)["cof_mean"] < summarize(bare)["cof_mean"]
     half = simulate_mesh(params, steps=STEPS, coating=ots, wear=0.5)
     # more worn coating, more chemical dissipation (monotone in Omega)

@@ -22,6 +22,7 @@ import xarray as xr
 import memstribo
 from memstribo.output import provenance_attributes, udunits, write_dataset
 from memstribo.parameters import SPECS, get_parameter_values
+from memstribo.quantities import known, quantity
 
 REPO = Path(__file__).resolve().parent.parent
 SCAN = REPO / "data" / "afm" / "si_profile_linescan.txt"
@@ -82,6 +83,7 @@ def test_every_file_of_a_run_carries_provenance(run_folder):
     assert {f"data/{p.name}" for p in netcdf + csv} <= listed
     assert len(netcdf) >= 11 and len(csv) >= 10
     scan_sha = hashlib.sha256(SCAN.read_bytes()).hexdigest()
+    unknown = []
     for path in netcdf:
         with xr.open_dataset(path) as dataset:
             attrs = dict(dataset.attrs)
@@ -92,6 +94,12 @@ def test_every_file_of_a_run_carries_provenance(run_folder):
                 if variable.dtype.kind in "fiub":
                     assert is_udunits(variable.attrs.get("units", "")), \
                         f"{label}: units {variable.attrs.get('units')!r} are not UDUNITS"
+                # one vocabulary (#11 item 3): every name is defined in memstribo.quantities, with its unit
+                if not known(str(name)):
+                    unknown.append(label)
+                elif variable.dtype.kind in "fiub" and quantity(str(name)).unit:
+                    assert variable.attrs["units"] == quantity(str(name)).unit, label
+    assert not unknown, f"names the vocabulary (memstribo.quantities) does not know: {unknown}"
 
 
 def _check_global_attributes(name, attrs, start, end, scan_sha):
@@ -180,7 +188,7 @@ def test_write_dataset_normalises_units_and_keeps_the_input(tmp_path):
     nc, csv = write_dataset(dataset, tmp_path, "t", provenance=provenance)
     assert dataset["cof"].attrs == {"units": ""} and "Conventions" not in dataset.attrs  # input untouched
     again = xr.load_dataset(nc)
-    assert again["cof"].attrs == {"units": "1", "long_name": "cof"}
+    assert again["cof"].attrs == {"units": "1", "long_name": "coefficient of friction"}  # from the vocabulary
     assert again["damage"].attrs["units"] == "Pa" and again["flag"].attrs["units"] == "1"
     assert again.attrs["coating"] == "OTS" and again.attrs["intact"] == 1 and json.loads(again.attrs["note"]) == {"a": 1}
     assert again.attrs["roughness_file_sha256"] == hashlib.sha256(SCAN.read_bytes()).hexdigest()

@@ -51,9 +51,9 @@ def test_single_model(params_m):
     assert np.ptp(ds["cof"].values) == 0 and ds.sizes["step"] == 101
     assert np.all(ds["energy_elastic"].values == 0)
     summary = sliding.summarize(ds)
-    assert summary.cof == pytest.approx(0.5752, abs=5e-4)
+    assert summary.cof_mean == pytest.approx(0.5752, abs=5e-4)
     assert summary.energy_vdw / summary.energy_chemical == pytest.approx(1.0051, abs=1e-4)
-    assert summary.normal_force == pytest.approx(25e-6, rel=1e-12)
+    assert summary.normal_force_mean == pytest.approx(25e-6, rel=1e-12)
     # 25 uN on one atomic block: past the threshold, rigid (MODEL §4)
     assert ds["atomic_rigid"].values.all()
     # with the thesis's bond count, the vdW loss is 7 % below the chemical loss (2.6.2)
@@ -71,7 +71,7 @@ def test_fixed_load(fixed_load):
     assert summary.fraction_chemical > 0.6
     assert summary.fraction_elastic < 0.01
     assert summary.fraction_vdw == pytest.approx(1 - summary.fraction_chemical - summary.fraction_elastic)
-    assert summary.friction_force == pytest.approx(sum(getattr(summary, e) for e in ENERGIES) / 2e-6, rel=1e-12)
+    assert summary.friction_force_mean == pytest.approx(sum(getattr(summary, e) for e in ENERGIES) / 2e-6, rel=1e-12)
 
 
 def test_fixed_gap(fixed_gap, params_m):
@@ -151,18 +151,19 @@ def test_bad_input(params_m):
         sliding.slide_fixed_load(params_m.updated({"atomic_pitch": "100 nm"}), distance=1e-8)
 
 
-KEYS = {"cof", "cof_chemical", "cof_vdw", "cof_elastic", "friction_force", "adhesion_force", "normal_force",
+KEYS = {"cof_mean", "cof_chemical", "cof_vdw", "cof_elastic", "friction_force_mean", "adhesion_force_mean",
+        "normal_force_mean", "sliding_distance",
         "energy_chemical", "energy_vdw", "energy_elastic"}
 
 
 def test_cli_json(cli):
     out = cli.json("slide", "--model", "fixed-load", "--distance", "0.5 um", "--load", "25 uN")
     assert KEYS <= set(out) and "load_residual" in out
-    assert out["normal_force"] == pytest.approx(25e-6)
+    assert out["normal_force_mean"] == pytest.approx(25e-6)
     gap = cli.json("slide", "--model", "fixed-gap", "--distance", "0.5 um", "--gap", "1 nm")
     assert KEYS <= set(gap) and "load_residual" not in gap
     single = cli.json("slide", "--model", "single")
-    assert single["cof"] == pytest.approx(0.5752, abs=5e-4)
+    assert single["cof_mean"] == pytest.approx(0.5752, abs=5e-4)
     estimate = cli.json("slide", "--model", "estimate")
     assert estimate["thesis_inputs_cof"] == pytest.approx(0.8142, abs=5e-5)
     assert estimate["cof"] == pytest.approx(0.9599, abs=5e-4)

@@ -139,14 +139,16 @@ class MeshCycle:
         import numpy as np
         import xarray as xr
 
+        from memstribo.quantities import attrs as quantity_attrs
+
         dataset = self.dataset.copy()
         if self.ensemble:
             rows = self.ensemble["per_realisation"]
             index = np.array([r["realisation"] for r in rows])
-            for key, unit in (("stiction_margin", "N"), ("cof_mean", "1"), ("mesh_efficiency", "1")):
+            for key in ("stiction_margin", "cof_mean", "mesh_efficiency"):  # the ensemble's spread, by realisation
                 dataset[f"realisation_{key}"] = xr.DataArray(
                     np.array([r[key] for r in rows], dtype=float), dims="realisation", coords={"realisation": index},
-                    attrs={"units": unit, "long_name": f"{key.replace('_', ' ')} of each roughness realisation"})
+                    attrs=quantity_attrs(f"realisation_{key}"))
             dataset.attrs["ensemble"] = json.dumps({k: v for k, v in self.ensemble.items() if k != "per_realisation"})
         return dataset
 
@@ -216,7 +218,7 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     import xarray as xr
 
     from memstribo.physics.coating import get_coating
-    from memstribo.simulations.mesh import SUMMARY_UNITS
+    from memstribo.quantities import attrs as quantity_attrs
     from memstribo.simulations.mesh import sweep as mesh_sweep
     from memstribo.units import to_si
 
@@ -231,9 +233,8 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     dim = {"load": "normal_load", "torque": "drive_torque", "area": "area_multiple"}[parameter]
     keys = [k for k, v in points[0].items() if k != dim and isinstance(v, (int, float)) and not isinstance(v, bool)]
     data = {k: (dim, np.array([p[k] for p in points], dtype=float),
-                {"units": SUMMARY_UNITS.get(k, "") or "1", "long_name": k.replace("_", " ")}) for k in keys}
-    data["stiction"] = (dim, np.array([bool(p["stiction"]) for p in points]), {"units": "1",
-                                                                              "long_name": "stiction (R > F_t)"})
+                quantity_attrs(k)) for k in keys}
+    data["stiction"] = (dim, np.array([bool(p["stiction"]) for p in points]), quantity_attrs("stiction"))
     coordinate = np.array([p[dim] for p in points], dtype=float)
     return xr.Dataset(data, coords={dim: (dim, coordinate, {"units": units[parameter] or "1",
                                                             "long_name": dim.replace("_", " ")})},

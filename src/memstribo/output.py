@@ -313,10 +313,16 @@ _FIXED = ("Conventions", "date_created", "history", "memstribo_version")
 def cf_dataset(dataset, provenance: Mapping[str, Any] | None = None):
     """A copy of ``dataset`` with CF attributes: UDUNITS ``units``, a ``long_name`` on every
     variable, and ``provenance`` (or the minimal :func:`provenance_attributes`) as global attributes."""
+    from memstribo.quantities import known, quantity
+
     dataset = dataset.copy(deep=False)
     for name in list(dataset.variables):
         variable = dataset.variables[name]
         attrs = dict(variable.attrs)
+        if known(str(name)):  # the vocabulary's unit and long name where the variable has none
+            attrs.setdefault("units", quantity(str(name)).unit)
+            if not str(attrs.get("long_name", "")).strip():
+                attrs["long_name"] = quantity(str(name)).long_name
         if variable.dtype.kind in "fiucb":
             attrs["units"] = udunits(attrs.get("units"))
         elif "units" in attrs:
@@ -429,6 +435,7 @@ def format_quantity(value: float, unit: str = "") -> str:
     """``2.5e-05, "N"`` -> ``"25 uN"``: a number with an engineering prefix and its unit."""
     if value is None:
         return "-"
+    unit = "" if unit == "1" else unit  # CF's dimensionless unit reads as a plain number
     if isinstance(value, str):
         return value
     if isinstance(value, (bool, np.bool_)):

@@ -74,6 +74,4 @@ def run(args, params):
     if contact.contact_radius > params["asperity_half_width"]:
         notes.append(f"  warning: the contact radius exceeds the asperity half width "
                      f"{params['asperity_half_width'] * 1e9:g} nm; the power-law shape no longer describes the block")
-    units = {"block_load": "N", "asperity_loads": "N", "shares": "", "contact_radius": "m", "approach": "m",
-             "max_pressure": "Pa", "max_pressure_radius": "m", "mean_pressure": "Pa"}
-    return CommandResult(values=values, units=units, title="power-law asperity contact", notes=notes)
+    return CommandResult(values=values, title="power-law asperity contact", notes=notes)

@@ -49,6 +49,7 @@ def parse_wear_list(text) -> list[float]:
 
 def run(args, params):
     from memstribo.physics.coating import get_coating
+    from memstribo.quantities import unit
     from memstribo.simulations.coating_wear import SWEEP_VARIABLES, wear_sweep
     from memstribo.errors import InputError
 
@@ -62,7 +63,6 @@ def run(args, params):
     if args.steps is not None and args.steps < 2:
         raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
     sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=progress_enabled(args))
-    units = {key: unit for key, (unit, _) in SWEEP_VARIABLES.items()}
     points = []
     for i, w in enumerate(wears):
         point = {"wear": w}
@@ -81,7 +81,7 @@ def run(args, params):
             "models": "memstribo.simulations.coating_wear.wear_sweep (thesis 5.4, 5.5.3)"})
         notes.extend(_write_outputs(sweep, coating, args.out, provenance))
     if len(points) == 1:
-        return CommandResult(values={"coating": coating.name, **points[0]}, units={"wear": "", **units},
+        return CommandResult(values={"coating": coating.name, **points[0]},
                              title=f"{coating.name}-coated teeth at wear Omega = {wears[0]:g}", notes=notes)
     if args.json:
         return CommandResult(values={"coating": coating.name, "points": points})
@@ -89,7 +89,7 @@ def run(args, params):
     width = max(len(k) for k in keys) + 2
     lines = ["  " + "".join(f"{k:>{width}}" for k in keys)]
     for point in points:
-        lines.append("  " + "".join(f"{format_value(point[k], units.get(k, '')):>{width}}" for k in keys))
+        lines.append("  " + "".join(f"{format_value(point[k], unit(k)):>{width}}" for k in keys))
     return CommandResult(values={}, title=f"{coating.name}-coated teeth over wear states Omega",
                          notes=lines + notes)
 
@@ -100,7 +100,7 @@ def _write_outputs(sweep, coating, folder, provenance=None) -> list[str]:
     written = write_dataset(sweep, folder, "coating_wear", provenance=provenance)
     wear = sweep["wear"].values * 100
     fig, ax = new_figure(figsize=(5, 3.5))
-    ax.plot(wear, sweep["cof"].values, "o-", label="total")
+    ax.plot(wear, sweep["cof_mean"].values, "o-", label="total")
     for key, label in (("cof_chemical", "chemical"), ("cof_vdw", "vdW"), ("cof_elastic", "elastic")):
         ax.plot(wear, sweep[key].values, ".--", label=label)
     ax.set_xlabel("worn fraction of the gear's coating Omega [%]")
@@ -109,7 +109,7 @@ def _write_outputs(sweep, coating, folder, provenance=None) -> list[str]:
     ax.legend()
     written += save_figure(fig, folder, "cof_vs_wear")
     fig, ax = new_figure(figsize=(5, 3.5))
-    ax.plot(wear, sweep["friction_force"].values * 1e3, "o-", label="friction force F_f")
+    ax.plot(wear, sweep["resisting_force_max"].values * 1e3, "o-", label="largest resisting force R")
     ax.plot(wear, sweep["tangential_force"].values * 1e3, "k--", label="tangential force F_t")
     ax.set_xlabel("worn fraction of the gear's coating Omega [%]")
     ax.set_ylabel("force [mN]")
@@ -128,7 +128,6 @@ def _calibrate(args, params, coating):
     values = {"coating": coating.name, "target_cof": args.calibrate, **record,
               "factor": record["vdw_bond_energy_after"] / record["vdw_bond_energy_before"],
               "load_case": params["load_case"], "interface_model": params["interface_model"]}
-    units = {}  # U_vdW [J] printed as plain numbers: 6.863e-22 reads better than 0.0006863 aJ
     note = (f"calibrated to COF {args.calibrate:g} at Omega = 0 by 'memstribo coating --calibrate' (load case "
             f"{params['load_case']}, interface model {params['interface_model']})")
     if args.out:
@@ -139,4 +138,4 @@ def _calibrate(args, params, coating):
     else:
         notes = [f"  calibrated vdw_bond_energy = {calibrated.vdw_bond_energy:.4g} J; '--out FILE' writes it as a "
                  "config file that --config FILE reads back"]
-    return CommandResult(values=values, units=units, title=f"calibration of {coating.name}'s U_vdW", notes=notes)
+    return CommandResult(values=values, title=f"calibration of {coating.name}'s U_vdW", notes=notes)

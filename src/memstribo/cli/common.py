@@ -55,7 +55,8 @@ class CommandResult:
     values : dict
         Keys and SI values, exactly what ``--json`` prints.
     units : dict
-        SI unit of each key (``""`` for dimensionless); used for readable output.
+        Units of keys whose unit is not the registry's (memstribo.quantities), e.g. a unit that depends on an
+        input; every other key takes its unit from the registry (:meth:`unit_of`).
     title : str
         Heading of the readable output.
     notes : list of str
@@ -79,11 +80,19 @@ class CommandResult:
         found += [w for w in self.warnings if w not in found]
         return {**self.values, "warnings": found}
 
+    def unit_of(self, key: str) -> str:
+        """The key's unit: the command's own where it gives one, else the vocabulary's ('' if unknown)."""
+        if key in self.units:
+            return self.units[key]
+        from memstribo.quantities import known, unit
+
+        return unit(key) if known(key) else ""
+
     def to_text(self) -> str:
         lines = [self.title] if self.title else []
         width = max((len(k) for k in self.values), default=0)
         for key, value in self.values.items():
-            lines.append(f"  {key:<{width}}  {format_value(value, self.units.get(key, ''))}")
+            lines.append(f"  {key:<{width}}  {format_value(value, self.unit_of(key))}")
         lines.extend(self.notes)
         shown = set(self.values.get("warnings") or [])
         lines.extend(f"  WARNING: {w}." for w in self.warnings if w not in shown)

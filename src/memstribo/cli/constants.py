@@ -8,22 +8,6 @@ NAME = "constants"
 HELP = "Lennard-Jones, adhesion and bond constants of the material (sigma, epsilon, E*, w, C_NS, pull-off force)"
 ORDER = 20
 
-_UNITS = {
-    "sigma": "m",
-    "epsilon": "J",
-    "contact_modulus": "Pa",
-    "work_of_adhesion": "J/m^2",
-    "no_slip_coefficient": "",
-    "pull_off_force_block": "N",
-    "half_width": "m",
-    "maugis_stress": "Pa",
-    "maugis_range": "m",
-    "bond_energy_chemical": "J",
-    "bond_energy_vdw": "J",
-    "bond_length": "m",
-}
-
-
 def register(subparsers, parents):
     parser = subparsers.add_parser(
         NAME, parents=parents, help=HELP, description=HELP + ". Values follow the parameter set, so "
@@ -71,4 +55,4 @@ def run(args, params):
         "pull-off force sqrt(8 pi w E* C_NS a^3) (3-32)",
         "  Maugis-Dugdale: sigma0 = 16 w / (9 sqrt(3) D0), h0 = w / sigma0 (3-17)",
     ]
-    return CommandResult(values=values, units=_UNITS, title=f"nanoscale constants ({params.name})", notes=notes)
+    return CommandResult(values=values, title=f"nanoscale constants ({params.name})", notes=notes)

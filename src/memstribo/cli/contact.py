@@ -140,10 +140,8 @@ def run(args, params):
         "converged": solution.converged,
         "iterations": solution.iterations,
         "residual": solution.residual,
-        "solve_time": solution.solve_time,
+        "solve_seconds": solution.solve_time,
     }
-    units = {"contact_length": "m", "max_pressure": "Pa", "mean_pressure": "Pa", "load": "N/m", "approach": "m",
-             "converged": "", "iterations": "", "residual": "", "solve_time": "s"}
     a = float(hertz_line_half_width(load, radius, modulus))
     p0 = float(hertz_line_peak_pressure(load, radius, modulus))
     notes = [
@@ -154,7 +152,7 @@ def run(args, params):
         "(docs/contact.md)." if not args.periodic else "  approach relative to a zero mean elastic displacement.",
         f"  solver: {solution.message}.",
     ]
-    return CommandResult(values=values, units=units, title="line contact (plane strain, per unit face width)",
+    return CommandResult(values=values, title="line contact (plane strain, per unit face width)",
                          notes=notes)
 
 
@@ -211,7 +209,6 @@ def run_adhesion(args, params):
     radius = _positive(args.radius, "m", "--radius") if args.radius is not None else radius
     lam = float(maugis_line_parameter(radius, modulus, w, sigma0))
     law = {"cohesive_stress": sigma0, "cohesive_range": h0, "work_of_adhesion": w, "maugis_parameter": lam}
-    law_units = {"cohesive_stress": "Pa", "cohesive_range": "m", "work_of_adhesion": "J/m^2", "maugis_parameter": ""}
     law_note = (f"  Maugis-Dugdale law: sigma0 = {sigma0 / 1e9:.4g} GPa over h0 = {h0 * 1e9:.4g} nm "
                 f"(w = {w:.4g} J/m^2); "
                 f"Maugis parameter lambda = 2 sigma0 (R/(pi w E*^2))^(1/3) = {lam:.3g} (R = {radius * 1e6:.4g} um, "
@@ -236,16 +233,13 @@ def run_adhesion(args, params):
                   **law, "maugis_dugdale_pull_off_line_load": -reference,
                   "maugis_dugdale_pull_off_half_width": reference_width, "jkr_pull_off_line_load": jkr,
                   "unloading_steps": int(len(result.curve.load) - 1), "converged": result.converged}
-        units = {"pull_off_line_load": "N/m", "pull_off_half_width": "m", **law_units,
-                 "maugis_dugdale_pull_off_line_load": "N/m", "maugis_dugdale_pull_off_half_width": "m",
-                 "jkr_pull_off_line_load": "N/m", "unloading_steps": "", "converged": ""}
         notes = [law_note,
                  f"  smooth cylinder, {args.points} elements over {result.length * 1e9:.4g} nm, "
                  f"{'periodic' if args.periodic else 'free-boundary'} half-plane; unloaded under approach control.",
                  f"  closed forms: Maugis-Dugdale cylinder (Baney & Hui 1997) {-reference:.4g} N/m, JKR line contact "
                  f"(3/4)(4 pi E* w^2 R)^(1/3) = {jkr:.4g} N/m.",
                  f"  {result.message}."]
-        return CommandResult(values=values, units=units, title="adhesive line contact: pull-off (per unit face width)",
+        return CommandResult(values=values, title="adhesive line contact: pull-off (per unit face width)",
                              notes=notes)
 
     from memstribo.physics.contact import solve_line_contact
@@ -287,15 +281,12 @@ def run_adhesion(args, params):
         "converged": solution.converged,
         "iterations": solution.iterations,
         "residual": solution.residual,
-        "solve_time": solution.solve_time,
+        "solve_seconds": solution.solve_time,
     }
-    units = {"contact_length": "m", "cohesive_length": "m", "adhesive_load": "N/m", "load": "N/m",
-             "max_pressure": "Pa", "min_pressure": "Pa", "approach": "m", **law_units, "converged": "",
-             "iterations": "", "residual": "", "solve_time": "s"}
     notes = [f"  {label}; {'periodic' if args.periodic else 'free-boundary'} half-plane.", law_note,
              "  load = compressive load of the contact - adhesive_load (the tension of the cohesive zone outside it).",
              f"  solver: {solution.message}."]
-    return CommandResult(values=values, units=units,
+    return CommandResult(values=values,
                          title="adhesive line contact (Maugis-Dugdale, per unit face width)", notes=notes)
 
 
@@ -417,8 +408,6 @@ def run_surface(args, params):
         "residual": solution.residual,
         "solve_seconds": solution.solve_time,
     }
-    units = {"contact_fraction": "", "max_pressure": "Pa", "mean_gap": "m", "approach": "m", "iterations": "",
-             "residual": "", "solve_seconds": "s"}
     notes = [
         f"  {label}; {'periodic' if args.periodic else 'free-boundary'} half-space, E* = {modulus / 1e9:.4g} GPa, "
         f"load {solution.load:.4g} N (mean pressure {solution.load / (heights.size * dx * dy) / 1e6:.4g} MPa).",
@@ -429,7 +418,7 @@ def run_surface(args, params):
     if args.out:
         written = write_surface_outputs(solution, args.out)
         notes.append("  wrote " + ", ".join(str(path) for path in written))
-    return CommandResult(values=values, units=units, title="surface contact (elastic half-space, flat counter face)",
+    return CommandResult(values=values, title="surface contact (elastic half-space, flat counter face)",
                          notes=notes)
 
 

@@ -74,12 +74,11 @@ def run(args, params):
         "map_csv": str(result.folder / "map.csv"),
         "figures": [str(p) for p in result.figures],
     }
-    units = {"elapsed": "s"}
     notes = list(result.notes)
     if result.n_retried:
         notes.append(f"  reran {result.n_retried} point(s) that had failed in an earlier run")
     notes += [f"  failed point {pid}: {message}" for pid, message in list(result.errors.items())[:10]]
     if result.n_failed > 10:
         notes.append(f"  ... and {result.n_failed - 10} more (see the 'error' variable of map.nc)")
-    return CommandResult(values=values, units=units, title=f"design map '{spec.name}'", notes=notes,
+    return CommandResult(values=values, title=f"design map '{spec.name}'", notes=notes,
                          exit_status=1 if result.n_failed else 0)

@@ -8,10 +8,6 @@ NAME = "nanoblock"
 HELP = "nanoblock geometry: from the parameter set, or derived from a measured profile (--from PATH)"
 ORDER = 11
 
-_UNITS = {"atomic_width": "m", "atomic_height": "m", "adhesive_width": "m", "adhesive_height": "m",
-          "atomic_pitch": "m", "bulk_height": "m"}
-
-
 def register(subparsers, parents):
     parser = subparsers.add_parser(
         NAME, parents=parents, help=HELP,
@@ -54,4 +50,4 @@ def run(args, params):
     if not args.json:
         values.pop("rules")
         notes = ["rules:"] + [f"  {key}: {rule}" for key, rule in rules.items()] + notes
-    return CommandResult(values=values, units=_UNITS, title=title, notes=notes)
+    return CommandResult(values=values, title=title, notes=notes)

@@ -9,10 +9,6 @@ HELP = "roughness parameters (Ra, Rq, rms slope, lambda_q, ...) of an AFM/profil
 ORDER = 10
 
 _KEYS = ("Ra", "Rq", "Rsk", "Rku", "Rp", "Rv", "Rz", "rms_slope", "lambda_q", "n_points", "sample_spacing", "length")
-_UNITS = {"Ra": "m", "Rq": "m", "Rp": "m", "Rv": "m", "Rz": "m", "lambda_q": "m", "sample_spacing": "m",
-          "length": "m", "dy": "m", "Sa": "m", "Sq": "m", "Sp": "m", "Sv": "m", "Sz": "m", "Rq_std": "m"}
-
-
 def register(subparsers, parents):
     parser = subparsers.add_parser(
         NAME, parents=parents, help=HELP,
@@ -118,4 +114,4 @@ def run(args, params):
             saved = profile
         values["saved_profile"] = str(write_profile(saved, args.save_profile))
         notes.append(f"profile written to {values['saved_profile']} ({saved.name})")
-    return CommandResult(values=values, units=_UNITS, title=f"roughness of {surface.name}", notes=notes)
+    return CommandResult(values=values, title=f"roughness of {surface.name}", notes=notes)

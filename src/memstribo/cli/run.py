@@ -109,9 +109,6 @@ def run(args, params):
               "stages": {s.name: s.status for s in result.stages}, "failed_stages": failed, **result.verdict}
     if args.resume:
         values["kept_stages"] = list(result.kept)
-    units = {"elapsed": "s", "tangential_force": "N", "bare_resisting_force_max": "N", "bare_stiction_margin": "N",
-             "coated_resisting_force_max": "N", "coated_stiction_margin": "N", "bare_stiction_margin_median": "N",
-             "bare_stiction_margin_p05": "N", "bare_stiction_margin_p95": "N"}
     notes = [f"  {s.name}: {s.status}{' - ' + s.message if s.message else ''}" for s in result.stages
              if s.status != "done" or s.message]
     if args.resume:
@@ -119,7 +116,7 @@ def run(args, params):
     notes.append(f"  open {result.folder / 'report.html'} in a browser")
     if failed:
         notes.append(f"  {len(failed)} requested stage(s) did not finish: exit status 1")
-    return CommandResult(values=values, units=units, title="memstribo run: the thesis case end to end", notes=notes,
+    return CommandResult(values=values, title="memstribo run: the thesis case end to end", notes=notes,
                          exit_status=1 if failed else 0)
 
 

@@ -99,7 +99,7 @@ def run(args, params):
             "command": f"memstribo slide --model {args.model}", "models": f"memstribo.simulations.sliding.slide ({args.model})",
             **({} if roughness else {"roughness_provenance": "none: a nanoblock on a flat"})})
         notes += [f"  wrote {path}" for path in _write(dataset, args.out, provenance)]
-    return CommandResult(values=values, units=sliding.UNITS, title=f"memstribo slide --model {args.model}",
+    return CommandResult(values=values, title=f"memstribo slide --model {args.model}",
                          notes=notes)
 
 
@@ -116,20 +116,18 @@ def _estimate(args, params):
     values = {
         "cof": ours.cof, "cof_chemical": ours.cof_chemical, "cof_vdw": ours.cof_vdw, "cof_elastic": 0.0,
         "friction_force": ours.friction_force, "adhesion_force": ours.adhesion_force,
-        "normal_force": ours.load, "chemical_bonds_per_block": ours.chemical_bonds,
-        "vdw_bonds_per_block": ours.vdw_bonds, "chemical_energy_per_block": ours.chemical_energy_per_block,
-        "vdw_energy_per_block": ours.vdw_energy_per_block, "pull_off_force_block": ours.pull_off_force_block,
+        "normal_force": ours.load, "bonds_chemical_per_block": ours.chemical_bonds,
+        "bonds_vdw_per_block": ours.vdw_bonds, "energy_chemical_per_block": ours.chemical_energy_per_block,
+        "energy_vdw_per_block": ours.vdw_energy_per_block, "pull_off_force_block": ours.pull_off_force_block,
         "blocks": ours.blocks,
         "thesis_inputs_cof": printed.cof, "thesis_inputs_friction_force": printed.friction_force,
         "thesis_counts_cof": counts.cof,
     }
-    units = {"friction_force": "N", "adhesion_force": "N", "normal_force": "N", "chemical_energy_per_block": "J",
-             "vdw_energy_per_block": "J", "pull_off_force_block": "N", "thesis_inputs_friction_force": "N"}
     notes = ["  first principles with this parameter set; thesis_inputs_*: from the values printed in 3.5",
              "  (n = 9, N_chem U_chem = 4e-15 J, N_vdW U_vdW = 3.73e-15 J, F_adh = 3.386e-4 N, F_ext = 25 uN);",
              "  thesis_counts_cof: the same with N_chem U_chem = 7388.6 x 5.42e-19 J, N_vdW U_vdW = 688546.8 x",
              "  5.42e-21 J unrounded. The thesis prints 0.82. See docs/friction.md for why the values differ."]
-    return CommandResult(values=values, units=units, title="memstribo slide --model estimate (thesis 3.5)",
+    return CommandResult(values=values, title="memstribo slide --model estimate (thesis 3.5)",
                          notes=notes)
 
 

@@ -133,16 +133,14 @@ def _write(parameter, points, folder, provenance=None, critical=None) -> list[st
     import numpy as np
     import xarray as xr
 
-    from memstribo.simulations.mesh import SUMMARY_UNITS
     from memstribo.output import new_figure, save_figure, write_dataset
+    from memstribo.quantities import attrs
 
     dim = _HEAD[parameter][0]
     coordinate = np.array([p[dim] for p in points], dtype=float)
     keys = [k for k in points[0] if k not in ("normal_load", "drive_torque", "area_multiple", "area", "stiction", dim)
             and isinstance(points[0][k], (int, float)) and not isinstance(points[0][k], bool)]
-    data = {k: (dim, np.array([p[k] for p in points], dtype=float), {"units": SUMMARY_UNITS.get(k, ""),
-                                                                       "long_name": k.replace("_", " ")})
-            for k in keys}
+    data = {k: (dim, np.array([p[k] for p in points], dtype=float), attrs(k)) for k in keys}
     dataset = xr.Dataset(data, coords={dim: (dim, coordinate, {"units": _UNITS[parameter] or "1",
                                                               "long_name": dim.replace("_", " ")})})
     if critical is not None:  # NetCDF attributes: NaN and the note where no crossing lies in the range

@@ -589,7 +589,8 @@ def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""
         right.plot(xs, dataset["energy_dissipated"].values, "o-", ms=3)
         right.set_ylabel("energy dissipated per cycle [J]")
     else:
-        right.plot(xs, np.asarray(dataset["friction_force_max"].values) * 1e6, "o-", ms=3, label="max friction force")
+        right.plot(xs, np.asarray(dataset["resisting_force_max"].values) * 1e6, "o-", ms=3,
+                   label="largest resisting force R")
         right.axhline(tangential_force * 1e6, color="k", lw=0.8, label="F_t")
         right.set_ylabel("force [µN]")
         right.legend(fontsize=8)
@@ -647,9 +648,10 @@ def _sweep_dataset(dimension, values, unit, long_name, summaries):
     """Summaries (:func:`memstribo.simulations.mesh.summarize`) of a sweep as a Dataset over ``dimension``."""
     import xarray as xr
 
-    from memstribo.simulations.mesh import SUMMARY_UNITS as units
-    data = {key: (dimension, np.array([float(s[key]) for s in summaries], dtype=float),
-                  {"units": units.get(key, ""), "long_name": key.replace("_", " ")}) for key in units
+    from memstribo.quantities import attrs
+    from memstribo.simulations.mesh import SUMMARY_KEYS
+    data = {key: (dimension, np.array([float(s[key]) for s in summaries], dtype=float), attrs(key))
+            for key in SUMMARY_KEYS
             if all(key in s and isinstance(s[key], (int, float, np.number)) for s in summaries)}
     return xr.Dataset(data, coords={dimension: (dimension, np.asarray(values, dtype=float),
                                                 {"units": unit, "long_name": long_name})})
@@ -842,10 +844,9 @@ class RunChain:
         import xarray as xr
 
         keys = [k for k, v in statistics[0].to_dict().items() if isinstance(v, (int, float)) and not isinstance(v, bool)]
-        units = {"Ra": "m", "Rq": "m", "Rp": "m", "Rv": "m", "Rz": "m", "lambda_q": "m", "sample_spacing": "m",
-                 "length": "m"}
-        table = xr.Dataset({k: ("profile", np.array([s.to_dict()[k] for s in statistics], dtype=float),
-                                {"units": units.get(k, ""), "long_name": k}) for k in keys},
+        from memstribo.quantities import attrs
+        table = xr.Dataset({k: ("profile", np.array([s.to_dict()[k] for s in statistics], dtype=float), attrs(k))
+                            for k in keys},
                            coords={"profile": ("profile", np.array([p.name for p in profiles], dtype=object))})
         self._dataset(table, "roughness_statistics", roughness=profiles)
         for i, profile in enumerate(profiles):
@@ -961,7 +962,7 @@ class RunChain:
             self._figure(plot_sliding(dataset, title), stem,
                          f"Sliding of {title} at {self.params['normal_load'] * 1e6:.4g} µN: friction, adhesion and "
                          f"normal force (top), COF and its chemical / vdW / elastic split (bottom); mean COF "
-                         f"{summary.cof:.3g}, chemical share of the dissipated energy {summary.fraction_chemical:.0%} "
+                         f"{summary.cof_mean:.3g}, chemical share of the dissipated energy {summary.fraction_chemical:.0%} "
                          f"(thesis {'2.6.2' if model == 'single' else '3.6'}).")
         self.summaries["sliding"] = summaries
 
@@ -1076,12 +1077,9 @@ class RunChain:
         self._dataset(dataset, "wear_sweep")
         self.results["wear_sweep"] = dataset
         self.summaries["wear_sweep"] = {**_columns(dataset), "critical_wear": coating.critical_wear(dataset)}
-        sweep = dataset.rename({"cof": "cof_mean"}) if "cof" in dataset and "cof_mean" not in dataset else dataset
-        if "friction_force_max" not in sweep and "friction_force" in sweep:
-            sweep = sweep.rename({"friction_force": "friction_force_max"})
-        self._figure(plot_sweep(sweep, "wear", "worn fraction Omega [%]", 100.0, self._tangential_force(),
+        self._figure(plot_sweep(dataset, "wear", "worn fraction Omega [%]", 100.0, self._tangential_force(),
                                 title=self.options.coating), "wear_sweep",
-                     "COF and its split (left), and the largest friction force over the cycle against F_t (right) "
+                     "COF and its split (left), and the largest resisting force R over the cycle against F_t (right) "
                      "versus the worn fraction Omega of the gear's coating (thesis 5.5.3, Figure 5-28).")
 
     def damage(self):

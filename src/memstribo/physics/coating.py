@@ -173,7 +173,7 @@ def check_wear(wear) -> np.ndarray:
 def cof_at_wear(wear, sweep) -> np.ndarray:
     """COF at worn fraction(s) Omega by linear interpolation of a :func:`wear_sweep` [-]."""
     omega = check_wear(wear)
-    return np.interp(omega, sweep["wear"].values, sweep["cof"].values)
+    return np.interp(omega, sweep["wear"].values, sweep["cof_mean"].values)
 
 
 def critical_wear(sweep) -> float | None:

@@ -703,7 +703,7 @@ def _sweep_arrays(wear_sweep):
                 return np.asarray(getattr(value, "values", value), dtype=float)
         raise InputError(f"the wear sweep has none of {names}.")
     wear = pick("wear")
-    return wear, pick("cof", "cof_mean"), pick("stiction_margin", "stiction_margin_min")
+    return wear, pick("cof_mean"), pick("stiction_margin", "stiction_margin_min")
 
 
 @cites("thesis", "model")
@@ -803,7 +803,7 @@ def _history_dataset(lives, sweep, first_failure):
     data = {"worn_fraction": ("cycles", omega, {"units": "", "long_name": "worn fraction Omega of the coating"})}
     if sweep is not None:
         order = np.argsort(sweep[0])
-        data["cof"] = ("cycles", np.interp(omega, sweep[0][order], sweep[1][order]),
+        data["cof_mean"] = ("cycles", np.interp(omega, sweep[0][order], sweep[1][order]),
                        {"units": "", "long_name": "COF at the worn fraction Omega(N)"})
         data["stiction_margin"] = ("cycles", np.interp(omega, sweep[0][order], sweep[2][order]),
                                    {"units": "N", "long_name": "stiction margin F_t - F_f at Omega(N)"})
@@ -846,7 +846,7 @@ def _figures(result: DamageResult, datasets) -> dict:
         ax.set_ylabel("worn fraction Omega [%]")
         if "cof" in history:
             twin = ax.twinx()
-            twin.plot(history["cycles"].values, history["cof"].values, "b--", label="COF(N)")
+            twin.plot(history["cycles"].values, history["cof_mean"].values, "b--", label="COF(N)")
             twin.set_ylabel("COF [-]")
         figures["damage_history"] = (fig, "Worn fraction of the coating and COF versus meshing cycles.")
     return figures

@@ -8,45 +8,16 @@ import numpy as np
 
 from memstribo.errors import InputError
 from memstribo.physics.coating import Coating, check_wear, get_coating
+from memstribo.quantities import attrs as quantity_attrs
 from memstribo.references import cites
 
 __all__ = ["SWEEP_VARIABLES", "wear_sweep", "calibrate_vdw_bond_energy"]
 
-_SUMMARY_KEYS = {"cof": "cof_mean", "friction_force": "resisting_force_max"}
-
-
-#: Variables of :func:`wear_sweep`'s dataset (and keys of ``memstribo coating --json``), with units.
-SWEEP_VARIABLES = {
-    "cof": ("", "coefficient of friction over the meshing cycle"),
-    "cof_chemical": ("", "COF from chemical bonds"),
-    "cof_vdw": ("", "COF from van der Waals bonds"),
-    "cof_elastic": ("", "COF from elastic interlocking"),
-    "friction_force": ("N", "largest resisting force R(c): friction of all pairs in mesh (MODEL 7b)"),
-    "tangential_force": ("N", "available tangential force F_t = T / r (4-27)"),
-    "stiction": ("", "1 where max R(c) > F_t (stiction), else 0"),
-    "stiction_margin": ("N", "stiction margin F_t - max R(c) (MODEL 7b)"),
-}
-
-
-
-def _summary_value(summary: dict, dataset, key: str) -> float:
-    """A sweep quantity from the mesh summary, or from the dataset where the summary lacks it."""
-    key_in_summary = _SUMMARY_KEYS.get(key, key)
-    if key_in_summary in summary and summary[key_in_summary] is not None:
-        key = key_in_summary
-        value = summary[key]
-        return float(value) if not isinstance(value, (bool, np.bool_)) else float(bool(value))
-    if key == "stiction" and "stiction_margin" in summary:
-        return float(summary["stiction_margin"] < 0)
-    if key in dataset:
-        data = dataset[key]
-        if key == "stiction_margin":
-            return float(data.min())
-        if key == "friction_force":
-            return float(data.max())
-        return float(data.mean())
-    raise KeyError(key)
-
+#: Variables of :func:`wear_sweep`'s dataset (and keys of ``memstribo coating --json``): the meshing cycle's
+#: summary values (:func:`memstribo.simulations.mesh.summarize`) under the same names; units and meanings in
+#: :mod:`memstribo.quantities`.
+SWEEP_VARIABLES = ("cof_mean", "cof_chemical", "cof_vdw", "cof_elastic", "resisting_force_max", "tangential_force",
+                   "stiction", "stiction_margin")
 
 
 @cites("thesis", "model")
@@ -107,10 +78,10 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
             dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w))
         summary = mesh.summarize(dataset)
         for key in SWEEP_VARIABLES:
-            rows[key][i] = _summary_value(summary, dataset, key)
+            rows[key][i] = float(summary[key])
     sweep = xr.Dataset(
-        {key: ("wear", rows[key], {"units": unit, "long_name": text}) for key, (unit, text) in SWEEP_VARIABLES.items()},
-        coords={"wear": ("wear", omega, {"units": "", "long_name": "worn fraction Omega of the gear's coating"})},
+        {key: ("wear", rows[key], quantity_attrs(key)) for key in SWEEP_VARIABLES},
+        coords={"wear": ("wear", omega, quantity_attrs("wear"))},
         attrs={"coating": "bare silicon" if coating is None else coating.name},
     )
     return sweep

@@ -55,6 +55,8 @@ import numpy as np
 
 from memstribo.errors import InputError, MemstriboError, did_you_mean
 from memstribo.output import ensure_directory
+from memstribo.quantities import attrs as quantity_attrs
+from memstribo.quantities import unit as quantity_unit
 from memstribo.units import printable
 
 __all__ = ["MapSpec", "MapResult", "MAP_RESULTS", "load_map_spec", "map_spec", "design_map", "map_point",
@@ -68,23 +70,11 @@ DEFAULT_WEAR_SWEEP = (0.0, 0.25, 0.5, 0.75, 1.0)
 MAX_MAP_POINTS = 10_000
 
 #: the results of one map point: name -> (unit, long name)
-MAP_RESULTS: dict[str, tuple[str, str]] = {
-    "stiction_probability": ("1", "fraction of roughness realisations that stick (F_f >= F_t)"),
-    "stiction_margin_median": ("N", "stiction margin F_t - max R(c), median over realisations"),
-    "stiction_margin_p05": ("N", "stiction margin, 5 % quantile over realisations"),
-    "stiction_margin_p95": ("N", "stiction margin, 95 % quantile over realisations"),
-    "cof_mean_median": ("1", "mean COF of the meshing cycle, median over realisations"),
-    "cof_mean_p05": ("1", "mean COF, 5 % quantile over realisations"),
-    "cof_mean_p95": ("1", "mean COF, 95 % quantile over realisations"),
-    "mesh_efficiency_median": ("1", "mesh efficiency, median over realisations"),
-    "mesh_efficiency_p05": ("1", "mesh efficiency, 5 % quantile over realisations"),
-    "mesh_efficiency_p95": ("1", "mesh efficiency, 95 % quantile over realisations"),
-    "realisations": ("1", "roughness realisations of the point"),
-    "cycles_to_failure": ("1", "meshing cycles until the coating first fails (omega = 1); NaN: unknown or bare"),
-    "cycles_to_stiction": ("1", "meshing cycles until the worn fraction brings stiction back; NaN: unknown, "
-                                "bare or never"),
-    "critical_wear": ("1", "worn fraction Omega at which stiction returns; NaN: never, bare or unknown"),
-}
+#: The results of a map point (units and meanings in :mod:`memstribo.quantities`): the ensemble verdict under
+#: the names of :func:`memstribo.simulations.mesh.ensemble_summary`, and the coating's life.
+MAP_RESULTS = ("stiction_probability", "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95",
+               "cof_mean_median", "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median", "mesh_efficiency_p05",
+               "mesh_efficiency_p95", "realisations", "cycles_to_failure", "cycles_to_stiction", "critical_wear")
 
 _MAP_KEYS = {"name", "realisations", "steps", "plot", "cycles_observed", "wear_sweep", "grid", "fixed"}
 
@@ -369,7 +359,7 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
     return values
 
 
-map_point.units = {key: unit for key, (unit, _) in MAP_RESULTS.items()}
+map_point.units = {key: quantity_unit(key) for key in MAP_RESULTS}
 
 
 # --- running ---------------------------------------------------------------------------------------------
@@ -568,16 +558,15 @@ def map_dataset(records: list[dict], spec: MapSpec, points: list | None = None):
             array = np.array([str(v) for v in values], dtype=object)
         coords[key] = (key, array, {"units": unit, "long_name": description})
     data = {}
-    for key, (unit, long_name) in MAP_RESULTS.items():
+    for key in MAP_RESULTS:
         flat = [r.get("values", {}).get(key) for r in records]
         array = np.array([np.nan if v is None else float(v) for v in flat], dtype=float).reshape(shape)
-        data[key] = (dims, array, {"units": unit, "long_name": long_name})
-    for key, long_name in (("note", "what could not be computed at the point"),
-                           ("error", "error message of a failed point (empty: ok)")):
+        data[key] = (dims, array, quantity_attrs(key))
+    for key in ("note", "error"):
         source = [(r.get("values", {}).get("note") if key == "note" else r.get("error")) or "" for r in records]
-        data[key] = (dims, np.array(source, dtype=object).reshape(shape), {"units": "", "long_name": long_name})
+        data[key] = (dims, np.array(source, dtype=object).reshape(shape), quantity_attrs(key))
     data["point_id"] = (dims, np.array([r["id"] for r in records], dtype=object).reshape(shape),
-                        {"units": "", "long_name": "id of the point's file in points/"})
+                        quantity_attrs("point_id"))
     dataset = xr.Dataset({k: xr.Variable(*v) for k, v in data.items()},
                          coords={k: xr.Variable(*v) for k, v in coords.items()})
     dataset.attrs["title"] = spec.name

@@ -72,6 +72,8 @@ import numpy as np
 from memstribo.errors import InputError
 from memstribo.materials.pair import contact_modulus_of, dundurs_beta, no_slip_coefficient, work_of_adhesion
 from memstribo.physics.gear import GearPair, hertz_line_contact, tangential_force
+from memstribo.quantities import attrs as quantity_attrs
+from memstribo.quantities import unit as quantity_unit
 from memstribo.references import cites
 
 __all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidity", "SUMMARY_UNITS",
@@ -82,22 +84,21 @@ __all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidit
 BLOCK_LOAD_VARIANT = ("decoupled: rough contact solved without the block springs, block loads = pressure over "
                       "each nanoblock's footprint, shared among its atomic blocks by the fixed-load model (3.4.2)")
 
-#: Units of the summary keys (``memstribo mesh --json``).
-SUMMARY_UNITS = {
-    "cof_mean": "", "cof_max": "", "cof_chemical": "", "cof_vdw": "", "cof_elastic": "",
-    "friction_force_mean": "N", "friction_force_max": "N", "adhesion_force_mean": "N", "normal_force_max": "N",
-    "tangential_force": "N", "stiction": "", "stiction_margin": "N", "steps": "", "sliding_distance": "m",
-    "energy_dissipated": "J", "energy_chemical": "J", "energy_vdw": "J", "energy_elastic": "J",
-    "unconverged_steps": "", "window_exceeded_steps": "", "max_contact_pressure": "Pa",
-    "steps_above_elastic_limit": "", "resisting_force_max": "N", "normal_force_total": "N", "mesh_efficiency": "",
-    "mesh_efficiency_min": "", "max_shear_stress": "Pa", "load_case": "", "interface_model": "",
-    "contact_adhesion": "", "mesh_contact": "", "environment": "", "relative_humidity": "", "cof_capillary": "",
-    "energy_capillary": "J", "roughness_rows": "", "warnings": "", "step_converged": "", "step_change_margin": "",
-    "step_change_cof": "", "steps_checked": "", "realisations": "", "stiction_probability": "",
-    "stiction_margin_median": "N", "stiction_margin_p05": "N", "stiction_margin_p95": "N", "cof_mean_median": "",
-    "cof_mean_p05": "", "cof_mean_p95": "", "mesh_efficiency_median": "", "mesh_efficiency_p05": "",
-    "mesh_efficiency_p95": "", "per_realisation": "",
-}
+#: The keys of the summary (``memstribo mesh --json``) and of the ensemble verdict, with their units from the
+#: vocabulary (:mod:`memstribo.quantities`).
+SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic", "friction_force_mean",
+                "friction_force_max", "adhesion_force_mean", "normal_force_max", "tangential_force", "stiction",
+                "stiction_margin", "steps", "sliding_distance", "energy_dissipated", "energy_chemical",
+                "energy_vdw", "energy_elastic", "unconverged_steps", "window_exceeded_steps",
+                "max_contact_pressure", "steps_above_elastic_limit", "resisting_force_max", "normal_force_total",
+                "mesh_efficiency", "mesh_efficiency_min", "max_shear_stress", "load_case", "interface_model",
+                "contact_adhesion", "mesh_contact", "environment", "relative_humidity", "cof_capillary",
+                "energy_capillary", "roughness_rows", "warnings", "step_converged", "step_change_margin",
+                "step_change_cof", "steps_checked", "realisations", "stiction_probability",
+                "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95", "cof_mean_median",
+                "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median", "mesh_efficiency_p05",
+                "mesh_efficiency_p95", "per_realisation")
+SUMMARY_UNITS = {key: quantity_unit(key) for key in SUMMARY_KEYS}
 
 _GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
 _SILVER = math.sqrt(2.0) - 1.0
@@ -915,8 +916,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     efficiency_mean = 1.0 - float(energy.sum()) / (input_power * period)
     step = np.arange(setup.positions.size)
 
-    def var(values, units, long_name, dims=("step",)):
-        return xr.Variable(dims, np.asarray(values), attrs={"units": units, "long_name": long_name})
+    def var(name, values, dims=("step",)):
+        return xr.Variable(dims, np.asarray(values), attrs=quantity_attrs(name))
 
     # per-block loads: pinion then gear material blocks, rows
     k_lists = [np.concatenate([bl[0].ravel() for bl in block_loads]), np.concatenate([bl[2].ravel() for bl in
@@ -942,60 +943,59 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     warnings = _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta)
 
     data = {
-        "time": var(pair.time(setup.positions), "s", "time since the first point of contact (4-18)"),
-        "load_share": var(share, "1", f"load share of the pair ({params['load_sharing']}, Figure 4-11)"),
-        "normal_force": var(setup.load, "N", "normal force on the tooth pair"),
-        "effective_radius": var(kin["r_ef"], "m", "radius of relative curvature R_ef (4-11)"),
-        "hertz_half_width": var(hertz.half_width, "m", "Hertz half-width a of smooth teeth under the step's load (4-24)"),
-        "hertz_peak_pressure": var(hertz.peak_pressure, "Pa", "Hertz peak pressure p0 of smooth teeth (4-26)"),
-        "sliding_velocity": var(kin["slip"], "m/s", "sliding velocity u1 - u2 (4-12)"),
-        "sliding_distance": var(sliding, "m", "sliding distance of the step |u1 - u2| dt"),
-        "contact_width": var(out["contact_width"], "m", "measure of the contact set of the rough contact (row mean)"),
-        "max_contact_pressure": var(out["max_pressure"], "Pa", "largest element pressure of the rough contact"),
-        "contact_approach": var(out["approach"], "m", "rigid approach of the rough contact solve (row mean)"),
-        "contact_converged": var(out["unconverged"] == 0, "1", "whether the contact solve converged in every row"),
-        "contact_residual": var(out["residual"], "1", "largest complementarity residual over the rows"),
-        "contact_iterations": var(out["iterations"], "1", "mean conjugate-gradient iterations over the rows"),
-        "window_exceeded": var(out["window_exceeded"] > 0, "1", "contact reached the ends of the contact window"),
-        "chemical_bonds": var(out["chem_bonds"], "1", "chemical bonds between touching atomic blocks (3-10)"),
-        "vdw_bonds": var(out["vdw_bonds"], "1", "van der Waals bonds, weighted by the interface model (3-12)"),
-        "friction_force_chemical": var(out["f_chem"], "N", "friction force of the chemical bonds"),
-        "friction_force_vdw": var(out["f_vdw"], "N", "friction force of the vdW bonds"),
-        "friction_force_elastic": var(f_el, "N", "friction force of elastic interlocking (3-25)"),
-        "friction_force_instantaneous": var(friction, "N", "friction force of the step's bond population, "
-                                                           "interlocking and menisci (3-1)"),
-        "friction_force": var(friction_avg, "N", "friction force F_f of the pair: dissipated energy per sliding "
-                                                 "distance over friction_averaging_distance (3-1, MODEL 7b)"),
-        "resisting_force": var(resisting, "N", "resisting force R(c): friction of every pair in mesh (MODEL 7b)"),
-        "adhesion_force": var(out["f_adh"], "N", "adhesion force F_adh (3-31, 3-32, or the cohesive zone)"),
-        "cof": var(friction_avg / denominator, "1", "apparent coefficient of friction (3-7)"),
-        "cof_chemical": var(f_chem_avg / denominator, "1", "COF from chemical bonds (3-8)"),
-        "cof_vdw": var(f_vdw_avg / denominator, "1", "COF from vdW bonds (3-8)"),
-        "cof_elastic": var(f_el_avg / denominator, "1", "COF from elastic interlocking (3-9)"),
-        "cof_capillary": var(f_cap_avg / denominator, "1", "COF from breaking capillary menisci (humid air)"),
-        "friction_force_capillary": var(out["f_cap"], "N", "friction force of breaking capillary menisci"),
-        "capillary_force": var(out["f_cap_adh"], "N", "attraction of the capillary menisci (part of F_adh)"),
-        "wetted_area": var(out["wetted"], "m^2", "area under capillary menisci"),
-        "energy_capillary": var(e_cap, "J", "energy dissipated by breaking capillary menisci in the step"),
-        "energy_chemical": var(e_chem, "J", "energy dissipated by chemical bonds in the step"),
-        "energy_vdw": var(e_vdw, "J", "energy dissipated by vdW bonds in the step"),
-        "energy_elastic": var(e_el, "J", "energy dissipated by elastic interlocking in the step"),
-        "energy_dissipated": var(energy, "J", "energy dissipated in the step"),
-        "tangential_force": var(np.full(step.size, f_t), "N", "tangential force F_t = T/r1 (4-27)"),
-        "stiction_margin": var(margin, "N", "stiction margin M(c) = F_t - R(c) (negative: stiction; MODEL 7b)"),
-        "mesh_efficiency": var(efficiency, "1", "instantaneous mesh efficiency 1 - sum F_f |u1 - u2| / (T omega1)"),
-        "friction_shear_stress": var(shear_stress, "Pa", "friction force over the real contact area"),
-        "rigid_atomic_blocks": var(out["rigid_atomic_blocks"], "1", "atomic blocks past the threshold strain "
-                                                                    "(rigid branch of the bilinear law)"),
-        "block_load": var(block_load, "N", "normal load of each nanoblock (pinion and gear flanks, rows)",
-                          dims=("step", "block")),
+        "time": pair.time(setup.positions),
+        "load_share": share,
+        "normal_force": setup.load,
+        "effective_radius": kin["r_ef"],
+        "hertz_half_width": hertz.half_width,
+        "hertz_peak_pressure": hertz.peak_pressure,
+        "sliding_velocity": kin["slip"],
+        "sliding_distance": sliding,
+        "contact_width": out["contact_width"],
+        "max_contact_pressure": out["max_pressure"],
+        "contact_approach": out["approach"],
+        "contact_converged": out["unconverged"] == 0,
+        "contact_residual": out["residual"],
+        "contact_iterations": out["iterations"],
+        "window_exceeded": out["window_exceeded"] > 0,
+        "bonds_chemical": out["chem_bonds"],
+        "bonds_vdw": out["vdw_bonds"],
+        "friction_force_chemical": out["f_chem"],
+        "friction_force_vdw": out["f_vdw"],
+        "friction_force_elastic": f_el,
+        "friction_force_instantaneous": friction,
+        "friction_force": friction_avg,
+        "resisting_force": resisting,
+        "adhesion_force": out["f_adh"],
+        "cof": friction_avg / denominator,
+        "cof_chemical": f_chem_avg / denominator,
+        "cof_vdw": f_vdw_avg / denominator,
+        "cof_elastic": f_el_avg / denominator,
+        "cof_capillary": f_cap_avg / denominator,
+        "friction_force_capillary": out["f_cap"],
+        "capillary_force": out["f_cap_adh"],
+        "wetted_area": out["wetted"],
+        "energy_capillary": e_cap,
+        "energy_chemical": e_chem,
+        "energy_vdw": e_vdw,
+        "energy_elastic": e_el,
+        "energy_dissipated": energy,
+        "tangential_force": np.full(step.size, f_t),
+        "stiction_margin": margin,
+        "mesh_efficiency": efficiency,
+        "friction_shear_stress": shear_stress,
+        "rigid_atomic_blocks": out["rigid_atomic_blocks"],
     }
+    # units and long names from the vocabulary (memstribo.quantities), the same in every output
+    data = {name: var(name, values) for name, values in data.items()}
+    data["load_share"].attrs["long_name"] = f"load share of the pair ({params['load_sharing']}, Figure 4-11)"
+    data["block_load"] = var("block_load", block_load, dims=("step", "block"))
     coords = {
-        "step": step,
-        "c": ("step", setup.positions, {"units": "m", "long_name": "position on the line of action (0: pitch point)"}),
-        "block_flank": ("block", block_flank, {"long_name": "flank of the nanoblock"}),
-        "block_row": ("block", block_row, {"long_name": "row of nanoblocks across the face width"}),
-        "block_index": ("block", block_index, {"long_name": "index of the nanoblock along its flank"}),
+        "step": ("step", step, quantity_attrs("step")),
+        "c": ("step", setup.positions, quantity_attrs("c")),
+        "block_flank": ("block", block_flank, quantity_attrs("block_flank")),
+        "block_row": ("block", block_row, quantity_attrs("block_row")),
+        "block_index": ("block", block_index, quantity_attrs("block_index")),
     }
     rows_info = setup.row_roughness
     attrs = {

@@ -50,6 +50,7 @@ from memstribo.physics import friction
 from memstribo.errors import InputError
 from memstribo.physics.nanoblock import mechanics
 from memstribo.physics.nanoblock.geometry import adhesive_layer_thickness
+from memstribo.quantities import attrs as quantity_attrs
 from memstribo.references import cites
 
 __all__ = [
@@ -161,47 +162,12 @@ def structure_footprints(geometry, blocks):
 # dataset
 # --------------------------------------------------------------------------------------
 
-_ATTRS = {
-    "sliding_distance": ("m", "sliding distance"),
-    "normal_force": ("N", "normal force F_N of the structure on the counter surface"),
-    "adhesion_force": ("N", "adhesion force F_adh of the adhesive blocks inside the adhesive layer (3-31)"),
-    "friction_force": ("N", "friction force F_f = dU_diss/dx (3-1)"),
-    "friction_force_chemical": ("N", "friction force from breaking chemical bonds"),
-    "friction_force_vdw": ("N", "friction force from breaking vdW bonds"),
-    "friction_force_elastic": ("N", "friction force from elastic interlocking"),
-    "cof": ("1", "apparent coefficient of friction (3-7)"),
-    "cof_chemical": ("1", "chemical part of the coefficient of friction (3-9)"),
-    "cof_vdw": ("1", "vdW part of the coefficient of friction (3-9)"),
-    "cof_elastic": ("1", "elastic-interlocking part of the coefficient of friction (3-9)"),
-    "bonds_chemical": ("1", "number of chemical bonds N_chem (3-10)"),
-    "bonds_vdw": ("1", "number of vdW bonds N_vdW (3-12)"),
-    "energy_chemical": ("J", "energy dissipated by chemical bonds during the step"),
-    "energy_vdw": ("J", "energy dissipated by vdW bonds during the step"),
-    "energy_elastic": ("J", "energy dissipated by elastic interlocking during the step (3-25)"),
-    "atomic_in_contact": ("1", "number of atomic blocks touching the counter surface"),
-    "max_atomic_stress": ("Pa", "largest normal stress on an atomic block"),
-    "structure_height": ("m", "height of the undeformed atomic tips above the counter mean line"),
-    "approach": ("m", "displacement of the structure's backing towards the counter surface"),
-    "load_residual": ("1", "relative force-balance error |F_N - load| / load"),
-    "block_force": ("N", "normal force through each adhesive block"),
-    "block_adhesion_force": ("N", "pull-off force (3-32) of each adhesive block"),
-    "adhesive_compression": ("m", "compression of each adhesive block"),
-    "bulk_compression": ("m", "compression of the bulk segment under each nanoblock"),
-    "shrink": ("m", "total shrink of each nanoblock (bulk + adhesive + most compressed atomic block)"),
-    "atomic_compression": ("m", "compression of each atomic block"),
-    "atomic_stress": ("Pa", "normal stress on each atomic block"),
-    "atomic_rigid": ("1", "atomic block on the rigid branch of the bilinear law (1) or elastic (0)"),
-}
-
-
 def _dataset(variables, positions, attrs):
     import xarray as xr
 
-    data_vars = {}
-    for name, (dims, values) in variables.items():
-        unit, long_name = _ATTRS[name]
-        data_vars[name] = (dims, np.asarray(values), {"units": unit, "long_name": long_name})
-    coords = {"sliding_distance": ("step", positions, {"units": "m", "long_name": "sliding distance"})}
+    # units and long names from the vocabulary (memstribo.quantities)
+    data_vars = {name: (dims, np.asarray(values), quantity_attrs(name)) for name, (dims, values) in variables.items()}
+    coords = {"sliding_distance": ("step", positions, quantity_attrs("sliding_distance", "distance slid"))}
     dataset = xr.Dataset(data_vars, coords=coords, attrs=attrs)
     return dataset
 
@@ -602,18 +568,18 @@ class SlideSummary:
 
     Attributes
     ----------
-    cof, cof_chemical, cof_vdw, cof_elastic : float
-        Means of the coefficient of friction and its parts over the steps [-].
-    friction_force : float
+    cof_mean, cof_chemical, cof_vdw, cof_elastic : float
+        Means of the coefficient of friction and its parts over the steps [-] (the parts add up to cof_mean).
+    friction_force_mean : float
         Mean friction force = total dissipated energy / distance [N].
-    adhesion_force, normal_force : float
+    adhesion_force_mean, normal_force_mean : float
         Means over the steps [N].
     energy_chemical, energy_vdw, energy_elastic : float
         Energies dissipated over the whole slide, by mechanism [J] (totals, not means).
     fraction_chemical, fraction_vdw, fraction_elastic : float
         Shares of the dissipated energy [-] (thesis 3.6: > 0.6, rest, < 0.01).
-    distance : float
-        Sliding distance [m].
+    sliding_distance : float
+        Distance slid in all [m].
     steps : int
         Number of positions.
     max_atomic_stress : float
@@ -626,20 +592,20 @@ class SlideSummary:
         Limits of silicon passed (:func:`physical_limits`), empty when none.
     """
 
-    cof: float
+    cof_mean: float
     cof_chemical: float
     cof_vdw: float
     cof_elastic: float
-    friction_force: float
-    adhesion_force: float
-    normal_force: float
+    friction_force_mean: float
+    adhesion_force_mean: float
+    normal_force_mean: float
     energy_chemical: float
     energy_vdw: float
     energy_elastic: float
     fraction_chemical: float
     fraction_vdw: float
     fraction_elastic: float
-    distance: float
+    sliding_distance: float
     steps: int
     max_atomic_stress: float
     load_residual: float | None = None
@@ -651,13 +617,6 @@ class SlideSummary:
         if values["load_residual"] is None:
             del values["load_residual"]
         return values
-
-
-UNITS = {"cof": "", "cof_chemical": "", "cof_vdw": "", "cof_elastic": "", "friction_force": "N",
-         "adhesion_force": "N", "normal_force": "N", "energy_chemical": "J", "energy_vdw": "J",
-         "energy_elastic": "J", "fraction_chemical": "", "fraction_vdw": "", "fraction_elastic": "",
-         "distance": "m", "steps": "", "max_atomic_stress": "Pa", "load_residual": "", "max_shear_stress": "Pa",
-         "warnings": ""}
 
 
 def summarize(dataset) -> SlideSummary:
@@ -678,11 +637,11 @@ def summarize(dataset) -> SlideSummary:
         residual = None
     shear, warnings = physical_limits(dataset)
     return SlideSummary(
-        cof=mean("cof"), cof_chemical=mean("cof_chemical"), cof_vdw=mean("cof_vdw"),
-        cof_elastic=mean("cof_elastic"), friction_force=friction_force,
-        adhesion_force=mean("adhesion_force"), normal_force=mean("normal_force"),
+        cof_mean=mean("cof"), cof_chemical=mean("cof_chemical"), cof_vdw=mean("cof_vdw"),
+        cof_elastic=mean("cof_elastic"), friction_force_mean=friction_force,
+        adhesion_force_mean=mean("adhesion_force"), normal_force_mean=mean("normal_force"),
         energy_chemical=energies[0], energy_vdw=energies[1], energy_elastic=energies[2],
         fraction_chemical=fractions[0], fraction_vdw=fractions[1], fraction_elastic=fractions[2],
-        distance=distance, steps=int(positions.size), max_atomic_stress=float(dataset["max_atomic_stress"].max()),
+        sliding_distance=distance, steps=int(positions.size), max_atomic_stress=float(dataset["max_atomic_stress"].max()),
         load_residual=residual, max_shear_stress=shear, warnings=warnings,
     )

@@ -62,6 +62,7 @@ import numpy as np
 
 from memstribo.errors import InputError, MemstriboError, did_you_mean
 from memstribo.output import dumps_json, ensure_directory, to_jsonable
+from memstribo.quantities import attrs_or
 from memstribo.units import printable
 
 __all__ = ["StudySpec", "StudyResult", "STUDY_KEYS", "POINT_FUNCTIONS", "MAX_STUDY_POINTS", "load_study_spec",
@@ -775,9 +776,8 @@ def study_dataset(records: list[dict], spec: StudySpec | None = None, points: li
             values = np.array([np.nan if v is None else float(v) for v in raw], dtype=float)
         else:
             values = np.array([json.dumps(v) if not isinstance(v, str) else v for v in raw], dtype=object)
-        data[key] = ("point", values, {"units": units.get(key, ""), "long_name": key.replace("_", " ")})
-    data["error"] = ("point", np.array([r.get("error") or "" for r in records], dtype=object),
-                     {"units": "", "long_name": "error message of a failed point (empty: ok)"})
+        data[key] = ("point", values, attrs_or(key, units.get(key, "")))
+    data["error"] = ("point", np.array([r.get("error") or "" for r in records], dtype=object), attrs_or("error"))
     ids = np.array([r["id"] for r in records], dtype=object)
     dataset = xr.Dataset({k: xr.Variable(*v) for k, v in data.items()},
                          coords={"point": ("point", np.arange(n)), "point_id": ("point", ids)})

@@ -42,18 +42,18 @@ def rows() -> list[ValidationRow]:
         "(thesis 37.5 uN, which follows from neither w): F_adh = 274 uN instead of 338.6 uN, hence the higher mu"))
     out.append(_row(
         "chemical bonds of a fully overlapped 19.5 nm atomic block", "thesis 3.5", 7388.6, ours.chemical_bonds, "",
-        "differs (see note)", False, estimate_cmd + "  (chemical_bonds_per_block)",
+        "differs (see note)", False, estimate_cmd + "  (bonds_chemical_per_block)",
         "(w / D_chem)^2 = (19.5 nm / 2.35 A)^2 = 6885.5; the printed 7388.6 does not follow from the printed inputs"))
     vdw_195 = estimate_from_parameters(params.updated({"adhesive_width": "195 nm"}))
     out.append(compare(
         "friction", "vdW bonds of a fully overlapped 195 nm adhesive block", "thesis 3.5", 688546.8,
         vdw_195.vdw_bonds, "", atol=0.1,
-        command=estimate_cmd.replace("--json", "--set adhesive_width='195 nm' --json") + "  (vdw_bonds_per_block)",
+        command=estimate_cmd.replace("--json", "--set adhesive_width='195 nm' --json") + "  (bonds_vdw_per_block)",
         note="(195 nm / 2.35 A)^2; the default set uses 195.5 nm (chapter 4), which gives 692082"))
     # --- 2.6.2 single nanoblock -------------------------------------------------------------------
     single = sliding.summarize(sliding.slide_single(params))
     out.append(_row(
-        "single nanoblock, 25 uN: mu (constant)", "thesis 2.6.2", 0.389, single.cof, "", "differs (see note)", False,
+        "single nanoblock, 25 uN: mu (constant)", "thesis 2.6.2", 0.389, single.cof_mean, "", "differs (see note)", False,
         _SLIDE.format(model="single") + "  (cof)",
         "one atomic block (6885.5 bonds) and one adhesive block (692082 vdW bonds), F_adh = F_adh,1(a = w_adh/2) "
         "= 30.46 uN; the thesis's 0.389 would need F_N + F_adh = 84.6 uN with its own bond energies, which its "

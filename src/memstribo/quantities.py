@@ -1,0 +1,397 @@
+"""The one vocabulary of results: every output quantity named once, with its unit and meaning.
+
+Every command's JSON, every NetCDF variable's ``units`` and ``long_name`` attributes, the CSV
+headers, the report's tables and docs/quantities.md take a quantity's name, unit and long name from
+:data:`QUANTITIES` (or, for an input, from the parameter's spec in :mod:`memstribo.parameters`).
+The same quantity has the same name everywhere: a time series ``X`` over the steps of a cycle or a
+slide, its statistics over the cycle ``X_mean``, ``X_max``, ``X_min``, its spread over roughness
+realisations ``X_median``, ``X_p05``, ``X_p95`` (:data:`STATISTICS`). A scalar of the same name as
+a time series (``stiction_margin``, ``mesh_efficiency``, ``tangential_force``) is the cycle's value
+of that quantity, as its description says.
+
+Units are UDUNITS strings (CF conventions): ``'1'`` for a dimensionless number, ``''`` for text,
+flags and labels. ``python -m memstribo.quantities`` prints docs/quantities.md.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Quantity", "QUANTITIES", "STATISTICS", "quantity", "unit", "attrs", "attrs_or", "known", "markdown_table"]
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """One output quantity: ``name``, ``unit`` (UDUNITS; '1' dimensionless, '' text), ``long_name`` (short,
+    for axes and attributes) and ``description`` (what it is, equation or section)."""
+
+    name: str
+    unit: str
+    long_name: str
+    description: str = ""
+
+
+#: prefix -> whose value it is (``bare_stiction_margin``: the stiction margin of the bare teeth)
+QUALIFIERS = {"bare": "bare teeth", "coated": "coated teeth"}
+
+#: suffix -> (how it reads in a long name, what it is)
+STATISTICS = {
+    "mean": ("mean", "mean over the steps of the cycle or slide"),
+    "max": ("maximum", "largest value over the steps"),
+    "min": ("minimum", "smallest value over the steps"),
+    "median": ("median", "median over the roughness realisations"),
+    "p05": ("5 % quantile", "5 % quantile over the roughness realisations"),
+    "p95": ("95 % quantile", "95 % quantile over the roughness realisations"),
+}
+
+_TEXT = ""
+
+_ENTRIES = [
+    # --- friction, the meshing cycle and flat sliding (thesis 3.3, 4.6-4.9, MODEL 7b) ---------------------
+    ("cof", "1", "coefficient of friction", "apparent COF F_f / (F_N + F_adh) of the step (3-7)"),
+    ("cof_chemical", "1", "COF from chemical bonds", "chemical part of the COF (3-8, 3-9)"),
+    ("cof_vdw", "1", "COF from vdW bonds", "van der Waals part of the COF (3-8, 3-9)"),
+    ("cof_elastic", "1", "COF from elastic interlocking", "elastic-interlocking part of the COF (3-9, 3-25)"),
+    ("cof_capillary", "1", "COF from capillary menisci", "part of the COF from breaking capillary menisci (humid air)"),
+    ("fraction_chemical", "1", "chemical share of friction", "share of the dissipated energy from chemical bonds"),
+    ("fraction_vdw", "1", "vdW share of friction", "share of the dissipated energy from vdW bonds"),
+    ("fraction_elastic", "1", "elastic share of friction", "share of the dissipated energy from elastic interlocking"),
+    ("friction_force", "N", "friction force", "friction force F_f: dissipated energy per sliding distance, averaged over "
+     "friction_averaging_distance in the meshing cycle (3-1, MODEL 7b)"),
+    ("friction_force_chemical", "N", "friction force of chemical bonds", "friction force of breaking chemical bonds"),
+    ("friction_force_vdw", "N", "friction force of vdW bonds", "friction force of breaking vdW bonds"),
+    ("friction_force_elastic", "N", "friction force of elastic interlocking", "friction force of elastic interlocking (3-25)"),
+    ("friction_force_capillary", "N", "friction force of capillary menisci", "friction force of breaking menisci"),
+    ("friction_force_instantaneous", "N", "instantaneous friction force",
+     "friction force of the step's bond population, interlocking and menisci, before averaging (3-1)"),
+    ("friction_shear_stress", "Pa", "friction shear stress", "friction force over the real contact area"),
+    ("resisting_force", "N", "resisting force R(c)", "friction of every pair in mesh at position c (MODEL 7b)"),
+    ("tangential_force", "N", "tangential force F_t", "available tangential force T / r1 of the drive torque (4-27)"),
+    ("stiction_margin", "N", "stiction margin", "F_t - R(c); as a scalar the cycle's smallest, F_t - max R "
+     "(negative: stiction; MODEL 7b)"),
+    ("stiction", _TEXT, "stiction", "true (1) where max R(c) > F_t: the teeth stick"),
+    ("stiction_probability", "1", "stiction probability", "fraction of roughness realisations that stick"),
+    ("mesh_efficiency", "1", "mesh efficiency", "1 - friction power / input power T omega1; as a scalar the cycle's "
+     "mean (MODEL 7b)"),
+    ("adhesion_force", "N", "adhesion force F_adh", "adhesion force (3-31, 3-32, or the cohesive zone of the contact "
+     "solve; with menisci in humid air)"),
+    ("capillary_force", "N", "capillary force", "attraction of the capillary menisci (part of F_adh)"),
+    ("wetted_area", "m^2", "wetted area", "area under capillary menisci"),
+    ("normal_force", "N", "normal force", "normal force on the tooth pair (mesh) or on the structure (slide)"),
+    ("normal_force_total", "N", "total normal force", "normal force F_t / cos(alpha) of the load case, shared by the "
+     "pairs in mesh"),
+    ("load_share", "1", "load share", "load share of the pair (load_sharing, thesis Figure 4-11)"),
+    ("energy_dissipated", "J", "energy dissipated", "energy dissipated in the step (as a scalar: over the cycle)"),
+    ("energy_chemical", "J", "energy of chemical bonds", "energy dissipated by breaking chemical bonds"),
+    ("energy_vdw", "J", "energy of vdW bonds", "energy dissipated by breaking vdW bonds"),
+    ("energy_elastic", "J", "energy of elastic interlocking", "energy dissipated by elastic interlocking (3-25)"),
+    ("energy_capillary", "J", "energy of capillary menisci", "energy dissipated by breaking capillary menisci"),
+    ("bonds_chemical", "1", "chemical bonds", "chemical bonds between touching atomic blocks N_chem (3-10)"),
+    ("bonds_vdw", "1", "vdW bonds", "van der Waals bonds N_vdW, weighted by the interface model (3-12)"),
+    ("sliding_distance", "m", "sliding distance", "sliding distance |u1 - u2| dt of the step (as a scalar: in all)"),
+    ("sliding_velocity", "m/s", "sliding velocity", "sliding velocity u1 - u2 (4-12)"),
+    ("time", "s", "time", "time since the first point of contact (4-18)"),
+    ("c", "m", "position on the line of action", "position of the contact point on the line of action (0: pitch point)"),
+    ("step", "1", "step", "index of the step"),
+    ("steps", "1", "steps", "number of steps of the cycle or slide"),
+    ("effective_radius", "m", "radius of relative curvature", "R_ef of the teeth at the contact point (4-11)"),
+    ("block_load", "N", "nanoblock load", "normal load of each nanoblock (pinion and gear flanks, rows)"),
+    ("block_flank", _TEXT, "flank of the nanoblock", "pinion or gear"),
+    ("block_row", "1", "row of the nanoblock", "row of nanoblocks across the face width"),
+    ("block_index", "1", "index of the nanoblock", "index of the nanoblock along its flank"),
+    ("rigid_atomic_blocks", "1", "rigid atomic blocks", "atomic blocks past the threshold strain (rigid branch of the "
+     "bilinear law)"),
+    ("unconverged_steps", "1", "unconverged steps", "steps whose contact solve did not converge"),
+    ("window_exceeded", _TEXT, "window exceeded", "true where the contact reached the ends of the contact window"),
+    ("window_exceeded_steps", "1", "steps past the window", "steps whose contact reached the window's ends"),
+    ("steps_above_elastic_limit", "1", "steps above the elastic limit", "steps whose peak pressure exceeds "
+     "elastic_limit_pressure"),
+    ("max_shear_stress", "Pa", "largest friction shear stress", "largest friction stress on the real contact area, "
+     "against the ideal shear strength of silicon (MODEL 7c)"),
+    ("max_contact_pressure", "Pa", "largest contact pressure", "largest element pressure of the rough contact"),
+    ("step_converged", _TEXT, "converged in the steps", "true when doubling the steps changes the margin and the mean "
+     "COF by less than 2 %"),
+    ("step_change_margin", "1", "change of the margin with the steps", "relative change of the stiction margin (of "
+     "F_t) when the steps are doubled"),
+    ("step_change_cof", "1", "change of the COF with the steps", "relative change of the mean COF when the steps are "
+     "doubled"),
+    ("steps_checked", "1", "steps of the check", "steps of the finer cycle of the step-convergence check"),
+    ("realisations", "1", "roughness realisations", "independent roughness realisations of the ensemble"),
+    ("area_multiple", "1", "multiple of the nominal contact area", "apparent contact area over the default "
+     "(thesis 4.9.4)"),
+    ("realisation", "1", "roughness realisation", "index of the roughness realisation"),
+    ("realisation_stiction_margin", "N", "stiction margin of each realisation", "F_t - max R of each roughness "
+     "realisation's cycle"),
+    ("realisation_cof_mean", "1", "mean COF of each realisation", "mean COF of each roughness realisation's cycle"),
+    ("realisation_mesh_efficiency", "1", "mesh efficiency of each realisation", "mesh efficiency of each roughness "
+     "realisation's cycle"),
+    ("per_realisation", _TEXT, "per realisation", "the summary of each realisation"),
+    ("roughness_rows", _TEXT, "rows of the roughness", "how the rows of nanoblocks got their roughness lines"),
+    # --- the contact solves ------------------------------------------------------------------------------------
+    ("contact_width", "m", "contact width", "measure of the contact set of the rough contact (row mean)"),
+    ("contact_approach", "m", "contact approach", "rigid approach of the rough contact solve (row mean)"),
+    ("contact_converged", _TEXT, "contact converged", "true where the contact solve converged in every row"),
+    ("contact_residual", "1", "contact residual", "largest complementarity residual over the rows"),
+    ("contact_iterations", "1", "contact iterations", "mean conjugate-gradient iterations over the rows"),
+    ("hertz_half_width", "m", "Hertz half-width", "Hertz half-width a of smooth teeth (4-24)"),
+    ("hertz_peak_pressure", "Pa", "Hertz peak pressure", "Hertz peak pressure p0 of smooth teeth (4-26)"),
+    ("contact_length", "m", "contact length", "measure of the contact set of a line contact"),
+    ("contact_fraction", "1", "contact fraction", "fraction of the surface in contact"),
+    ("contact_radius", "m", "contact radius", "radius of an axisymmetric contact"),
+    ("contact", _TEXT, "in contact", "true where the element is in contact"),
+    ("max_pressure", "Pa", "largest pressure", "largest contact pressure of the solve"),
+    ("min_pressure", "Pa", "smallest pressure", "smallest (most tensile) contact pressure of the solve"),
+    ("max_pressure_radius", "m", "radius of the largest pressure", "radius at which the pressure is largest"),
+    ("mean_pressure", "Pa", "mean pressure", "load over the nominal area"),
+    ("pressure", "Pa", "contact pressure", "contact pressure"),
+    ("gap", "m", "gap", "deformed gap between the surfaces"),
+    ("mean_gap", "m", "mean gap", "mean deformed gap"),
+    ("approach", "m", "approach", "rigid-body approach of the bodies (slide: of the structure's backing)"),
+    ("load", "N/m", "line load", "load per unit face width of a line contact"),
+    ("iterations", "1", "iterations", "conjugate-gradient iterations of the solve"),
+    ("residual", "1", "residual", "relative complementarity residual of the solve"),
+    ("converged", _TEXT, "converged", "true when the solve met its tolerance"),
+    ("solve_seconds", "s", "solve time", "wall time of the solve"),
+    ("adhesive_load", "N/m", "adhesive line load", "tensile line load of the cohesive zone"),
+    ("cohesive_length", "m", "cohesive length", "measure of the cohesive zone"),
+    ("cohesive_stress", "Pa", "cohesive stress", "Maugis-Dugdale stress sigma0 (MODEL 7c)"),
+    ("cohesive_range", "m", "cohesive range", "Maugis-Dugdale range h0 = w / sigma0 (MODEL 7c)"),
+    ("maugis_parameter", "1", "Maugis parameter", "lambda of the line contact (Johnson & Greenwood 2008)"),
+    ("pull_off_line_load", "N/m", "pull-off line load", "tensile line load at separation (positive)"),
+    ("pull_off_half_width", "m", "half-width at pull-off", "contact half-width at pull-off"),
+    ("maugis_dugdale_pull_off_line_load", "N/m", "Maugis-Dugdale pull-off line load", "closed form of the "
+     "Maugis-Dugdale line contact at the same lambda"),
+    ("maugis_dugdale_pull_off_half_width", "m", "Maugis-Dugdale half-width at pull-off", "closed form at the same "
+     "lambda"),
+    ("jkr_pull_off_line_load", "N/m", "JKR pull-off line load", "(3/4)(4 pi E* w^2 R)^(1/3) of the JKR line contact"),
+    ("unloading_steps", "1", "unloading steps", "load steps of the unloading branch"),
+    # --- nanoscale constants, nanoblocks and sliding ---------------------------------------------------------
+    ("epsilon", "J", "Lennard-Jones epsilon", "well depth of the 12-6 potential (3.3.3)"),
+    ("sigma", "m", "Lennard-Jones sigma", "zero-crossing distance of the 12-6 potential (3.3.3)"),
+    ("bond_energy_chemical", "J", "chemical bond energy", "energy of one chemical bond (3.3.4)"),
+    ("bond_energy_vdw", "J", "vdW bond energy", "energy of one van der Waals bond (3.3.5)"),
+    ("contact_modulus", "Pa", "contact modulus E*", "1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2"),
+    ("no_slip_coefficient", "1", "no-slip coefficient C_NS", "(3-33)"),
+    ("maugis_stress", "Pa", "Maugis stress sigma0", "16 w / (9 sqrt(3) z0) (MODEL 2)"),
+    ("maugis_range", "m", "Maugis range h0", "w / sigma0 (MODEL 2)"),
+    ("half_width", "m", "half-width of an adhesive block", "half-width a of the block's pull-off contact (3-32)"),
+    ("pull_off_force_block", "N", "pull-off force of a block", "sqrt(8 pi w E* C_NS a^3) (3-32)"),
+    ("blocks", "1", "nanoblocks", "nanoblocks in contact in the estimate of thesis 3.5"),
+    ("bonds_chemical_per_block", "1", "chemical bonds per block", "chemical bonds of one fully overlapped atomic "
+     "block (thesis 3.5 estimate)"),
+    ("bonds_vdw_per_block", "1", "vdW bonds per block", "vdW bonds of one adhesive block (thesis 3.5 estimate)"),
+    ("energy_chemical_per_block", "J", "chemical bond energy per block", "N_chem U_chem of one block (3.5)"),
+    ("energy_vdw_per_block", "J", "vdW bond energy per block", "N_vdW U_vdW of one block (3.5)"),
+    ("thesis_inputs_cof", "1", "COF from the thesis's printed inputs", "the 3.5 estimate with the values printed "
+     "in thesis 3.5"),
+    ("thesis_inputs_friction_force", "N", "friction force from the thesis's printed inputs", "the 3.5 estimate "
+     "with the values printed in thesis 3.5"),
+    ("thesis_counts_cof", "1", "COF from the thesis's bond counts", "the 3.5 estimate with the bond counts printed "
+     "in thesis 3.5"),
+    ("atomic_in_contact", "1", "atomic blocks in contact", "atomic blocks touching the counter surface"),
+    ("atomic_compression", "m", "atomic compression", "compression of each atomic block"),
+    ("atomic_stress", "Pa", "atomic stress", "normal stress on each atomic block"),
+    ("atomic_rigid", _TEXT, "rigid atomic block", "true for an atomic block on the rigid branch of the bilinear law"),
+    ("max_atomic_stress", "Pa", "largest atomic stress", "largest normal stress on an atomic block"),
+    ("structure_height", "m", "structure height", "height of the undeformed atomic tips above the counter mean line"),
+    ("load_residual", "1", "load residual", "relative force-balance error |F_N - load| / load"),
+    ("block_force", "N", "adhesive block force", "normal force through each adhesive block"),
+    ("block_adhesion_force", "N", "adhesive block pull-off force", "pull-off force (3-32) of each adhesive block"),
+    ("adhesive_compression", "m", "adhesive compression", "compression of each adhesive block"),
+    ("bulk_compression", "m", "bulk compression", "compression of the bulk segment under each nanoblock"),
+    ("shrink", "m", "nanoblock shrink", "total shrink of each nanoblock (bulk + adhesive + most compressed atomic block)"),
+    ("rules", _TEXT, "rules", "which rule produced each nanoblock size"),
+    # --- gear ---------------------------------------------------------------------------------------------------
+    ("pitch_radii", "m", "pitch radii", "pitch radii of pinion and gear (4-1)"),
+    ("base_radii", "m", "base radii", "base radii of pinion and gear (4-2)"),
+    ("tip_radii", "m", "tip radii", "tip radii of pinion and gear"),
+    ("tip_thickness", "m", "tip thickness", "tooth thickness at the tip circle, pinion and gear (ISO 21771)"),
+    ("centre_distance", "m", "centre distance", "centre distance of the pair"),
+    ("base_pitch", "m", "base pitch", "base pitch pi m cos(alpha)"),
+    ("path_of_contact", "m", "path of contact", "length of the path of contact (4-5)"),
+    ("contact_ratio", "1", "contact ratio", "path of contact over base pitch (4-6)"),
+    ("first_contact", "m", "first point of contact", "position of the first point of contact on the line of action"),
+    ("last_contact", "m", "last point of contact", "position of the last point of contact on the line of action"),
+    ("single_tooth_zone", "m", "single-tooth zone", "ends of the single-tooth zone on the line of action"),
+    ("effective_radius_pitch", "m", "radius of relative curvature at the pitch point", "R_ef at the pitch point (4-11)"),
+    # --- roughness (ISO 4287, ISO 25178) ---------------------------------------------------------------------
+    ("Ra", "m", "Ra", "arithmetic mean deviation of the profile (ISO 4287)"),
+    ("Rq", "m", "Rq", "root-mean-square deviation of the profile (ISO 4287)"),
+    ("Rq_std", "m", "spread of Rq", "standard deviation of Rq over the scan lines of a map"),
+    ("Rp", "m", "Rp", "largest peak height (ISO 4287)"),
+    ("Rv", "m", "Rv", "largest valley depth (ISO 4287)"),
+    ("Rz", "m", "Rz", "largest height of the profile Rp + Rv (ISO 4287)"),
+    ("Rsk", "1", "Rsk", "skewness (ISO 4287)"),
+    ("Rku", "1", "Rku", "kurtosis (ISO 4287)"),
+    ("Sa", "m", "Sa", "arithmetic mean height of the surface (ISO 25178)"),
+    ("Sq", "m", "Sq", "root-mean-square height of the surface (ISO 25178)"),
+    ("Sp", "m", "Sp", "largest peak height of the surface (ISO 25178)"),
+    ("Sv", "m", "Sv", "largest valley depth of the surface (ISO 25178)"),
+    ("Sz", "m", "Sz", "largest height of the surface (ISO 25178)"),
+    ("Ssk", "1", "Ssk", "skewness of the surface (ISO 25178)"),
+    ("Sku", "1", "Sku", "kurtosis of the surface (ISO 25178)"),
+    ("rms_slope", "1", "rms slope", "root-mean-square slope of the profile"),
+    ("lambda_q", "m", "lambda_q", "root-mean-square wavelength 2 pi Rq / rms slope"),
+    ("length", "m", "length", "length of the profile"),
+    ("sample_spacing", "m", "sample spacing", "distance between the samples of the profile"),
+    ("dy", "m", "row spacing", "distance between the scan lines of a map"),
+    ("n_points", "1", "points", "samples of the profile or scan line"),
+    ("n_rows", "1", "rows", "scan lines of a map"),
+    ("n_line_scans", "1", "line scans", "scan lines analysed"),
+    ("uniform", _TEXT, "uniform sampling", "true when the samples are evenly spaced"),
+    ("profile", _TEXT, "profile", "name of the roughness profile"),
+    ("x", "m", "position", "position along the sliding direction"),
+    ("y", "m", "position across", "position across the sliding direction"),
+    ("z", "m", "height", "height of the surface"),
+    # --- coatings and damage (thesis 5.4, 5.5) ----------------------------------------------------------------
+    ("wear", "1", "worn fraction Omega", "worn fraction of the gear's coating (the pinion's is worn; 5.5.3)"),
+    ("critical_wear", "1", "critical worn fraction", "Omega at which stiction returns; NaN: never, bare or unknown"),
+    ("cycles_to_failure", "1", "cycles to coating failure", "meshing cycles until the coating first fails "
+     "(omega = 1); NaN: unknown or bare"),
+    ("cycles_to_stiction", "1", "cycles to stiction", "meshing cycles until the worn fraction brings stiction back; "
+     "NaN: unknown, bare or never"),
+    ("target_cof", "1", "target COF", "the mean COF a calibration aims at"),
+    ("cof_before", "1", "COF before calibration", "mean COF of the meshing cycle with the coating's own U_vdW"),
+    ("cof_after", "1", "COF after calibration", "mean COF of the meshing cycle with the calibrated U_vdW"),
+    ("vdw_bond_energy_before", "J", "U_vdW before calibration", "the coating's vdW bond energy before"),
+    ("vdw_bond_energy_after", "J", "U_vdW after calibration", "the calibrated vdW bond energy"),
+    ("factor", "1", "calibration factor", "calibrated over original value"),
+    ("runs", "1", "runs", "meshing cycles the calibration ran"),
+    ("config_file", _TEXT, "config file", "the TOML written for --config"),
+    ("worn_fraction", "1", "worn fraction", "worn fraction Omega of the coating after N cycles"),
+    ("cycles", "1", "meshing cycles", "meshing cycles N"),
+    ("life_ratio_corner_to_central", "1", "life ratio corner / central", "coating life at a corner asperity over "
+     "that at a central one"),
+    ("omega_over_c1_max", _TEXT, "largest damage rate omega / c1", "largest damage rate per cycle over the damage "
+     "coefficient (unit: Pa to the damage exponent)"),
+    ("omega_over_c1_central", _TEXT, "damage rate omega / c1, central asperity", "damage per meshing cycle over "
+     "c1 along the sliding line through a central asperity (unit: Pa to the damage exponent)"),
+    ("omega_over_c1_corner", _TEXT, "damage rate omega / c1, corner asperity", "the same at a corner asperity"),
+    ("omega_over_c1_side", _TEXT, "damage rate omega / c1, side asperity", "the same at a side asperity"),
+    ("location", "m", "location", "position of the most damaged point"),
+    ("central", _TEXT, "central asperity", "the result at a central asperity"),
+    ("corner", _TEXT, "corner asperity", "the result at a corner asperity"),
+    ("side", _TEXT, "side asperity", "the result at a side asperity"),
+    # --- labels of a run, a sweep, a map ------------------------------------------------------------------------
+    ("name", _TEXT, "name", "name of the surface or study"),
+    ("source", _TEXT, "source", "where the data came from (file and channel, or synthetic and seed)"),
+    ("channel", _TEXT, "channel", "channel of the instrument file"),
+    ("kind", _TEXT, "kind", "profile or map"),
+    ("synthetic", _TEXT, "synthetic", "true for a synthetic surface"),
+    ("coating", _TEXT, "coating", "the teeth's coating"),
+    ("parameter", _TEXT, "swept parameter", "name of the swept parameter"),
+    ("points", _TEXT, "points", "the results of each point"),
+    ("warnings", _TEXT, "warnings", "physical limits passed and numerical trouble, as sentences (MODEL 7c)"),
+    ("note", _TEXT, "note", "what could not be computed at the point"),
+    ("error", _TEXT, "error", "error message of a failed point (empty: ok)"),
+    ("point_id", _TEXT, "point id", "id of the point's file in points/"),
+    ("elapsed", "s", "elapsed time", "wall time of the command"),
+    ("folder", _TEXT, "results folder", "the folder a run wrote"),
+    ("report", _TEXT, "report", "path of report.html"),
+    ("complete", _TEXT, "complete", "true when every requested stage finished"),
+    ("stages", _TEXT, "stages", "status of each stage of the run"),
+    ("failed_stages", _TEXT, "failed stages", "the stages that did not finish, with the reason"),
+    ("kept_stages", _TEXT, "kept stages", "stages kept from the earlier run (--resume)"),
+    ("asperity_loads", "N", "asperity loads", "load of each asperity class of a nanoblock (5.5.2)"),
+    ("shares", "1", "load shares", "share of the block load of each asperity class (5.5.2)"),
+    ("load_case", _TEXT, "load case", "torque or thesis (MODEL 7b)"),
+    ("interface_model", _TEXT, "interface model", "gap or thesis (MODEL 7c)"),
+    ("contact_adhesion", _TEXT, "contact adhesion", "none or maugis (MODEL 7c)"),
+    ("mesh_contact", _TEXT, "mesh contact", "line or surface"),
+    ("environment", _TEXT, "environment", "vacuum or air"),
+]
+
+QUANTITIES: dict[str, Quantity] = {name: Quantity(name, unit, long, text) for name, unit, long, text in _ENTRIES}
+
+
+def _parameter(name: str) -> Quantity | None:
+    from memstribo.parameters.definitions import SPECS
+
+    spec = SPECS.get(name)
+    if spec is None:
+        return None
+    unit_ = spec.unit if spec.unit else ("1" if spec.kind in ("float", "int") else _TEXT)
+    return Quantity(name, unit_, name.replace("_", " "), f"input parameter: {spec.description}")
+
+
+def quantity(name: str) -> Quantity:
+    """The :class:`Quantity` of an output name: a registered quantity, a statistic of one (``cof_mean``,
+    ``stiction_margin_p05``), or an input parameter (its unit and description from the parameter's spec).
+
+    Raises
+    ------
+    KeyError
+        When the name is none of these: register it in :data:`QUANTITIES`.
+    """
+    if name in QUANTITIES:
+        return QUANTITIES[name]
+    base, _, suffix = name.rpartition("_")
+    if suffix in STATISTICS and base:
+        try:
+            q = quantity(base)  # a statistic of a quantity, or of a statistic (cof_mean_p05)
+        except KeyError:
+            q = None
+        if q is not None and not q.description.startswith("input parameter"):
+            reads, what = STATISTICS[suffix]
+            return Quantity(name, q.unit, f"{q.long_name}, {reads}", f"{what} of: {q.description}")
+    qualifier, _, rest = name.partition("_")
+    if qualifier in QUALIFIERS and rest:
+        try:
+            q = quantity(rest)
+        except KeyError:
+            q = None
+        if q is not None:
+            return Quantity(name, q.unit, f"{q.long_name} ({QUALIFIERS[qualifier]})",
+                            f"of the {QUALIFIERS[qualifier]}: {q.description}")
+    parameter = _parameter(name)
+    if parameter is not None:
+        return parameter
+    raise KeyError(f"{name!r} is not in memstribo's vocabulary of results (memstribo.quantities.QUANTITIES)")
+
+
+def known(name: str) -> bool:
+    """Whether ``name`` is a registered quantity, a statistic of one, or an input parameter."""
+    try:
+        quantity(name)
+    except KeyError:
+        return False
+    return True
+
+
+def unit(name: str) -> str:
+    """UDUNITS unit of an output name ('1' dimensionless, '' text)."""
+    return quantity(name).unit
+
+
+def attrs(name: str, long_name: str | None = None) -> dict[str, str]:
+    """CF attributes ``units`` and ``long_name`` of an output variable (``long_name`` overrides the registry's)."""
+    q = quantity(name)
+    return {"units": q.unit, "long_name": long_name or q.long_name}
+
+
+def attrs_or(name: str, unit: str = "") -> dict[str, str]:
+    """CF attributes of an output name: the vocabulary's where it knows the name, else ``unit`` and the name in
+    words (the results of a user's own study function, which the vocabulary cannot know)."""
+    if known(name):
+        return attrs(name)
+    return {"units": unit, "long_name": name.replace("_", " ")}
+
+
+def markdown_table() -> str:
+    """docs/quantities.md: every registered quantity with its unit, long name and description."""
+    lines = ["# Output quantities", "",
+             "Every name that memstribo writes (JSON of every command, NetCDF variables and attributes, CSV headers, "
+             "the report) comes from this table (`memstribo.quantities.QUANTITIES`), or is an input parameter "
+             "(`memstribo parameters`). Statistics add a suffix to the name: "
+             + ", ".join(f"`_{s}` ({reads})" for s, (reads, _) in STATISTICS.items())
+             + ". Units are UDUNITS strings: `1` is dimensionless, an empty unit is text or a flag.", "",
+             "Generated by `python -m memstribo.quantities > docs/quantities.md` (a test keeps it current).", "",
+             "| name | unit | long name | description |", "|---|---|---|---|"]
+    for q in QUANTITIES.values():
+        cells = [f"`{q.name}`", q.unit or "(text)", q.long_name, q.description]
+        lines.append("| " + " | ".join(cell.replace("|", "\\|") for cell in cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    print(markdown_table(), end="")
