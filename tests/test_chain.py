@@ -9,7 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from memstribo.job.chain import STAGES, RunChain, RunOptions, options_for_test, verdict
+from memstribo.job.chain import RunChain, verdict
+from memstribo.job.options import STAGES, RunOptions, options_for_test
 from memstribo.errors import InputError
 
 REPO = Path(__file__).resolve().parent.parent

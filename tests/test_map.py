@@ -439,7 +439,7 @@ def test_run_with_a_map_spec_writes_the_map_and_its_report_section(tmp_path):
 
 
 def test_run_without_a_map_has_no_map_stage_and_a_bad_map_stops_before_the_first_stage(tmp_path):
-    from memstribo.job.chain import STAGES, RunOptions
+    from memstribo.job.options import STAGES, RunOptions
     from memstribo.cli.main import main
     from memstribo.job.report import _design_map_html
 
@@ -482,7 +482,7 @@ def test_longest_points_are_submitted_first():
 def test_report_section_while_the_map_runs_and_when_it_failed():
     from types import SimpleNamespace
 
-    from memstribo.job.chain import MAP_STAGE, StageRecord
+    from memstribo.job.options import MAP_STAGE, StageRecord
     from memstribo.job.report import _design_map_html
 
     record = StageRecord(*MAP_STAGE)

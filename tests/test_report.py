@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from memstribo.job.chain import FigureRecord, RunOptions, RunResult, StageRecord
+from memstribo.job.options import FigureRecord, RunOptions, RunResult, StageRecord
 from memstribo.job.report import render_report, write_report
 from memstribo.validation import ValidationRow, compare
 

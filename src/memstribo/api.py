@@ -257,9 +257,10 @@ def run(config: str | Path | None = None, out: str | Path = "memstribo-results",
 
     Returns
     -------
-    memstribo.job.chain.RunResult
+    memstribo.job.options.RunResult
     """
-    from memstribo.job.chain import RunChain, RunOptions
+    from memstribo.job.chain import RunChain
+    from memstribo.job.options import RunOptions
     from memstribo.parameters import read_config
 
     table: dict[str, Any] = {}

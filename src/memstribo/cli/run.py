@@ -64,7 +64,8 @@ def run(args, params):
     from dataclasses import replace
     from pathlib import Path
 
-    from memstribo.job.chain import RunChain, RunOptions
+    from memstribo.job.chain import RunChain
+    from memstribo.job.options import RunOptions
     from memstribo.errors import InputError
     from memstribo.parameters import read_config
 

@@ -376,7 +376,7 @@ def render_report(result, validation=None) -> str:
 
     Parameters
     ----------
-    result : memstribo.job.chain.RunResult
+    result : memstribo.job.options.RunResult
         The run.
     validation : tuple, optional
         ``(rows, error)`` as :func:`validation_rows` returns; None: the table is not shown (yet).
