@@ -364,3 +364,24 @@ def test_bad_npy(tmp_path):
     np.save(tmp_path / "map.npy", np.zeros((5, 5)))
     with pytest.raises(DataFileError, match=r"shape \(n, 2\)"):
         read_topography(tmp_path / "map.npy")
+
+
+def test_plain_text_goes_to_surfacetopography_first_and_memstribo_is_the_fallback(tmp_path):
+    """#14 item 1: SurfaceTopography reads plain x-z text first (memstribo keeps the header's per-axis units, the
+    x origin and its checks); what SurfaceTopography refuses (a z-only column) memstribo's own parser reads."""
+    from memstribo.surfaces.readers import read_topography
+
+    xz = tmp_path / "xz.csv"
+    xz.write_text("x [um], z [nm]\n5, 1\n6, 2\n7, 1.5\n8, 0.5\n", encoding="utf-8")
+    profile = read_topography(xz)
+    assert "read by SurfaceTopography" in profile.source and "x in um, heights in nm" in profile.source
+    np.testing.assert_allclose(profile.x, [5e-6, 6e-6, 7e-6, 8e-6], rtol=1e-12)  # the file's origin, in um
+    np.testing.assert_allclose(profile.z, [1e-9, 2e-9, 1.5e-9, 0.5e-9], rtol=1e-12)  # heights in nm
+    z_only = tmp_path / "z.txt"
+    z_only.write_text("1e-9\n2e-9\n1.5e-9\n0.5e-9\n", encoding="utf-8")
+    profile = read_topography(z_only, physical_size="4 um")
+    assert "read by" not in profile.source and "length 4e-06 m given" in profile.source
+    reversed_x = tmp_path / "reversed.txt"
+    reversed_x.write_text("0 1e-9\n2e-8 2e-9\n1e-8 3e-9\n3e-8 1e-9\n", encoding="utf-8")
+    with pytest.raises(DataFileError, match="x decreases at data row 3"):  # memstribo's check, not a silent sort
+        read_topography(reversed_x)

@@ -393,8 +393,46 @@ def _header_units(header, path):
     return (units + [None, None])[:2] if len(units) == 2 else (None, None)
 
 
-def _read_plain(header, rows, path, name, unit, declared_unit=None, physical_size=None):
-    """Plain x-z (or z) numeric text: memstribo's own strict reader."""
+def _read_plain_text(text, plain, path, name, unit, physical_size=None):
+    """Plain numeric x-z (or z) text: SurfaceTopography reads it first (its numbers); memstribo then applies what
+    SurfaceTopography does not keep, the header's per-axis units (``x [um], z [nm]``) and the x origin of a uniform
+    scan, and its own checks (x strictly increasing, finite heights, plausible sizes). Text SurfaceTopography
+    refuses (a z-only column, odd delimiters, ...) is read by memstribo's own parser, the fallback."""
+    header, rows = plain
+    try:
+        reader = _st_open(io.BytesIO(text.encode("utf-8")), path, ".txt")
+        with _QuietLogs():
+            topography = reader.topography()
+            if topography.dim != 1:
+                raise _NotRead("not a line scan")
+            x, z = topography.positions_and_heights()
+    except MemoryError:
+        raise
+    except Exception:  # SurfaceTopography refused it: memstribo's own reader
+        return _read_plain(header, rows, path, name, unit, physical_size=physical_size)
+    first = [f for f in _SPLIT.split(rows[0].strip().rstrip(",;").strip()) if f]
+    if len(first) != 2 or len(x) != len(rows):  # not the x-z table memstribo would read: its own reader decides
+        return _read_plain(header, rows, path, name, unit, physical_size=physical_size)
+    x = np.asarray(x, dtype=float)
+    x = x - x[0] + float(first[0])  # a uniform line scan of SurfaceTopography starts at 0; keep the file's origin
+    try:
+        x_file = np.array([float(_SPLIT.split(row.strip().rstrip(",;").strip())[0]) for row in rows])
+    except ValueError:
+        x_file = None
+    scale = float(np.max(np.abs(x_file))) if x_file is not None and x_file.size else 0.0
+    if x_file is None or not np.allclose(x, x_file, rtol=0.0, atol=1e-9 * max(scale, 1e-300)):
+        # SurfaceTopography reordered or regularised the positions (reversed, repeated or uneven x): memstribo's
+        # own reader says what is wrong with the file
+        return _read_plain(header, rows, path, name, unit, physical_size=physical_size)
+    array = np.column_stack([x, np.ma.filled(np.ma.asarray(z, dtype=float), np.nan)])
+    return _read_plain(header, rows, path, name, unit, physical_size=physical_size, array=array,
+                       reader="read by SurfaceTopography")
+
+
+def _read_plain(header, rows, path, name, unit, declared_unit=None, physical_size=None, array=None,
+                reader="read by memstribo"):
+    """Plain x-z (or z) numeric text: memstribo's own strict reader, or the x-z ``array`` SurfaceTopography read
+    from it (then only the header's units and the checks are memstribo's)."""
     x_unit, z_unit = _header_units(header, path)
     if x_unit is not None:
         if unit is not None and (LENGTH_UNITS[unit] != LENGTH_UNITS[x_unit] or LENGTH_UNITS[unit] != LENGTH_UNITS[z_unit]):
@@ -404,6 +442,12 @@ def _read_plain(header, rows, path, name, unit, declared_unit=None, physical_siz
     else:
         x_unit = z_unit = _check_unit_option(declared_unit, unit, path) if declared_unit else (unit or "m")
         unit_note = x_unit
+    if array is not None:
+        if physical_size is not None:
+            raise DataFileError(f"{path}: the x column gives the profile length; --physical-size is only for files "
+                                "without one.")
+        return _profile_from_xz(array[:, 0], array[:, 1], path, name, f"{path} (x-z text, {unit_note}, {reader})",
+                                x_unit, z_unit)
     widths = set()
     table = []
     for i, row in enumerate(rows):
@@ -781,7 +825,8 @@ def _read_container(path, name, channel, unit, physical_size=None):
 #: largest zip member memstribo unpacks (a crafted zip can unpack to far more than it holds)
 _MEMBER_MAX_BYTES = 2 * 2**30
 
-#: text extensions: read by memstribo itself when the content is plain numbers (or the header export)
+#: text extensions: plain numbers go to SurfaceTopography first, then memstribo's units and checks; the one-line
+#: 'Image Width' export (which SurfaceTopography reads as a 16384 x 1 map) is memstribo's own
 _PLAIN_FIRST = _TEXT
 
 
@@ -790,10 +835,11 @@ def read_topography(path, channel=None, unit=None, physical_size=None):
 
     Every format SurfaceTopography reads goes through it (instrument files, and text or CSV
     files with an instrument header such as a Bruker Dektak CSV export), with the file's
-    channels, units and sizes. memstribo reads three things itself: plain numeric x-z (or z)
-    text, whose column-header line may name per-axis units (``x [um], z [nm]``); the one-line
-    text export with an 'Image Width'/'Image Height' header, which SurfaceTopography reads as
-    a 16384 x 1 map; and ``.npy`` x-z arrays. Text is read in UTF-8 (with or without BOM),
+    channels, units and sizes. Plain numeric x-z text goes to SurfaceTopography first as well;
+    memstribo then applies the per-axis units of its column-header line (``x [um], z [nm]``) and
+    its checks. memstribo's own readers are the fallback for text SurfaceTopography refuses (a
+    z-only column), and read the one-line text export with an 'Image Width'/'Image Height'
+    header (which SurfaceTopography reads as a 16384 x 1 map) and ``.npy`` x-z arrays. Text is read in UTF-8 (with or without BOM),
     UTF-16 (with BOM) or Latin-1, with LF, CRLF or CR line endings.
 
     Parameters
@@ -880,7 +926,7 @@ def _read(path, shown, channel, unit, physical_size):
             elif text is not None:
                 plain = _plain_rows(text)
                 if plain is not None:
-                    result = _read_plain(*plain, shown, name, unit, physical_size=physical_size)
+                    result = _read_plain_text(text, plain, shown, name, unit, physical_size=physical_size)
         if result is None:
             known = suffix in _ST_EXTENSIONS or suffix in _TEXT or bool(re.fullmatch(r"\.\d{3}", suffix))
             if known:
