@@ -466,6 +466,22 @@ def test_adhesion_inside_the_contact_solve(params):
     assert adhesive["cof_mean"] > plain["cof_mean"]
 
 
+@pytest.mark.parametrize("counter_modulus", ["1 MPa", "1 GPa"])
+def test_a_counter_body_too_soft_for_the_half_space_model_is_refused(params, counter_modulus):
+    """#15 item 4 at 1 MPa: the Hertz contact of the teeth would be wider than their radius of curvature (a/R = 21
+    at the torque's load); the half-space model gives no answer there, so the cycle is refused with the reason,
+    never run into a fixed point that cannot converge."""
+    with pytest.raises(InputError, match=r"radius of relative curvature.*a/R_ef <= 0.5"):
+        simulate_mesh(params.updated({"counter_youngs_modulus": counter_modulus}), steps=21)
+
+
+def test_a_stretched_half_space_is_warned(params):
+    ds = simulate_mesh(params.updated({"counter_youngs_modulus": "20 GPa"}), steps=11)  # a/R = 0.16 ... 0.2
+    soft = simulate_mesh(params.updated({"counter_youngs_modulus": "5 GPa"}), steps=11)  # a/R about 0.3
+    assert not any("half-space" in w for w in summarize(ds)["warnings"])
+    assert any("half-space contact model" in w for w in summarize(soft)["warnings"])
+
+
 @pytest.mark.parametrize("counter_modulus", ["20 GPa", "400 GPa"])
 def test_dissimilar_materials_converge_or_say_so(params, counter_modulus):
     """#15 item 4: the friction fixed point of dissimilar teeth is under-relaxed: it converges, or the dataset

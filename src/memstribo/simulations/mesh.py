@@ -100,6 +100,10 @@ SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic",
                 "mesh_efficiency_p95", "per_realisation")
 SUMMARY_UNITS = {key: quantity_unit(key) for key in SUMMARY_KEYS}
 
+#: Largest Hertz half-width over radius of relative curvature a / R_ef that a meshing cycle accepts: beyond it the
+#: contact is as wide as the teeth's curvature and the half-space model (a << R) says nothing (#15 item 4).
+HERTZ_RATIO_LIMIT = 0.5
+
 _GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
 _SILVER = math.sqrt(2.0) - 1.0
 
@@ -164,6 +168,9 @@ class MeshSetup:
         How the rows' lines were made (measured, synthesised), and the lattice offsets.
     realisation : int
         Index of the roughness realisation.
+    hertz_width_ratio : float
+        Largest Hertz half-width over the radius of relative curvature a / R_ef of the cycle [-]
+        (the half-space model needs a << R; refused above :data:`HERTZ_RATIO_LIMIT`, warned above 0.2).
     """
 
     pair: GearPair
@@ -181,6 +188,7 @@ class MeshSetup:
     grid_spacing: float
     row_roughness: object
     realisation: int
+    hertz_width_ratio: float = 0.0
 
 
 def _positions(pair: GearPair, steps: int) -> np.ndarray:
@@ -266,6 +274,14 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
     modulus = contact_modulus_of(params)
     hertz = hertz_line_contact(load, rows * w_adh, pair.effective_radius(positions), modulus)
     a_max = float(np.max(hertz.half_width))
+    ratio = float(np.max(hertz.half_width / pair.effective_radius(positions)))
+    if ratio > HERTZ_RATIO_LIMIT:  # a contact as wide as the teeth's curvature: no half-space, no Hertz, no answer
+        raise InputError(
+            f"the contact of the teeth would be {a_max * 1e6:.3g} um wide on each side, {ratio:.2g} times their radius "
+            f"of relative curvature (E* = {modulus / 1e9:.3g} GPa under {float(np.max(load)) * 1e3:.3g} mN): the "
+            f"elastic half-space contact model needs a half-width well below the radius (allowed: a/R_ef <= "
+            f"{HERTZ_RATIO_LIMIT:g}). A counter body this soft, or this load, is outside the model; use a stiffer "
+            "counter_youngs_modulus or a smaller load.")
     dx = params["mesh_grid_spacing"]
     if dx is None:
         dx = 2 * a_max / int(params["mesh_elements_across_contact"])
@@ -297,7 +313,7 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
         zg = rough.level_profile(scan_g)
         gear.append((zg.x - 0.5 * (zg.x[0] + zg.x[-1]) + 0.5 * (lo2 + hi2), zg.z))
     return MeshSetup(pair, positions, step_time, load, rows, rows * w_adh, grid, pinion, gear, lines.name,
-                     lines.synthetic, lines.source, float(dx), lines, realisation)
+                     lines.synthetic, lines.source, float(dx), lines, realisation, ratio)
 
 
 def _heights(profile, coordinate):
@@ -1042,6 +1058,9 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
 def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta) -> list[str]:
     """Physical limits and numerical trouble of a cycle, as sentences (MODEL 7c)."""
     warnings = []
+    if setup.hertz_width_ratio > 0.2:
+        warnings.append(f"the Hertz half-width reaches {setup.hertz_width_ratio:.2g} of the radius of relative "
+                        "curvature: the half-space contact model (a << R) is stretched")
     unconverged = int((out["unconverged"] > 0).sum())
     if unconverged:
         warnings.append(f"the contact solve did not converge in {unconverged} step(s) (flagged in contact_converged)")
