@@ -39,7 +39,7 @@ References
    gradients, deflation, and an FFT-based preconditioner', J. Comput. Phys. 257 (2014) 333-351.
    :doi:`10.1016/j.jcp.2013.10.005`
 .. [3] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985.
-.. [4] J. Rey, G. Anciaux, J.-F. Molinari, 'Normal adhesive contact on rough surfaces: efficient
+.. [4] V. Rey, G. Anciaux, J.-F. Molinari, 'Normal adhesive contact on rough surfaces: efficient
    algorithm for FFT-based BEM resolution', Comput. Mech. 60 (2017) 69-81.
    :doi:`10.1007/s00466-017-1392-5`
 .. [5] M. Bazrafshan, M. B. de Rooij, M. Valefi, D. J. Schipper, 'Numerical method for the
@@ -999,6 +999,7 @@ def _cohesive_fraction(gap, h0, contact, periodic):
     return fraction
 
 
+@cites("maugis_1992", "rey_2017", "bazrafshan_2017", "model")
 def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
                         fraction_tolerance, max_outer=_ADHESIVE_MAX_OUTER):
     """Fixed point on the cohesive fraction: traction -sigma0*fraction, inner non-adhesive solve for p+.
