@@ -309,3 +309,25 @@ def test_adhesive_solve_cites_its_sources():
         assert {"baney_hui_1997", "johnson_greenwood_2008"} <= set(function.references)
     for key in ("rey_2017", "bazrafshan_2017", "baney_hui_1997", "johnson_greenwood_2008"):
         assert "doi:10." in REFERENCES[key]
+
+
+def test_limit_cycle_of_the_zone_is_damped(monkeypatch):
+    """A step of the thesis load case (interface_model=thesis, 567 points, warm start): the plain zone update cycles.
+
+    With period 11 an element at a front creeps, its neighbour jumps, it falls back; the update is
+    under-relaxed once the largest change of the fraction has stopped shrinking, and the zone settles.
+    """
+    from pathlib import Path
+
+    import memstribo.contact as contact
+
+    case = np.load(Path(__file__).parent / "data" / "adhesive_limit_cycle.npz")
+    kwargs = dict(load=float(case["load"]), tolerance=float(case["tolerance"]), initial_pressure=case["initial_pressure"],
+                  cohesive_stress=float(case["cohesive_stress"]), cohesive_range=float(case["cohesive_range"]))
+    sol = solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs)
+    assert sol.converged, sol.message
+    assert sol.load == pytest.approx(kwargs["load"], rel=1e-9)
+    assert np.all(sol.pressure >= -kwargs["cohesive_stress"] * (1 + 1e-12))
+    monkeypatch.setattr(contact, "_STALLED_UPDATES", 10**6)  # without the damping: the cycle
+    plain = solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs)
+    assert not plain.converged and "did not settle" in plain.message

@@ -73,6 +73,10 @@ _ZONE_LOAD_TOLERANCE = 1e-4
 _ZONE_MAX_CHANGE = 0.25
 #: Gap accuracy of the inner solves, as a fraction of h0 times the last change of the cohesive fraction.
 _GAP_FRACTION = 0.01
+#: Updates without a new smallest change of the cohesive fraction after which the update is
+#: under-relaxed (halved each time, down to _MIN_RELAXATION): breaks limit cycles at fronts.
+_STALLED_UPDATES = 20
+_MIN_RELAXATION = 1.0 / 16.0
 #: Loosest relative tolerance of the inner solves.
 _LOOSE_TOLERANCE = 1e-4
 #: Contact sets up to this size are solved by Cholesky under approach control (larger: the CG).
@@ -1015,6 +1019,10 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
     gaps = []
     state = None
     change = 1.0
+    # under-relaxation, engaged only if the largest change of the fraction stops shrinking: the
+    # plain update can fall into a limit cycle at a front (an element between two rough-surface
+    # asperities creeps, its neighbour jumps, it falls back: the thesis load case, 567 points)
+    relax, best, stalled = 1.0, np.inf, 0
     for outer in range(1, max_outer + 1):
         h_eff = h - sigma0 * operator.displacement(fraction) if fraction.any() else h
         # inexact inner solves: a gap error of _GAP_FRACTION * change * h0 moves a front by a small
@@ -1037,6 +1045,12 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             if tol <= tolerance:
                 return state + (True, "")
             change = 0.0  # settled on a loose solve: once more at the full tolerance
+        if change < best:
+            best, stalled = change, 0
+        else:
+            stalled += 1
+            if stalled >= _STALLED_UPDATES and relax > _MIN_RELAXATION:
+                relax, stalled = 0.5 * relax, 0
         # the plain update creeps (the front moves a fixed fraction, often ~0.9, of the remaining
         # way per update); every third update the gap outside the contact is extrapolated by
         # Aitken's rule with the ratio of its last two changes (plain updates in between correct
@@ -1047,9 +1061,11 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
             denominator = _dot(d0, d0)
             ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
-            if ratio >= _AITKEN_MIN_RATIO:  # a creeping front (a smooth contact); rough contacts rarely
+            if ratio >= _AITKEN_MIN_RATIO and relax == 1.0:  # a creeping front (a smooth contact); rough contacts rarely
                 new = _cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, periodic)
         del gaps[:-3]
+        if relax < 1.0:  # damped: part of the way, but every element in contact carries the full stress
+            new = np.where(contact, 1.0, fraction + relax * (new - fraction))
         fraction = new
         guess = p_plus
     return state + (False, f"the cohesive zone did not settle (last change of the cohesive fraction {change:.1e})")
