@@ -65,6 +65,10 @@ __all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "str
 #: Set updates of the cohesive zone (load control) or of the contact and cohesive sets (approach
 #: control) before the adhesive solve gives up (converged=False).
 _ADHESIVE_MAX_OUTER = 200
+#: Cohesive-zone updates allowed on grids of at most _SMALL_ZONE elements (an update costs ~0.3 ms
+#: there; damped updates, see _STALLED_UPDATES, may need several hundred: thesis load case).
+_SMALL_ZONE_MAX_UPDATES = 1000
+_SMALL_ZONE = 2048
 #: The cohesive zone has settled when no element's cohesive fraction changes by more than this.
 _FRACTION_TOLERANCE = 1e-4
 #: ... or when the cohesive load changes by less than this relative amount (sum of the changes of
@@ -77,6 +81,8 @@ _GAP_FRACTION = 0.01
 #: under-relaxed (halved each time, down to _MIN_RELAXATION): breaks limit cycles at fronts.
 _STALLED_UPDATES = 20
 _MIN_RELAXATION = 1.0 / 16.0
+#: ... and doubled again after this many updates in a row that each reach a new smallest change.
+_IMPROVING_UPDATES = 5
 #: Loosest relative tolerance of the inner solves.
 _LOOSE_TOLERANCE = 1e-4
 #: Contact sets up to this size are solved by Cholesky under approach control (larger: the CG).
@@ -1022,7 +1028,7 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
     # under-relaxation, engaged only if the largest change of the fraction stops shrinking: the
     # plain update can fall into a limit cycle at a front (an element between two rough-surface
     # asperities creeps, its neighbour jumps, it falls back: the thesis load case, 567 points)
-    relax, best, stalled = 1.0, np.inf, 0
+    relax, best, stalled, improving = 1.0, np.inf, 0, 0
     for outer in range(1, max_outer + 1):
         h_eff = h - sigma0 * operator.displacement(fraction) if fraction.any() else h
         # inexact inner solves: a gap error of _GAP_FRACTION * change * h0 moves a front by a small
@@ -1047,7 +1053,11 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             change = 0.0  # settled on a loose solve: once more at the full tolerance
         if change < best:
             best, stalled = change, 0
+            improving += 1
+            if relax < 1.0 and improving >= _IMPROVING_UPDATES:  # converging again: less damping
+                relax, improving = min(1.0, 2.0 * relax), 0
         else:
+            improving = 0
             stalled += 1
             if stalled >= _STALLED_UPDATES and relax > _MIN_RELAXATION:
                 relax, stalled = 0.5 * relax, 0
@@ -1190,7 +1200,9 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
             guess = nested_guess
         (p, gap, contact, fraction, approach_out, iterations, outer, residual, settled,
          why) = _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
-                                    fraction_tolerance, _COARSE_MAX_UPDATES if internal else _ADHESIVE_MAX_OUTER)
+                                    fraction_tolerance,
+                                    _COARSE_MAX_UPDATES if internal
+                                    else _SMALL_ZONE_MAX_UPDATES if n <= _SMALL_ZONE else _ADHESIVE_MAX_OUTER)
         if internal:
             ok = np.isfinite(residual)
             return (p + sigma0 * fraction if ok else None), (fraction if ok else None), iterations + coarse[0]
