@@ -80,7 +80,7 @@ _GAP_FRACTION = 0.01
 #: Updates without a new smallest change of the cohesive fraction after which the update is
 #: under-relaxed (halved each time, down to _MIN_RELAXATION): breaks limit cycles at fronts.
 _STALLED_UPDATES = 20
-_MIN_RELAXATION = 1.0 / 16.0
+_MIN_RELAXATION = 0.25
 #: ... and doubled again after this many updates in a row that each reach a new smallest change.
 _IMPROVING_UPDATES = 5
 #: Loosest relative tolerance of the inner solves.
