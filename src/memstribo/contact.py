@@ -1041,7 +1041,7 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             return state + (False, why)
         new = _cohesive_fraction(gap, h0, contact, periodic)
         step = np.abs(new - fraction)
-        change = step.max()
+        change = measured = step.max()
         # settled: no element's fraction moves by more than fraction_tolerance, or (many fronts,
         # a few of them creeping) the zone's load moves by less than _ZONE_LOAD_TOLERANCE of it
         # and no element by more than _ZONE_MAX_CHANGE
@@ -1051,8 +1051,8 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             if tol <= tolerance:
                 return state + (True, "")
             change = 0.0  # settled on a loose solve: once more at the full tolerance
-        if change < best:
-            best, stalled = change, 0
+        if measured < best:
+            best, stalled = measured, 0
             improving += 1
             if relax < 1.0 and improving >= _IMPROVING_UPDATES:  # converging again: less damping
                 relax, improving = min(1.0, 2.0 * relax), 0
@@ -1071,7 +1071,8 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
             denominator = _dot(d0, d0)
             ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
-            if ratio >= _AITKEN_MIN_RATIO and relax == 1.0:  # a creeping front (a smooth contact); rough contacts rarely
+            # a creeping front (a smooth contact; rough contacts rarely), not while damped
+            if ratio >= _AITKEN_MIN_RATIO and relax == 1.0:
                 new = _cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, periodic)
         del gaps[:-3]
         if relax < 1.0:  # damped: part of the way, but every element in contact carries the full stress
