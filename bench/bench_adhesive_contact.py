@@ -47,13 +47,19 @@ def timed(function, repeat):
 
 def main(argv=None):
     from memstribo.physics.contact import solve_line_contact
+    from memstribo.heap import keep_freed_memory
+
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", type=int, nargs="+", default=[10, 12, 14, 16], help="exponents of N")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--tolerance", type=float, default=1e-8)
     parser.add_argument("--json", help="write the rows to this file")
+    parser.add_argument("--system-malloc", action="store_true",
+                        help="leave glibc's allocator as it is (default: memstribo.heap.keep_freed_memory, as the CLI)")
     args = parser.parse_args(argv)
+    heap = False if args.system_malloc else keep_freed_memory()
+    print(f"freed memory kept in the heap (memstribo.heap): {heap}")
     rows = []
     print(f"{'N':>7} {'plain [ms]':>11} {'adhesive [ms]':>14} {'ratio':>6} {'CPU ratio':>10} {'contact %':>10} "
           f"{'adh. contact %':>15} {'zone %':>7} {'updates':>8} converged")

@@ -290,3 +290,44 @@ def test_cli_bad_cohesive_override():
         code = main(["contact", "--flat", "--radius", "10 um", "--adhesion", "--cohesive-stress", "-1 GPa", "--json"])
     assert code != 0
     assert "--cohesive-stress" in err.getvalue()
+
+
+def test_adhesive_solve_cites_its_sources():
+    """An adhesive solve records the adhesive BEM papers; an approach-controlled solve without adhesion does not."""
+    from memstribo.physics import closed_form as reference
+    from memstribo.references import REFERENCES, reset_used_references, used_references
+
+    h, dx = cylinder(256, 512e-9, 10e-6)
+    reset_used_references()
+    solve_line_contact(h, dx, 85e9, approach=0.1e-9)
+    assert "rey_2017" not in dict(used_references())
+    solve_line_contact(h, dx, 85e9, load=1.0, cohesive_stress=1.78e9, cohesive_range=0.25e-9)
+    keys = dict(used_references())
+    assert {"maugis_1992", "rey_2017", "bazrafshan_2017"} <= set(keys)
+    for function in (reference.maugis_line_parameter, reference.maugis_dugdale_line_load,
+                     reference.maugis_dugdale_line_pull_off, reference.dugdale_rigid_line_pull_off):
+        assert {"baney_hui_1997", "johnson_greenwood_2008"} <= set(function.references)
+    for key in ("rey_2017", "bazrafshan_2017", "baney_hui_1997", "johnson_greenwood_2008"):
+        assert "doi:10." in REFERENCES[key]
+
+
+def test_limit_cycle_of_the_zone_is_damped(monkeypatch):
+    """A step of the thesis load case (interface_model=thesis, 567 points, warm start): the plain zone update cycles.
+
+    With period 11 an element at a front creeps, its neighbour jumps, it falls back; the update is
+    under-relaxed once the largest change of the fraction has stopped shrinking, and the zone settles.
+    """
+    from pathlib import Path
+
+    import memstribo.physics.contact as contact
+
+    case = np.load(Path(__file__).parent / "data" / "adhesive_limit_cycle.npz")
+    kwargs = dict(load=float(case["load"]), tolerance=float(case["tolerance"]), initial_pressure=case["initial_pressure"],
+                  cohesive_stress=float(case["cohesive_stress"]), cohesive_range=float(case["cohesive_range"]))
+    sol = solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs)
+    assert sol.converged, sol.message
+    assert sol.load == pytest.approx(kwargs["load"], rel=1e-9)
+    assert np.all(sol.pressure >= -kwargs["cohesive_stress"] * (1 + 1e-12))
+    monkeypatch.setattr(contact, "_STALLED_UPDATES", 10**6)  # without the damping: the cycle
+    plain = solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs)
+    assert not plain.converged and "did not settle" in plain.message

@@ -114,7 +114,7 @@ def test_package_import_is_light(module):
 #: The layers of the tree (docs/architecture.md), lowest first; a module may import only from its own layer or
 #: from layers below it. The foundation (errors, units, checks, references, output, parameters) serves all.
 LAYERS = [
-    ("foundation", ("memstribo.errors", "memstribo.units", "memstribo.checks", "memstribo.references", "memstribo.quantities",
+    ("foundation", ("memstribo.errors", "memstribo.units", "memstribo.checks", "memstribo.references", "memstribo.quantities", "memstribo.heap",
                     "memstribo.output", "memstribo.parameters")),
     ("surfaces", ("memstribo.surfaces",)),
     ("materials", ("memstribo.materials",)),

@@ -50,6 +50,23 @@ REFERENCES: dict[str, str] = {
         "D. Maugis, 'Adhesion of spheres: the JKR-DMT transition using a Dugdale model', "
         "J. Colloid Interface Sci. 150 (1992) 243-269. doi:10.1016/0021-9797(92)90285-T"
     ),
+    "rey_2017": (
+        "V. Rey, G. Anciaux, J.-F. Molinari, 'Normal adhesive contact on rough surfaces: efficient algorithm for "
+        "FFT-based BEM resolution', Comput. Mech. 60 (2017) 69-81. doi:10.1007/s00466-017-1392-5"
+    ),
+    "bazrafshan_2017": (
+        "M. Bazrafshan, M. B. de Rooij, M. Valefi, D. J. Schipper, 'Numerical method for the adhesive normal "
+        "contact analysis based on a Dugdale approximation', Tribol. Int. 112 (2017) 117-128. "
+        "doi:10.1016/j.triboint.2017.04.001"
+    ),
+    "baney_hui_1997": (
+        "J. M. Baney, C.-Y. Hui, 'A cohesive zone model for the adhesion of cylinders', J. Adhes. Sci. Technol. "
+        "11 (1997) 393-406. doi:10.1163/156856197X00822"
+    ),
+    "johnson_greenwood_2008": (
+        "K. L. Johnson, J. A. Greenwood, 'A Maugis analysis of adhesive line contact', J. Phys. D: Appl. Phys. "
+        "41 (2008) 155315. doi:10.1088/0022-3727/41/15/155315"
+    ),
     "kendall_1971": (
         "K. Kendall, 'The adhesion and surface energy of elastic solids', J. Phys. D 4 (1971) 1186. "
         "doi:10.1088/0022-3727/4/8/320"

@@ -104,6 +104,9 @@ def load_parameters(args: argparse.Namespace):
 
 
 def main(argv: list[str] | None = None) -> int:
+    from memstribo.heap import keep_freed_memory
+
+    keep_freed_memory()  # large FFT grids: no page faults at every allocation (memstribo.heap)
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "handler", None):

@@ -10,7 +10,7 @@ contact"; docs/model.md §7c).
 References
 ----------
 .. [1] D. Maugis, J. Colloid Interface Sci. 150 (1992) 243-269 (the Dugdale model of adhesion).
-.. [2] J. Rey, G. Anciaux, J.-F. Molinari, Comput. Mech. 60 (2017) 69-81 (adhesive BEM).
+.. [2] V. Rey, G. Anciaux, J.-F. Molinari, Comput. Mech. 60 (2017) 69-81 (adhesive BEM).
 .. [3] J. M. Baney, C.-Y. Hui, J. Adhesion Sci. Technol. 11 (1997) 393-406 (Maugis-Dugdale cylinder).
 """
 
@@ -104,7 +104,7 @@ def _curve(rows):
     return LoadApproachCurve(*(np.asarray(c, dtype=bool if i == 4 else float) for i, c in enumerate(columns)))
 
 
-@cites("maugis_1992", "model")
+@cites("maugis_1992", "rey_2017", "model")
 def load_approach_curve(separation, dx, contact_modulus, approaches, *, cohesive_stress, cohesive_range,
                         periodic=False, tolerance=1e-8, initial_pressure=None):
     """Follow a sequence of approaches quasi-statically (each step warm-started from the previous one).
@@ -152,7 +152,7 @@ def load_approach_curve(separation, dx, contact_modulus, approaches, *, cohesive
     return _curve(rows), pressure
 
 
-@cites("maugis_1992", "model")
+@cites("maugis_1992", "baney_hui_1997", "johnson_greenwood_2008", "model")
 def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_stress, *, points=2048, length=None,
                           steps=40, tolerance=1e-8, periodic=False, max_steps=None):
     r"""Pull-off of a smooth cylinder from a flat with a Maugis-Dugdale cohesive zone (per unit length).

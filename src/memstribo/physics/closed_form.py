@@ -532,7 +532,7 @@ def jkr_line_pull_off_half_width(radius, contact_modulus, work_of_adhesion):
     return np.cbrt(2.0 * radius**2 * w / (np.pi * modulus))
 
 
-@cites("maugis_1992")
+@cites("maugis_1992", "johnson_greenwood_2008", "baney_hui_1997")
 def maugis_line_parameter(radius, contact_modulus, work_of_adhesion, cohesive_stress):
     r"""Maugis parameter of a line contact [-].
 
@@ -601,7 +601,7 @@ def _maugis_line_scalar(a, radius, modulus, w, sigma0):
     return load, m * a
 
 
-@cites("maugis_1992", "johnson_1985")
+@cites("maugis_1992", "baney_hui_1997", "johnson_greenwood_2008", "johnson_1985")
 def maugis_dugdale_line_load(half_width, radius, contact_modulus, work_of_adhesion, cohesive_stress):
     r"""Maugis-Dugdale line contact (cylinder on a flat, per unit length): load and cohesive zone at a half-width.
 
@@ -659,7 +659,7 @@ def maugis_dugdale_line_load(half_width, radius, contact_modulus, work_of_adhesi
     return load, c
 
 
-@cites("maugis_1992", "johnson_1985")
+@cites("maugis_1992", "baney_hui_1997", "johnson_greenwood_2008", "johnson_1985")
 def maugis_dugdale_line_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_stress):
     r"""Pull-off of the Maugis-Dugdale line contact under load control (least load of :func:`maugis_dugdale_line_load`).
 
@@ -696,7 +696,7 @@ def maugis_dugdale_line_pull_off(radius, contact_modulus, work_of_adhesion, cohe
     return float(result.fun), half_width
 
 
-@cites("maugis_1992")
+@cites("maugis_1992", "johnson_greenwood_2008", "baney_hui_1997")
 def dugdale_rigid_line_pull_off(radius, work_of_adhesion, cohesive_stress):
     r"""Pull-off line load of a rigid cylinder on a rigid flat with a Dugdale law (small Maugis parameter) [N/m].
 

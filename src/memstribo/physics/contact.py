@@ -39,7 +39,7 @@ References
    gradients, deflation, and an FFT-based preconditioner', J. Comput. Phys. 257 (2014) 333-351.
    :doi:`10.1016/j.jcp.2013.10.005`
 .. [3] K. L. Johnson, Contact Mechanics, Cambridge University Press, 1985.
-.. [4] J. Rey, G. Anciaux, J.-F. Molinari, 'Normal adhesive contact on rough surfaces: efficient
+.. [4] V. Rey, G. Anciaux, J.-F. Molinari, 'Normal adhesive contact on rough surfaces: efficient
    algorithm for FFT-based BEM resolution', Comput. Mech. 60 (2017) 69-81.
    :doi:`10.1007/s00466-017-1392-5`
 .. [5] M. Bazrafshan, M. B. de Rooij, M. Valefi, D. J. Schipper, 'Numerical method for the
@@ -66,6 +66,10 @@ __all__ = ["ContactSolution", "solve_line_contact", "elastic_displacement", "str
 #: Set updates of the cohesive zone (load control) or of the contact and cohesive sets (approach
 #: control) before the adhesive solve gives up (converged=False).
 _ADHESIVE_MAX_OUTER = 200
+#: Cohesive-zone updates allowed on grids of at most _SMALL_ZONE elements (an update costs ~0.3 ms
+#: there; damped updates, see _STALLED_UPDATES, may need several hundred: thesis load case).
+_SMALL_ZONE_MAX_UPDATES = 1000
+_SMALL_ZONE = 2048
 #: The cohesive zone has settled when no element's cohesive fraction changes by more than this.
 _FRACTION_TOLERANCE = 1e-4
 #: ... or when the cohesive load changes by less than this relative amount (sum of the changes of
@@ -74,6 +78,12 @@ _ZONE_LOAD_TOLERANCE = 1e-4
 _ZONE_MAX_CHANGE = 0.25
 #: Gap accuracy of the inner solves, as a fraction of h0 times the last change of the cohesive fraction.
 _GAP_FRACTION = 0.01
+#: Updates without a new smallest change of the cohesive fraction after which the update is
+#: under-relaxed (halved each time, down to _MIN_RELAXATION): breaks limit cycles at fronts.
+_STALLED_UPDATES = 20
+_MIN_RELAXATION = 0.25
+#: ... and doubled again after this many updates in a row that each reach a new smallest change.
+_IMPROVING_UPDATES = 5
 #: Loosest relative tolerance of the inner solves.
 _LOOSE_TOLERANCE = 1e-4
 #: Contact sets up to this size are solved by Cholesky under approach control (larger: the CG).
@@ -1026,6 +1036,7 @@ def _cohesive_fraction(gap, h0, contact, periodic, zones=None):
     return fraction
 
 
+@cites("maugis_1992", "rey_2017", "bazrafshan_2017", "model")
 def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
                         fraction_tolerance, max_outer=_ADHESIVE_MAX_OUTER, zones=None):
     """Fixed point on the cohesive fraction: traction -sigma0*fraction, inner non-adhesive solve for p+.
@@ -1041,6 +1052,10 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
     gaps = []
     state = None
     change = 1.0
+    # under-relaxation, engaged only if the largest change of the fraction stops shrinking: the
+    # plain update can fall into a limit cycle at a front (an element between two rough-surface
+    # asperities creeps, its neighbour jumps, it falls back: the thesis load case, 567 points)
+    relax, best, stalled, improving = 1.0, np.inf, 0, 0
     for outer in range(1, max_outer + 1):
         h_eff = h - sigma0 * operator.displacement(fraction) if fraction.any() else h
         # inexact inner solves: a gap error of _GAP_FRACTION * change * h0 moves a front by a small
@@ -1053,7 +1068,7 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             return state + (False, why)
         new = _cohesive_fraction(gap, h0, contact, periodic, zones)
         step = np.abs(new - fraction)
-        change = step.max()
+        change = measured = step.max()
         # settled: no element's fraction moves by more than fraction_tolerance, or (many fronts,
         # a few of them creeping) the zone's load moves by less than _ZONE_LOAD_TOLERANCE of it
         # and no element by more than _ZONE_MAX_CHANGE
@@ -1063,6 +1078,16 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             if tol <= tolerance:
                 return state + (True, "")
             change = 0.0  # settled on a loose solve: once more at the full tolerance
+        if measured < best:
+            best, stalled = measured, 0
+            improving += 1
+            if relax < 1.0 and improving >= _IMPROVING_UPDATES:  # converging again: less damping
+                relax, improving = min(1.0, 2.0 * relax), 0
+        else:
+            improving = 0
+            stalled += 1
+            if stalled >= _STALLED_UPDATES and relax > _MIN_RELAXATION:
+                relax, stalled = 0.5 * relax, 0
         # the plain update creeps (the front moves a fixed fraction, often ~0.9, of the remaining
         # way per update); every third update the gap outside the contact is extrapolated by
         # Aitken's rule with the ratio of its last two changes (plain updates in between correct
@@ -1073,9 +1098,12 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
             d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
             denominator = _dot(d0, d0)
             ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
-            if ratio >= _AITKEN_MIN_RATIO:  # a creeping front (a smooth contact); rough contacts rarely
+            # a creeping front (a smooth contact; rough contacts rarely), not while damped
+            if ratio >= _AITKEN_MIN_RATIO and relax == 1.0:
                 new = _cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, periodic, zones)
         del gaps[:-3]
+        if relax < 1.0:  # damped: part of the way, but every element in contact carries its full stress
+            new = np.where(contact, new, fraction + relax * (new - fraction))
         fraction = new
         guess = p_plus
     return state + (False, f"the cohesive zone did not settle (last change of the cohesive fraction {change:.1e})")
@@ -1447,7 +1475,9 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
             guess = nested_guess
         (p, gap, contact, fraction, approach_out, iterations, outer, residual, settled,
          why) = _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
-                                    fraction_tolerance, _COARSE_MAX_UPDATES if internal else _ADHESIVE_MAX_OUTER,
+                                    fraction_tolerance,
+                                    _COARSE_MAX_UPDATES if internal
+                                    else _SMALL_ZONE_MAX_UPDATES if n <= _SMALL_ZONE else _ADHESIVE_MAX_OUTER,
                                     zones)
         if internal:
             ok = np.isfinite(residual)
