@@ -440,7 +440,7 @@ def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
         calls.append(names)
         return (lambda a, **kwargs: (a, 1)), (lambda c, b, **kwargs: (b, 0))
 
-    monkeypatch.setattr(contact_module.scipy.linalg, "get_lapack_funcs", not_definite)
+    monkeypatch.setattr(contact_module, "_lapack_cholesky", lambda: not_definite(("potrf", "potrs"), None))
     fallback = solve_line_contact(h, dx, E, load=W, tolerance=1e-10)
     assert calls  # the direct path was tried
     assert direct.converged and fallback.converged

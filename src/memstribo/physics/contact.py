@@ -138,7 +138,24 @@ FFT_WORKERS = 1
 
 
 @dataclass(frozen=True)
-class ContactSolution:
+class ContactSolve:
+    """The fields every contact solve returns (line and surface); their meanings are those of
+    :class:`ContactSolution` (the surface solution's are in :mod:`memstribo.physics.surface_contact`)."""
+
+    pressure: np.ndarray
+    gap: np.ndarray
+    contact: np.ndarray
+    approach: float
+    load: float
+    iterations: int
+    residual: float
+    converged: bool
+    solve_time: float
+    message: str
+
+
+@dataclass(frozen=True)
+class ContactSolution(ContactSolve):
     """Solution of a line contact.
 
     Attributes
@@ -193,16 +210,6 @@ class ContactSolution:
     applied load, which may be negative (tensile).
     """
 
-    pressure: np.ndarray
-    gap: np.ndarray
-    contact: np.ndarray
-    approach: float
-    load: float
-    iterations: int
-    residual: float
-    converged: bool
-    solve_time: float
-    message: str
     dx: float
     periodic: bool
     coarse_iterations: int = 0
@@ -325,6 +332,19 @@ def _dot(a, b):
     if a.size < 4096:
         return float(np.vdot(a, b))
     return float(np.multiply(a, b).sum())
+
+
+def _cg_update(p_c, r, t, q) -> bool:
+    """One conjugate-gradient step on the contact set, in place: ``p_c -= tau t``, ``r -= tau q`` with the step
+    ``tau = (r . t) / (q . t)`` along the search direction ``t`` (``q = A t``). False where ``q . t <= 0`` (no descent
+    left: the caller stops)."""
+    denominator = _dot(q, t)
+    if denominator <= 0.0:
+        return False
+    tau = _dot(r, t) / denominator
+    p_c -= tau * t
+    r -= tau * q
+    return True
 
 
 @functools.lru_cache(maxsize=16)
@@ -506,6 +526,15 @@ def _polonsky_keer(operator, h, p, target, tolerance, scale, cap, precondition, 
     return p, g, contact, g_mean, residual, iteration
 
 
+def _operator_and_limits(n, dx, modulus, periodic, reference_distance, max_iterations):
+    """(datum [m], CG iteration cap, half-plane operator, small problem?) of a solve on n elements."""
+    reference = float(reference_distance) if reference_distance is not None else n * dx
+    cap = int(max_iterations) if max_iterations is not None else max(1000, n // 4)
+    # the small-problem measures (direct solves, cold start, short coarse levels) pay off up to
+    # here; above, the coarse levels' guess matters more than their cost (2^18: 5-9 % slower)
+    return reference, cap, _half_plane(n, dx, modulus, bool(periodic), reference), n <= _SMALL_PROBLEM
+
+
 def _use_direct(operator, n_contact, small):
     return small and n_contact <= _DIRECT_MAX and operator.size <= _DENSE_GRID
 
@@ -517,16 +546,35 @@ def _direct_solution(operator, h, indices, total):
     ``A_CC y1 = 1`` and ``A_CC y2 = -h_C``, then ``p_C = approach y1 + y2``. Returns None if
     A_CC is not numerically positive definite (the caller then uses the CG).
     """
-    matrix = operator.matrix(indices, operator.green_kernel)
+    solved = _saddle_point(operator.matrix(indices, operator.green_kernel), h[indices], total)
+    if solved is None:
+        return None
+    p = np.zeros(h.size)
+    p[indices] = solved[0]
+    return p
+
+
+@functools.cache
+def _lapack_cholesky():
+    return scipy.linalg.get_lapack_funcs(("potrf", "potrs"), (np.empty(1),))
+
+
+def _saddle_point(matrix, h_contact, total):
+    """(p_C [Pa], approach [m]) of ``A_CC p_C - approach = -h_C`` with ``sum(p_C) = total``, or None.
+
+    Two solves with one Cholesky factor, ``A_CC y1 = 1`` and ``A_CC y2 = -h_C``, then
+    ``p_C = approach y1 + y2``; None if A_CC is not numerically positive definite (the caller then
+    uses the CG). ``matrix`` (symmetric, float64) is overwritten.
+    """
     # LAPACK directly (scipy.linalg.cho_factor/cho_solve add ~30 us per call); the matrix is
     # symmetric, so its transpose is the Fortran-ordered array potrf wants, without a copy
-    potrf, potrs = scipy.linalg.get_lapack_funcs(("potrf", "potrs"), (matrix,))
+    potrf, potrs = _lapack_cholesky()
     factor, info = potrf(matrix.T, lower=False, clean=False, overwrite_a=True)
     if info != 0:
         return None
-    rhs = np.empty((indices.size, 2), order="F")
+    rhs = np.empty((h_contact.size, 2), order="F")
     rhs[:, 0] = 1.0
-    np.negative(h[indices], out=rhs[:, 1])
+    np.negative(h_contact, out=rhs[:, 1])
     y, info = potrs(factor, rhs, lower=False, overwrite_b=True)
     if info != 0:
         return None
@@ -534,9 +582,7 @@ def _direct_solution(operator, h, indices, total):
     if not np.isfinite(ones_sum) or ones_sum <= 0.0:
         return None
     approach = (total - y[:, 1].sum()) / ones_sum
-    p = np.zeros(h.size)
-    p[indices] = approach * y[:, 0] + y[:, 1]
-    return p
+    return approach * y[:, 0] + y[:, 1], approach
 
 
 def _active_set(operator, h, p, target, tolerance, cap, precondition, max_outer=None, small=True):
@@ -638,12 +684,8 @@ def _active_set(operator, h, p, target, tolerance, cap, precondition, max_outer=
                     q -= (q.sum() / n_contact) * mask
                 else:
                     q -= q.sum() / n_contact
-                denominator = _dot(q, t)
-                if denominator <= 0.0:
+                if not _cg_update(p_c, r, t, q):
                     break
-                tau = _dot(r, t) / denominator
-                p_c -= tau * t
-                r -= tau * q
             p = np.zeros(n)
             p[packed] = p_c
         g = h + operator.displacement(p)
@@ -836,12 +878,8 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     dx = float(dx)
     modulus = float(contact_modulus)
     target = float(mean_pressure) if mean_pressure is not None else float(load) / (n * dx)
-    reference = float(reference_distance) if reference_distance is not None else n * dx
-    cap = int(max_iterations) if max_iterations is not None else max(1000, n // 4)
-    operator = _half_plane(n, dx, modulus, bool(periodic), reference)
-    # the small-problem measures (direct solves, cold start, short coarse levels) pay off up to
-    # here; above, the coarse levels' guess matters more than their cost (2^18: 5-9 % slower)
-    small = n <= _SMALL_PROBLEM
+    reference, cap, operator, small = _operator_and_limits(n, dx, modulus, periodic, reference_distance,
+                                                          max_iterations)
 
     offset = float(h.min())
     h = h - offset
@@ -1262,26 +1300,13 @@ def _dense_contact(matrix, h, total, contact, tolerance_abs):
     if not contact.any():
         contact = h <= h.min()
     seen = set()
-    potrf, potrs = scipy.linalg.get_lapack_funcs(("potrf", "potrs"), (matrix,))
     for _ in range(_MAX_OUTER):
         indices = np.flatnonzero(contact)
-        block = matrix[indices[:, None], indices]
-        # LAPACK directly (as _direct_solution: the scipy wrappers cost more than these small solves)
-        factor, info = potrf(block.T, lower=False, clean=False, overwrite_a=True)
-        if info != 0:
+        solved = _saddle_point(matrix[indices[:, None], indices], h[indices], total)
+        if solved is None:
             return None
-        rhs = np.empty((indices.size, 2), order="F")
-        rhs[:, 0] = 1.0
-        np.negative(h[indices], out=rhs[:, 1])
-        y, info = potrs(factor, rhs, lower=False, overwrite_b=True)
-        if info != 0:
-            return None
-        ones = y[:, 0].sum()
-        if not np.isfinite(ones) or ones <= 0.0:
-            return None
-        delta = (total - y[:, 1].sum()) / ones
         p = np.zeros(h.size)
-        p[indices] = delta * y[:, 0] + y[:, 1]
+        p[indices], delta = solved
         gap = h + matrix @ p - delta
         new = (contact & (p > 0.0)) | (~contact & (gap < -tolerance_abs))
         if not (new ^ contact).any():
@@ -1401,10 +1426,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     h0 = float(cohesive_range or 0.0)
     if sigma0 == 0.0 or h0 == 0.0:
         sigma0 = h0 = 0.0
-    reference = float(reference_distance) if reference_distance is not None else n * dx
-    cap = int(max_iterations) if max_iterations is not None else max(1000, n // 4)
-    operator = _half_plane(n, dx, modulus, bool(periodic), reference)
-    small = n <= _SMALL_PROBLEM
+    reference, cap, operator, small = _operator_and_limits(n, dx, modulus, periodic, reference_distance,
+                                                          max_iterations)
     offset = float(h.min())
     h = h - offset
     p_start = np.asarray(initial_pressure, dtype=float) if initial_pressure is not None else None

@@ -55,6 +55,8 @@ import numpy as np
 import scipy.fft
 
 from memstribo.errors import InputError
+from memstribo.physics.contact import _INNER_FACTOR as _LINE_INNER_FACTOR
+from memstribo.physics.contact import ContactSolve, _cg_update
 from memstribo.references import cites
 
 __all__ = ["SurfaceContactSolution", "solve_surface_contact", "surface_displacement", "rectangle_influence",
@@ -72,22 +74,31 @@ _COARSE_STEP_FRACTION = 0.1
 _COARSE_MAX_OUTER = 8
 #: Contact-set updates on the fine grid before the Polonsky-Keer fallback takes over.
 _MAX_OUTER = 40
-#: Inner CG tolerance relative to the complementarity violation of the previous contact set.
-_INNER_FACTOR = 0.2
+_INNER_FACTOR = _LINE_INNER_FACTOR  # the line contact's inner CG tolerance, for the same reason
 
 
 @dataclass(frozen=True)
-class SurfaceContactSolution:
+class SurfaceContactSolution(ContactSolve):
     """Solution of a rough surface contact.
 
     Attributes
     ----------
     pressure : numpy.ndarray
-        Contact pressure of each element [Pa], >= 0, shape (ny, nx).
+        Contact pressure [Pa] of each element, >= 0; shape (ny, nx).
     gap : numpy.ndarray
         Deformed gap [m], >= 0 when converged (zero on the contact set), shape (ny, nx).
     contact : numpy.ndarray
-        Boolean mask of the elements in contact (pressure > 0).
+        True where an element is in contact (pressure > 0); shape (ny, nx).
+    converged : bool
+        True when the residual met the tolerance within the iteration cap.
+    solve_time : float
+        Wall time of this solve [s].
+    message : str
+        What happened, in words.
+    periodic : bool
+        True for the periodic half-space.
+    coarse_iterations : int
+        CG iterations on the nested coarser grids (not in ``iterations``).
     approach : float
         Rigid-body approach [m] (free boundary: relative to the undisplaced far field;
         periodic: relative to a zero mean elastic displacement), for the separation as given.
@@ -96,32 +107,12 @@ class SurfaceContactSolution:
     iterations : int
         Conjugate-gradient iterations on the full grid.
     residual : float
-        Complementarity residual, dimensionless: the largest gap error on the contact set or
-        penetration outside it, divided by the peak-to-valley of the separation.
-    converged : bool
-        Whether ``residual <= tolerance`` was reached within ``max_iterations``.
-    solve_time : float
-        Wall-clock time of the solve [s].
-    message : str
-        What happened, in words.
+        The largest gap error on the contact set or penetration outside it over the
+        peak-to-valley of the separation [-].
     dx, dy : float
         Element sizes along x and y [m].
-    periodic : bool
-        Whether the periodic half-space was used.
-    coarse_iterations : int
-        CG iterations spent on the nested coarser grids (not in ``iterations``).
     """
 
-    pressure: np.ndarray
-    gap: np.ndarray
-    contact: np.ndarray
-    approach: float
-    load: float
-    iterations: int
-    residual: float
-    converged: bool
-    solve_time: float
-    message: str
     dx: float
     dy: float
     periodic: bool
@@ -183,7 +174,7 @@ def rectangle_influence(x, y, a, b, contact_modulus):
     Returns
     -------
     numeric
-        Displacement per unit pressure [m/Pa].
+        Displacement [m] at each point per unit pressure [Pa] on the rectangle.
 
     Notes
     -----
@@ -423,12 +414,8 @@ def _active_set(operator, h, p, total, tolerance, cap, max_outer):
             q = operator.displacement(t)
             q *= mask
             q -= (q.sum() / n_contact) * mask
-            denominator = _dot(q, t)
-            if denominator <= 0.0:
+            if not _cg_update(p_c, r, t, q):
                 break
-            tau = _dot(r, t) / denominator
-            p_c -= tau * t
-            r -= tau * q
         p = p_c
         g = h + operator.displacement(p)
         g -= g[contact].sum() / n_contact

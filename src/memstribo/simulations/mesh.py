@@ -274,6 +274,14 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
     modulus = contact_modulus_of(params)
     hertz = hertz_line_contact(load, rows * w_adh, pair.effective_radius(positions), modulus)
     a_max = float(np.max(hertz.half_width))
+    hertz_peak = hertz.peak_pressure
+    if hertz_peak.max() > params["elastic_limit_pressure"]:
+        i = int(np.argmax(hertz_peak))
+        raise InputError(f"the tooth load ({load[i] * 1e6:.4g} uN, load case '{params['load_case']}') is beyond "
+                         f"the elastic range: the Hertz peak pressure reaches {hertz_peak[i] / 1e9:.3g} GPa at c = "
+                         f"{positions[i] * 1e6:.3g} um, above the elastic limit of silicon "
+                         f"({params['elastic_limit_pressure'] / 1e9:.3g} GPa, elastic_limit_pressure); the elastic "
+                         "model of the thesis no longer holds.")
     ratio = float(np.max(hertz.half_width / pair.effective_radius(positions)))
     if ratio > HERTZ_RATIO_LIMIT:  # a contact as wide as the teeth's curvature: no half-space, no Hertz, no answer
         raise InputError(
@@ -874,14 +882,6 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     # smooth-teeth Hertz contact under the line load actually solved (load / L_eff), Eqs. (4-22)-(4-26)
     hertz = hertz_line_contact(setup.load, setup.effective_face_width, pair.effective_radius(setup.positions),
                                modulus)
-    hertz_peak = hertz.peak_pressure
-    if hertz_peak.max() > params["elastic_limit_pressure"]:
-        i = int(np.argmax(hertz_peak))
-        raise InputError(f"the tooth load ({setup.load[i] * 1e6:.4g} uN, load case '{params['load_case']}') is beyond "
-                         f"the elastic range: the Hertz peak pressure reaches {hertz_peak[i] / 1e9:.3g} GPa at c = "
-                         f"{setup.positions[i] * 1e6:.3g} um, above the elastic limit of silicon "
-                         f"({params['elastic_limit_pressure'] / 1e9:.3g} GPa, elastic_limit_pressure); the elastic "
-                         "model of the thesis no longer holds.")
     f_t = float(tangential_force(params["drive_torque"], pair.pitch_radii[0]))
     share = pair.load_share(setup.positions, params["load_sharing"])
 
