@@ -102,7 +102,7 @@ def test_step_independence(params_m, model):
     d = params_m["bond_length"]
     coarse = sliding.summarize(sliding.slide(model, params_m, distance=1e-6, step=d))
     fine = sliding.summarize(sliding.slide(model, params_m, distance=1e-6, step=d / 2))
-    for key in ("cof", "cof_chemical", "cof_vdw", "energy_chemical", "energy_vdw", "normal_force"):
+    for key in ("cof_mean", "cof_chemical", "cof_vdw", "energy_chemical", "energy_vdw", "normal_force_mean"):
         assert getattr(fine, key) == pytest.approx(getattr(coarse, key), rel=5e-3), key
     assert fine.energy_elastic == pytest.approx(coarse.energy_elastic, rel=0.03)
 
