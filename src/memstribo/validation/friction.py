@@ -54,7 +54,7 @@ def rows() -> list[ValidationRow]:
     single = sliding.summarize(sliding.slide_single(params))
     out.append(_row(
         "single nanoblock, 25 uN: mu (constant)", "thesis 2.6.2", 0.389, single.cof_mean, "", "differs (see note)", False,
-        _SLIDE.format(model="single") + "  (cof)",
+        _SLIDE.format(model="single") + "  (cof_mean)",
         "one atomic block (6885.5 bonds) and one adhesive block (692082 vdW bonds), F_adh = F_adh,1(a = w_adh/2) "
         "= 30.46 uN; the thesis's 0.389 would need F_N + F_adh = 84.6 uN with its own bond energies, which its "
         "printed inputs do not give"))
