@@ -135,9 +135,6 @@ _INNER_FACTOR = 0.2
 
 #: Threads scipy.fft may use in the solver (1 = serial; the benchmark compares on one core).
 FFT_WORKERS = 1
-#: Grids of at most this many elements apply the operator and the preconditioner as dense matrices: below it a
-#: matrix product (95 elements: ~3 us) costs less than scipy.fft's call overhead for a transform pair (~30 us).
-_DENSE_APPLY = 256
 
 
 @dataclass(frozen=True)
@@ -281,9 +278,6 @@ class HalfPlane:
         self.stiffness = stiffness
 
     def _apply(self, values, symbol):
-        if self.n <= _DENSE_APPLY:  # a meshing cycle's grids (~100 elements): a matrix product, not an FFT pair
-            dense = self._dense_green if symbol is self.green else self._dense_stiffness
-            return dense @ values
         if self.periodic:
             return scipy.fft.irfft(scipy.fft.rfft(values, workers=FFT_WORKERS) * symbol, n=self.n,
                                    workers=FFT_WORKERS)
@@ -307,14 +301,6 @@ class HalfPlane:
     def stiffness_kernel(self):
         """The preconditioner in real space [Pa/m], indexed like :attr:`green_kernel`."""
         return scipy.fft.irfft(self.stiffness, n=self.size, workers=FFT_WORKERS)
-
-    @functools.cached_property
-    def _dense_green(self):
-        return self.matrix(np.arange(self.n), self.green_kernel)
-
-    @functools.cached_property
-    def _dense_stiffness(self):
-        return self.matrix(np.arange(self.n), self.stiffness_kernel)
 
     def offsets(self, indices):
         """Distances |i - j| (in elements) between the elements ``indices``, as a square index array."""
