@@ -104,9 +104,8 @@ def load_parameters(args: argparse.Namespace):
 
 
 def main(argv: list[str] | None = None) -> int:
-    from memstribo.heap import keep_freed_memory
-
-    keep_freed_memory()  # large FFT grids: no page faults at every allocation (memstribo.heap)
+    # Not memstribo.heap.keep_freed_memory: it halves the CPU time of 2^16-point solves, but the damage stage's
+    # peak memory grew from 12 to 16 GB with it (memstribo damage --json, 2026-11-23); opt-in for benchmarks.
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "handler", None):
