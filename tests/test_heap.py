@@ -22,7 +22,9 @@ def test_glibc_accepts_and_results_are_unchanged():
     import subprocess
 
     code = """
+import numpy as np
 from memstribo.heap import keep_freed_memory
+from memstribo.physics.contact import solve_line_contact
 x = (np.arange(4096) - 2047.5) * 1e-9
 h = x**2 / (2 * 20e-6) + 1e-10 * np.sin(x / 7e-9)
 before = solve_line_contact(h, 1e-9, 100e9, load=1.0)
