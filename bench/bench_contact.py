@@ -93,16 +93,9 @@ def run_memstribo(h, dx, mean_pressure, tol, **options):
                 pressure=sol.pressure, converged=sol.converged)
 
 
-def run_tamaas(h, dx, mean_pressure, tol):
-    import tamaas as tm
-
-    n = h.size
-    model = tm.ModelFactory.createModel(tm.model_type.basic_1d, [n * dx], [n])
-    model.E, model.nu = MODULUS, 0.0  # E* = E / (1 - nu^2)
-    surface = np.ascontiguousarray(-h)  # Tamaas: heights of the rigid surface
-    solver = tm.PolonskyKeerRey(model, surface, tol)
-    solver.max_iter = 20000
-    # Tamaas prints its iterations (file descriptors 1 and 2): capture them to count them
+def solve_tamaas_quietly(solver, mean_pressure):
+    """(wall time [s], iterations or None) of ``solver.solve(mean_pressure)``: Tamaas prints its iterations to file
+    descriptors 1 and 2, which are captured to count them (also used by bench_surface_contact.py)."""
     import tempfile
 
     sys.stdout.flush()
@@ -124,8 +117,20 @@ def run_tamaas(h, dx, mean_pressure, tol):
         log.seek(0)
         numbers = [line.split()[0] for line in log.read().splitlines() if line.split()[:1]
                    and line.split()[0].isdigit()]
+    return elapsed, int(numbers[-1]) if numbers else None
+
+
+def run_tamaas(h, dx, mean_pressure, tol):
+    import tamaas as tm
+
+    n = h.size
+    model = tm.ModelFactory.createModel(tm.model_type.basic_1d, [n * dx], [n])
+    model.E, model.nu = MODULUS, 0.0  # E* = E / (1 - nu^2)
+    surface = np.ascontiguousarray(-h)  # Tamaas: heights of the rigid surface
+    solver = tm.PolonskyKeerRey(model, surface, tol)
+    solver.max_iter = 20000
+    elapsed, iterations = solve_tamaas_quietly(solver, mean_pressure)
     pressure = np.array(model.traction).ravel()
-    iterations = int(numbers[-1]) if numbers else None
     return dict(time=elapsed, iterations=iterations, pressure=pressure, converged=None)
 
 

@@ -78,9 +78,9 @@ def run_memstribo(h, dx, mean_pressure, tol, periodic=True):
 
 
 def run_tamaas(h, dx, mean_pressure, tol):
-    import tempfile
-
     import tamaas as tm
+
+    from bench_contact import solve_tamaas_quietly  # the same capture of Tamaas' iteration log
 
     n = h.shape[0]
     model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [n * dx, n * dx], [n, n])
@@ -88,27 +88,9 @@ def run_tamaas(h, dx, mean_pressure, tol):
     surface = np.ascontiguousarray(-h)  # Tamaas: heights of the rigid surface
     solver = tm.PolonskyKeerRey(model, surface, tol)
     solver.max_iter = 20000
-    sys.stdout.flush()
-    sys.stderr.flush()
-    saved = os.dup(1), os.dup(2)
-    with tempfile.TemporaryFile(mode="w+") as log:
-        os.dup2(log.fileno(), 1)
-        os.dup2(log.fileno(), 2)
-        try:
-            start = time.perf_counter()
-            solver.solve(mean_pressure)
-            elapsed = time.perf_counter() - start
-        finally:
-            sys.stdout.flush()
-            sys.stderr.flush()
-            for fd, copy in zip((1, 2), saved):
-                os.dup2(copy, fd)
-                os.close(copy)
-        log.seek(0)
-        numbers = [line.split()[0] for line in log.read().splitlines()
-                   if line.split()[:1] and line.split()[0].isdigit()]
+    elapsed, iterations = solve_tamaas_quietly(solver, mean_pressure)
     pressure = np.array(model.traction).reshape(n, n)
-    return dict(time=elapsed, iterations=int(numbers[-1]) if numbers else None, pressure=pressure, converged=None)
+    return dict(time=elapsed, iterations=iterations, pressure=pressure, converged=None)
 
 
 def run_contactmechanics(h, dx, mean_pressure, tol):
