@@ -89,8 +89,8 @@ def _range(name, unit, description, minimum, maximum, why, **kw):
 
 
 _E = "stiffer than hard polymers (0.1 GPa) and no stiffer than diamond (1.2 TPa): softer bodies leave the small-strain elastic model"
-_E_COUNTER = ("from a soft elastomer (1 MPa; the friction fixed point then converges or is flagged unconverged) to diamond "
-              "(1.2 TPa)")
+_E_COUNTER = ("from a soft elastomer (1 MPa) to diamond (1.2 TPa); whether a soft counter body suits the half-space "
+              "contact model depends on the load and is checked with it (Hertz half-width a/R_ef <= 0.5)")
 _NU = "thermodynamic limits of an isotropic solid"
 _ATOMIC = "an atomic length: 0.05 nm (shorter than any bond) to 1 nm"
 
