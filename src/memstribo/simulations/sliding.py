@@ -217,7 +217,7 @@ def slide_single(params, *, load=None, distance=None, step=None):
     Returns
     -------
     xarray.Dataset
-        Over ``step``; see :data:`_ATTRS` for the variables.
+        Over ``step``; each variable with its unit and long name from :mod:`memstribo.quantities`.
 
     References
     ----------
