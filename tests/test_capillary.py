@@ -216,8 +216,9 @@ def test_capillary_zone_off_is_the_plain_solve_and_zones_add():
         solve_line_contact(separation, dx, 100e9, load=5.0, capillary_stress=1e8)
 
 
-def test_dense_small_grid_capillary_solve_agrees_with_the_general_solver(monkeypatch):
-    """Small grids (a meshing window, ~100 elements) take dense matrices; the result is the general solver's."""
+def test_dense_small_grid_solves_agree_with_the_general_solver(monkeypatch):
+    """Small grids (a meshing window, ~100 elements) take dense matrices; the result is the general solver's:
+    plain, Maugis-Dugdale, capillary, and both zones."""
     import memstribo.physics.contact as contact
     from memstribo.parameters import get_parameter_values
     from memstribo.surfaces.roughness import default_profile
@@ -226,14 +227,15 @@ def test_dense_small_grid_capillary_solve_agrees_with_the_general_solver(monkeyp
     n = 200
     x = (np.arange(n) - n / 2) * 1e-9
     separation = x**2 / (2 * 5e-6) - np.interp(np.linspace(0, 1.9e-6, n), profile.x - profile.x[0], profile.z)
-    for zone in ({"capillary_stress": 1e8, "capillary_range": 1.4e-9},
+    for zone in ({}, {"cohesive_stress": 3e8, "cohesive_range": 3e-10}, {"capillary_stress": 1e8, "capillary_range": 1.4e-9},
                  {"capillary_stress": 5e7, "capillary_range": 4e-9, "cohesive_stress": 3e8, "cohesive_range": 3e-10}):
         dense = contact.solve_line_contact(separation, 1e-9, 1e11, load=2.0, **zone)
-        monkeypatch.setattr(contact, "_DENSE_CAPILLARY_MAX", 0)
+        monkeypatch.setattr(contact, "_DENSE_MAX", 0)
         general = contact.solve_line_contact(separation, 1e-9, 1e11, load=2.0, **zone)
         monkeypatch.undo()
         assert "dense matrices" in dense.message and "dense" not in general.message
         assert dense.converged and general.converged
+        assert dense.approach == pytest.approx(general.approach, rel=1e-6)
         assert dense.capillary_load == pytest.approx(general.capillary_load, rel=1e-4)
         assert dense.adhesive_load == pytest.approx(general.adhesive_load, rel=1e-3, abs=1e-9)
         assert np.array_equal(dense.contact, general.contact)

@@ -875,6 +875,11 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     h = _check_inputs(separation, dx, contact_modulus, load, mean_pressure, tolerance, max_iterations,
                       reference_distance, initial_pressure)
     n = h.size
+    if method == "active-set" and precondition and not periodic and n <= _DENSE_MAX:
+        solution = _small_contact(h, float(dx), float(contact_modulus), load, mean_pressure, tolerance,
+                                  reference_distance, initial_pressure, start)
+        if solution is not None:
+            return solution
     dx = float(dx)
     modulus = float(contact_modulus)
     target = float(mean_pressure) if mean_pressure is not None else float(load) / (n * dx)
@@ -1230,13 +1235,14 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
     stress = sum(sigma for sigma, _ in zones)
     reach_max = max(float(np.max(r)) for _, r in zones)
     solution = None
-    if approach is None and not periodic and h.size <= _DENSE_CAPILLARY_MAX:  # small free-boundary grids: dense
+    if approach is None and not periodic and h.size <= _DENSE_MAX:  # small free-boundary grids: dense
         solution = _small_capillary(h, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
                                     reference_distance, initial_pressure, stress, reach_max, zones)
     if solution is None:
         solution = _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
                                    max_iterations, reference_distance, initial_pressure, precondition, continuation,
-                                   stress, reach_max, zones=None if len(zones) == 1 and np.ndim(reach) == 0 else zones)
+                                   stress, reach_max, zones=None if len(zones) == 1 and np.ndim(reach) == 0 else zones,
+                                   dense=False)
     contact, gap = solution.contact, solution.gap
     wetted = _dense_fraction(gap, ((1.0, reach),), contact, periodic)
     capillary_load = float(sigma_c * solution.dx * wetted.sum())
@@ -1251,9 +1257,10 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
     return dataclasses.replace(solution, adhesive_load=adhesive_load, capillary_load=capillary_load, message=message)
 
 
-#: Free-boundary grids up to this many elements solve the capillary problem (load control) with dense matrices:
-#: a meshing cycle's window (~100 elements, thousands of solves) is dominated by per-call overhead.
-_DENSE_CAPILLARY_MAX = 512
+#: Free-boundary grids up to this many elements solve under load control with dense matrices (plain, Maugis-Dugdale
+#: and capillary problems): a meshing cycle's window (~100 elements, thousands of solves) is dominated by per-call
+#: overhead of the FFT-based solver.
+_DENSE_MAX = 512
 
 
 @functools.lru_cache(maxsize=8)
@@ -1295,12 +1302,13 @@ def _dense_contact(matrix, h, total, contact, tolerance_abs):
 
     ``A_CC p_C - delta = -h_C``, ``sum(p_C) = total`` on the contact set C, then C updated (p < 0
     leaves, penetration joins) until it settles. Returns (p, gap, contact, delta) or None (no
-    set, cycling, not positive definite: the caller falls back to the general solver).
+    set, cycling, not positive definite: the caller falls back to the general solver) and the number of
+    contact sets solved.
     """
     if not contact.any():
         contact = h <= h.min()
     seen = set()
-    for _ in range(_MAX_OUTER):
+    for updates in range(1, _MAX_OUTER + 1):
         indices = np.flatnonzero(contact)
         solved = _saddle_point(matrix[indices[:, None], indices], h[indices], total)
         if solved is None:
@@ -1311,7 +1319,7 @@ def _dense_contact(matrix, h, total, contact, tolerance_abs):
         new = (contact & (p > 0.0)) | (~contact & (gap < -tolerance_abs))
         if not (new ^ contact).any():
             gap[contact] = 0.0
-            return p, gap, contact, delta
+            return p, gap, contact, delta, updates
         key = np.packbits(new).tobytes()
         if key in seen or not new.any():
             return None
@@ -1320,6 +1328,37 @@ def _dense_contact(matrix, h, total, contact, tolerance_abs):
     return None
 
 
+def _small_contact(h, dx, modulus, load, mean_pressure, tolerance, reference_distance, initial_pressure, start):
+    """The non-adhesive free-boundary solve on a small grid by :func:`_dense_contact`, or None (general solver)."""
+    n = h.size
+    reference = float(reference_distance) if reference_distance is not None else n * dx
+    offset = float(h.min())
+    h = h - offset
+    total = float(load) / dx if load is not None else float(mean_pressure) * n
+    scale = float(h.max()) if h.max() > 0 else total * dx / modulus
+    contact = (np.asarray(initial_pressure) > 0.0 if initial_pressure is not None
+               else np.zeros(n, dtype=bool))
+    state = _dense_contact(_full_matrix(n, dx, modulus, False, reference), h, total, contact, tolerance * scale)
+    if state is None:
+        return None
+    p, gap, contact, delta, updates = state
+    residual = float(np.maximum(-gap[~contact], 0.0).max(initial=0.0)) / scale
+    converged = residual <= tolerance
+    verdict = "converged" if converged else "NOT converged"
+    message = (f"active-set, load control, dense matrices: {verdict} after {updates} contact set(s), each solved exactly "
+               f"(Cholesky) (residual {residual:.2e}, tolerance {tolerance:.1e})")
+    n_contact = int(np.count_nonzero(contact))
+    if n_contact < 3:
+        message += f"; the contact is resolved by only {n_contact} element(s): refine the grid"
+    if contact[0] or contact[-1]:
+        message += "; the contact reaches the edge of the domain: enlarge it"
+    return ContactSolution(pressure=p, gap=np.maximum(gap, 0.0) if converged else gap, contact=contact,
+                           approach=float(delta) + offset, load=float(p.sum() * dx), iterations=updates,
+                           residual=residual, converged=bool(converged), solve_time=time.perf_counter() - start,
+                           message=message, dx=dx, periodic=False, coarse_iterations=0)
+
+
+@cites("maugis_1992", "rey_2017", "bazrafshan_2017", "model")  # the fixed point of _cohesive_iteration
 def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start, tolerance):
     """The capillary (and vdW) zone problem on a small grid under load control, by dense matrices.
 
@@ -1350,7 +1389,7 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
         state = _dense_contact(matrix, h_eff, total + extra, contact, tolerance * scale)
         if state is None:
             return None
-        p_plus, gap, contact, delta = state
+        p_plus, gap, contact, delta, _ = state
         new = _dense_fraction(gap, zones, contact, periodic)
         step = np.abs(new - fraction)
         change = step.max()
@@ -1371,8 +1410,11 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
 
 
 def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
-                     reference_distance, initial_pressure, stress, reach, zones):
-    """:func:`_dense_capillary` as a :class:`ContactSolution`, or None (the general solver then runs)."""
+                     reference_distance, initial_pressure, stress, reach, zones, kind="capillary (dense)"):
+    """:func:`_dense_capillary` as a :class:`ContactSolution`, or None (the general solver then runs).
+
+    ``kind`` starts the message (what the zones are).
+    """
     start = time.perf_counter()
     h = _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure, None, tolerance, max_iterations,
                                reference_distance, initial_pressure, stress, reach)
@@ -1394,7 +1436,7 @@ def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, perio
     converged = residual <= tolerance
     cohesive = (fraction > 0.0) & ~contact
     verdict = "converged" if converged else "NOT converged"
-    message = (f"capillary (dense), load control, dense matrices: {verdict} after {outer} "
+    message = (f"{kind}, load control, dense matrices: {verdict} after {outer} "
                f"cohesive-zone update(s), each inner problem solved exactly (Cholesky) (residual {residual:.2e}, "
                f"tolerance {tolerance:.1e})")
     if not periodic and (contact[0] or contact[-1] or cohesive[0] or cohesive[-1]):
@@ -1408,10 +1450,12 @@ def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, perio
 
 def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approach, periodic, tolerance,
                     max_iterations, reference_distance, initial_pressure, precondition, continuation,
-                    cohesive_stress, cohesive_range, fraction_tolerance=None, internal=False, zones=None):
+                    cohesive_stress, cohesive_range, fraction_tolerance=None, internal=False, zones=None, dense=True):
     """:func:`solve_line_contact` with a Maugis-Dugdale zone and/or under approach control.
 
     ``internal``: return (p+, cohesive fraction, CG iterations) for the nested levels instead.
+    ``dense``: small free-boundary grids under load control first try the dense-matrix solve
+    (:func:`_small_capillary` with the one zone); False skips it (its caller already tried).
     ``zones``: a traction of several step functions (:func:`_cohesive_fraction`); ``cohesive_stress``
     is then their summed stress and ``cohesive_range`` their largest range (:func:`_solve_capillary`).
     """
@@ -1426,6 +1470,12 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     h0 = float(cohesive_range or 0.0)
     if sigma0 == 0.0 or h0 == 0.0:
         sigma0 = h0 = 0.0
+    if dense and sigma0 and approach is None and not periodic and not internal and zones is None and n <= _DENSE_MAX:
+        solution = _small_capillary(h, dx, modulus, load, mean_pressure, periodic, tolerance, max_iterations,
+                                    reference_distance, initial_pressure, sigma0, h0, ((sigma0, h0),),
+                                    kind=f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)")
+        if solution is not None:
+            return solution
     reference, cap, operator, small = _operator_and_limits(n, dx, modulus, periodic, reference_distance,
                                                           max_iterations)
     offset = float(h.min())
