@@ -331,3 +331,118 @@ def test_limit_cycle_of_the_zone_is_damped(monkeypatch):
     monkeypatch.setattr(contact, "_STALLED_UPDATES", 10**6)  # without the damping: the cycle
     plain = solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs)
     assert not plain.converged and "did not settle" in plain.message
+
+
+def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tolerance):
+    """The dense cohesive-zone fixed point as first written (commit fcc53e9): one Cholesky factorisation per
+    contact set solved and the vectorised cohesive fraction; (p, contact, fraction, updates) or None."""
+    from memstribo.physics import contact as c
+
+    n = h.size
+    matrix = c._full_matrix(n, dx, modulus, False, n * dx)
+    scale = float(h.max())
+    fraction = np.minimum(np.clip(-p_start / sigma, 0.0, 1.0) + (p_start > 0.0), 1.0)
+    contact = p_start > 0.0
+    gaps = []
+    for outer in range(1, c._ADHESIVE_MAX_OUTER + 1):
+        extra = sigma * fraction.sum()
+        h_eff = h - sigma * (matrix @ fraction) if fraction.any() else h
+        for _ in range(c._MAX_OUTER):  # the non-adhesive problem for p+ on the settled contact set
+            indices = np.flatnonzero(contact)
+            p_c, delta = c._saddle_point(matrix[indices[:, None], indices], h_eff[indices], total + extra)
+            p_plus = np.zeros(n)
+            p_plus[indices] = p_c
+            gap = h_eff + matrix @ p_plus - delta
+            new = (contact & (p_plus > 0.0)) | (~contact & (gap < -tolerance * scale))
+            if np.array_equal(new, contact):
+                break
+            contact = new
+        else:
+            return None
+        gap[contact] = 0.0
+        new = c._cohesive_fraction(gap, h0, contact, False)
+        step = np.abs(new - fraction)
+        change = step.max()
+        if change <= c._FRACTION_TOLERANCE or (change <= c._ZONE_MAX_CHANGE and step.sum()
+                                               <= c._ZONE_LOAD_TOLERANCE * max(float(new[~contact].sum()), 1.0)):
+            return p_plus - sigma * fraction, contact, fraction, outer
+        gaps.append(gap)
+        if len(gaps) >= 3 and outer % 3 == 0:
+            d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
+            ratio = min(np.dot(d1, d0) / np.dot(d0, d0), c._AITKEN_MAX_RATIO) if np.dot(d0, d0) > 0 else 0.0
+            if ratio >= c._AITKEN_MIN_RATIO:
+                new = c._cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, False)
+        del gaps[:-3]
+        fraction = new
+    return None
+
+
+def test_dense_maugis_solves_follow_the_reference_fixed_point(monkeypatch):
+    """The small-grid Maugis-Dugdale solve (reused Cholesky factors, the fraction evaluated only near the zone)
+    is the fixed point as first written, update for update: warm-started solves along a rough 200-element
+    window, as in the meshing cycle, where the state reached depends on the path (jump-in)."""
+    import memstribo.physics.contact as c
+    from memstribo.parameters import get_parameter_values
+    from memstribo.surfaces.roughness import default_profile
+
+    sparse = []
+    original = c._sparse_fraction
+    monkeypatch.setattr(c, "_sparse_fraction", lambda *a, **k: sparse.append(original(*a, **k)) or sparse[-1])
+    profile = default_profile(get_parameter_values(), length=8e-6)
+    n, dx, tolerance = 200, 10e-9, 1e-8
+    x = (np.arange(n) - n / 2) * dx
+    previous = None
+    updates = []
+    for shift in np.arange(12) * 1.5 * dx:  # the window moves by 1.5 elements a step
+        rough = np.interp(x + 2.5e-6 + shift, profile.x - profile.x[0], profile.z)
+        separation = x**2 / (2 * 20e-6) - rough
+        solution = solve_line_contact(separation, dx, E_STAR, load=60.0, tolerance=tolerance, initial_pressure=previous,
+                                      cohesive_stress=SIGMA0, cohesive_range=H0)
+        assert "dense matrices" in solution.message and solution.converged
+        if previous is not None:
+            h = separation - separation.min()
+            reference = _reference_dense_fixed_point(h, dx, E_STAR, 60.0 / dx, SIGMA0, H0, previous, tolerance)
+            assert reference is not None
+            p, contact, fraction, outer = reference
+            assert solution.iterations == outer and np.array_equal(solution.contact, contact)
+            assert np.allclose(solution.pressure, p, rtol=0, atol=1e-9 * np.abs(p).max())
+            assert solution.adhesive_load == pytest.approx(SIGMA0 * dx * fraction[solution.cohesive].sum(), rel=1e-9)
+            updates.append(outer)
+        previous = solution.pressure
+    assert max(updates) > 1 and any(f is not None and 0 < f[~solution.contact].sum() for f in sparse)
+
+
+def test_sparse_cohesive_fraction_is_the_vectorised_formula(monkeypatch):
+    """The fraction evaluated only on the elements within reach of the zone is the vectorised formula's, bit for
+    bit (ends, periodic wrap, gaps below zero, contact); with too many such elements it declines (None) and
+    :func:`_dense_fraction` takes the vectorised path."""
+    import memstribo.physics.contact as c
+
+    def vectorised(gap, r, contact, periodic):
+        with monkeypatch.context() as m:
+            m.setattr(c, "_SPARSE_FRACTION_MAX", -1)
+            return c._dense_fraction(gap, ((1.78e9, r),), contact, periodic)
+
+    rng = np.random.default_rng(3)
+    n, reach = 200, 0.25e-9
+    gap = rng.uniform(3e-9, 8e-9, n)
+    contact = np.zeros(n, dtype=bool)
+    contact[[0, 60, 61, 62, 130]] = True
+    gap[contact] = 0.0
+    fronts = [1, 59, 63, 64, 129, 131, 199]  # zones beside the contact sets and at both ends
+    gap[fronts] = [0.1e-9, 0.3e-9, 0.45e-9, 0.9e-9, 0.2e-9, 0.6e-9, 0.4e-9]
+    gap[100] = -1e-12  # a slightly penetrating element outside the set
+    evaluated = 0
+    for periodic in (False, True):
+        for r in (reach, 0.6e-9):
+            sparse = c._sparse_fraction(gap, 1.78e9, r, contact, periodic)
+            expected = vectorised(gap, r, contact, periodic)
+            assert sparse is not None and np.array_equal(sparse, expected)
+            assert np.array_equal(c._dense_fraction(gap, ((1.78e9, r),), contact, periodic), expected)
+            assert np.allclose(expected, c._cohesive_fraction(gap, r, contact, periodic), rtol=1e-14, atol=0)
+            evaluated += np.count_nonzero((expected > 0) & ~contact)
+        wide = 20e-9  # most elements are within reach: the vectorised formula
+        assert c._sparse_fraction(gap, 1.78e9, wide, contact, periodic) is None
+        assert np.array_equal(c._dense_fraction(gap, ((1.78e9, wide),), contact, periodic),
+                              vectorised(gap, wide, contact, periodic))
+    assert evaluated >= 16

@@ -51,6 +51,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import math
 import time
 from dataclasses import dataclass
 
@@ -1273,7 +1274,15 @@ def _full_matrix(n, dx, contact_modulus, periodic, reference_distance):
 
 
 def _dense_fraction(gap, zones, contact, periodic):
-    """:func:`_cohesive_fraction` with ``zones`` on a small grid (the same formula, less overhead)."""
+    """:func:`_cohesive_fraction` with ``zones`` on a small grid (the same formula, less overhead).
+
+    One zone of one range (the Maugis-Dugdale zone) is evaluated only where the gap can reach it
+    (:func:`_sparse_fraction`).
+    """
+    if len(zones) == 1 and np.ndim(zones[0][1]) == 0:
+        fraction = _sparse_fraction(gap, float(zones[0][0]), float(zones[0][1]), contact, periodic)
+        if fraction is not None:
+            return fraction
     neighbours = np.empty((2, gap.size))
     if periodic:
         neighbours[0], neighbours[1] = np.roll(gap, 1), np.roll(gap, -1)
@@ -1297,34 +1306,103 @@ def _dense_fraction(gap, zones, contact, periodic):
     return out / total
 
 
-def _dense_contact(matrix, h, total, contact, tolerance_abs):
+#: :func:`_sparse_fraction` evaluates the cohesive fraction element by element on at most this many elements
+#: outside the contact set (more: the vectorised formula of :func:`_dense_fraction` is cheaper).
+_SPARSE_FRACTION_MAX = 8
+
+
+def _sparse_fraction(gap, sigma, reach, contact, periodic, floor=None):
+    """The cohesive fraction [-] of one zone (stress ``sigma`` [Pa], range ``reach`` [m]), or None.
+
+    The formula of :func:`_dense_fraction`, element by element (the same floating-point operations) on the few
+    elements outside the contact set that can carry a fraction: a half element does only where its lower end
+    ``min(g_i, (g_i + g_j) / 2)`` is <= reach, which with every gap >= ``floor`` (default: min(g)) needs
+    ``g_i <= 2 reach - floor``. None where more than ``_SPARSE_FRACTION_MAX`` elements qualify.
+    """
+    n = gap.size
+    limit = 2.0 * reach - min(float(gap.min()) if floor is None else floor, 0.0)
+    fraction = contact.astype(float)
+    candidates = (gap <= limit + abs(limit) * 1e-9).nonzero()[0]
+    if candidates.size == 0:
+        return fraction
+    candidates = candidates[~contact[candidates]]
+    if candidates.size > _SPARSE_FRACTION_MAX:
+        return None
+    values = gap.tolist()
+    for i in candidates.tolist():
+        g = values[i]
+        both = 0.0
+        for j in (i - 1, i + 1):  # the left and the right half
+            neighbour = values[j % n] if periodic else values[min(max(j, 0), n - 1)]
+            edge = 0.5 * (neighbour + g)
+            low, high = min(edge, g), max(edge, g)
+            span = high - low
+            part = (reach - low) / span if span > 0.0 else float(low <= reach)
+            both += min(max(part, 0.0), 1.0)
+        fraction[i] = (sigma * (0.5 * both)) / sigma
+    return fraction
+
+
+def _dense_factor(matrix, indices):
+    """(indices, Cholesky factor of A_CC, y1 = A_CC^-1 1, sum(y1)) on the contact set C, or None (not positive definite)."""
+    potrf, potrs = _lapack_cholesky()
+    factor, info = potrf(matrix[indices[:, None], indices].T, lower=False, clean=False, overwrite_a=True)
+    if info != 0:
+        return None
+    ones, info = potrs(factor, np.ones(indices.size), lower=False, overwrite_b=True)
+    ones_sum = float(ones.sum())
+    if info != 0 or not math.isfinite(ones_sum) or ones_sum <= 0.0:
+        return None
+    return indices, factor, ones, ones_sum
+
+
+def _dense_contact(matrix, h, total, contact, tolerance_abs, factors=None):
     """Non-adhesive contact on a small grid under load control: primal-dual active set with Cholesky solves.
 
-    ``A_CC p_C - delta = -h_C``, ``sum(p_C) = total`` on the contact set C, then C updated (p < 0
-    leaves, penetration joins) until it settles. Returns (p, gap, contact, delta) or None (no
-    set, cycling, not positive definite: the caller falls back to the general solver) and the number of
-    contact sets solved.
+    ``A_CC p_C - delta = -h_C``, ``sum(p_C) = total`` on the contact set C (:func:`_saddle_point`'s two
+    solves with one factor), then C updated (p < 0 leaves, penetration joins) until it settles. Returns
+    (p, gap, contact, delta, sets solved) or None (no set, cycling, not positive definite: the caller falls
+    back to the general solver). ``factors``: a dict in which the last set's factor is kept between calls
+    (the cohesive-zone updates of :func:`_dense_capillary` start from the set the previous call ended with).
     """
-    if not contact.any():
+    key = contact.tobytes()
+    if b"\x01" not in key:
         contact = h <= h.min()
+        key = contact.tobytes()
+    if factors is None:
+        factors = {}
+    potrs = _lapack_cholesky()[1]
+    negative = -h
     seen = set()
     for updates in range(1, _MAX_OUTER + 1):
-        indices = np.flatnonzero(contact)
-        solved = _saddle_point(matrix[indices[:, None], indices], h[indices], total)
-        if solved is None:
+        cached = factors.get(key)
+        if cached is None:
+            cached = _dense_factor(matrix, contact.nonzero()[0])
+            if cached is None:
+                return None
+            factors.clear()
+            factors[key] = cached
+        indices, factor, ones, ones_sum = cached
+        y, info = potrs(factor, negative[indices], lower=False, overwrite_b=True)
+        if info != 0:
             return None
+        delta = (total - y.sum()) / ones_sum
+        p_contact = delta * ones + y
         p = np.zeros(h.size)
-        p[indices], delta = solved
-        gap = h + matrix @ p - delta
-        new = (contact & (p > 0.0)) | (~contact & (gap < -tolerance_abs))
-        if not (new ^ contact).any():
-            gap[contact] = 0.0
+        p[indices] = p_contact
+        gap = matrix @ p
+        gap += h
+        gap -= delta
+        new = gap < -tolerance_abs
+        new[indices] = p_contact > 0.0
+        new_key = new.tobytes()
+        if new_key == key:
+            gap[indices] = 0.0
             return p, gap, contact, delta, updates
-        key = np.packbits(new).tobytes()
-        if key in seen or not new.any():
+        if new_key in seen or b"\x01" not in new_key:
             return None
-        seen.add(key)
-        contact = new
+        seen.add(new_key)
+        contact, key = new, new_key
     return None
 
 
@@ -1380,24 +1458,31 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
     else:
         fraction = np.zeros(n)
         contact = np.zeros(n, dtype=bool)
+    tolerance_abs = tolerance * scale
+    single = len(zones) == 1 and np.ndim(zones[0][1]) == 0  # one zone of one range: the sparse fraction
     gaps = []
+    factors = {}  # the Cholesky factor of the last contact set, reused while the set stays
     for outer in range(1, _ADHESIVE_MAX_OUTER + 1):
         extra = sigma * fraction.sum()
         if total + extra <= 0.0:
             return None
-        h_eff = h - sigma * (matrix @ fraction) if fraction.any() else h
-        state = _dense_contact(matrix, h_eff, total + extra, contact, tolerance * scale)
+        h_eff = h - sigma * (matrix @ fraction) if extra > 0.0 else h
+        state = _dense_contact(matrix, h_eff, total + extra, contact, tolerance_abs, factors)
         if state is None:
             return None
         p_plus, gap, contact, delta, _ = state
-        new = _dense_fraction(gap, zones, contact, periodic)
+        new = None
+        if single:  # the settled set leaves no gap below -tolerance_abs
+            new = _sparse_fraction(gap, zones[0][0], zones[0][1], contact, periodic, floor=-tolerance_abs)
+        if new is None:
+            new = _dense_fraction(gap, zones, contact, periodic)
         step = np.abs(new - fraction)
         change = step.max()
-        zone = float(new[~contact].sum())
-        if change <= _FRACTION_TOLERANCE or (change <= _ZONE_MAX_CHANGE
-                                            and step.sum() <= _ZONE_LOAD_TOLERANCE * max(zone, 1.0)):
+        if change <= _FRACTION_TOLERANCE or (
+                change <= _ZONE_MAX_CHANGE
+                and step.sum() <= _ZONE_LOAD_TOLERANCE * max(float(new[~contact].sum()), 1.0)):
             return p_plus - sigma * fraction, gap, contact, fraction, delta, outer
-        gaps.append(np.where(contact, 0.0, gap))
+        gaps.append(gap)  # zero on the contact set
         if len(gaps) >= 3 and outer % 3 == 0:
             d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
             denominator = _dot(d0, d0)
