@@ -1451,10 +1451,12 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
     n = h.size
     matrix = _full_matrix(n, dx, modulus, periodic, reference)
     sigma = sum(s for s, _ in zones)
-    scale = float(h.max()) if h.max() > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
-    if p_start is not None:
-        fraction = np.minimum(np.clip(-p_start / sigma, 0.0, 1.0) + (p_start > 0.0), 1.0)
+    top = float(h.max())
+    scale = top if top > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
+    if p_start is not None:  # min(clip(-p/sigma, 0, 1) + (p > 0), 1)
         contact = p_start > 0.0
+        fraction = np.minimum(np.maximum(-p_start / sigma, 0.0), 1.0)
+        fraction[contact] = 1.0
     else:
         fraction = np.zeros(n)
         contact = np.zeros(n, dtype=bool)
@@ -1515,9 +1517,11 @@ def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, perio
     if state is None:
         return None
     p, gap, contact, fraction, delta, outer = state
-    scale = float(h.max()) if h.max() > 0 else max(abs(total) * dx / modulus, reach)
-    # complementarity residual as the general solver's: penetration outside the contact set (its gap is exact)
-    residual = float(np.maximum(-gap[~contact], 0.0).max(initial=0.0)) / scale
+    top = float(h.max())
+    scale = top if top > 0 else max(abs(total) * dx / modulus, reach)
+    # complementarity residual as the general solver's: penetration outside the contact set (its gap is exact:
+    # zero on the set, so the smallest gap is the deepest penetration outside it, if any)
+    residual = max(-float(gap.min()), 0.0) / scale
     converged = residual <= tolerance
     cohesive = (fraction > 0.0) & ~contact
     verdict = "converged" if converged else "NOT converged"
