@@ -1344,7 +1344,10 @@ def _sparse_fraction(gap, sigma, reach, contact, periodic, floor=None):
 
 
 def _dense_factor(matrix, indices):
-    """(indices, Cholesky factor of A_CC, y1 = A_CC^-1 1, sum(y1)) on the contact set C, or None (not positive definite)."""
+    """(indices, Cholesky factor of A_CC, y1 = A_CC^-1 1, sum(y1)) on the contact set C (``indices``).
+
+    None where A_CC is not numerically positive definite (as :func:`_saddle_point`).
+    """
     potrf, potrs = _lapack_cholesky()
     factor, info = potrf(matrix[indices[:, None], indices].T, lower=False, clean=False, overwrite_a=True)
     if info != 0:
