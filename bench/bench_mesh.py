@@ -1,7 +1,8 @@
 """Benchmark of the meshing-cycle simulation: wall/CPU time, peak memory, time per step.
 
 Run: ``python bench/bench_mesh.py [--steps 121 241 481 961] [--across 20 40 80] [--repeat 2] [--profile]
-[--ensemble 16 --workers 2] [--json]``.
+[--ensemble 16 --workers 2] [--json]``, or ``python bench/bench_mesh.py --adhesion maugis none [--repeat 3]``
+(only the default cycle's time with and without the Maugis-Dugdale zone, no memory tracing).
 
 1. The default cycle (torque load case, 481 steps, grid sized from the Hertz width: 40 elements
    across 2a, 10 rows each with its own synthetic roughness line)
@@ -71,6 +72,31 @@ def _stages(params):
                    "nanoblocks_bonds_output": total - setup - contact}
 
 
+def _adhesion_only(values, repeat):
+    """Wall and CPU seconds of the default cycle per contact_adhesion, without tracemalloc (it slows numpy)."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+
+    base = get_parameter_values()
+    simulate_mesh(base, steps=21)  # warm-up
+    load = os.getloadavg()
+    out = {"load_average_before": load, "cycles": []}
+    for value in values:
+        params = base.updated({"contact_adhesion": value})
+        best = best_cpu = float("inf")
+        for _ in range(max(repeat, 1)):
+            start, start_cpu = time.perf_counter(), time.process_time()
+            dataset = simulate_mesh(params)
+            best = min(best, time.perf_counter() - start)
+            best_cpu = min(best_cpu, time.process_time() - start_cpu)
+        summary = summarize(dataset)
+        out["cycles"].append({"contact_adhesion": value, "seconds": round(best, 3), "cpu_seconds": round(best_cpu, 3),
+                              "cof_mean": summary["cof_mean"], "unconverged_steps": summary["unconverged_steps"]})
+    out["load_average_after"] = os.getloadavg()
+    print(json.dumps(out, indent=2))
+    return 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, nargs="+", default=[121, 241, 481, 961])
@@ -81,7 +107,12 @@ def main(argv=None):
     parser.add_argument("--repeat", type=int, default=2)
     parser.add_argument("--profile", action="store_true", help="print the 15 most expensive functions")
     parser.add_argument("--json", action="store_true")
+    parser.add_argument("--adhesion", nargs="+", choices=("maugis", "none"),
+                        help="only time the default cycle with each contact_adhesion (no memory tracing, best of "
+                             "--repeat) and stop")
     args = parser.parse_args(argv)
+    if args.adhesion:
+        return _adhesion_only(args.adhesion, args.repeat)
 
     import numpy as np
     import scipy

@@ -160,8 +160,10 @@ def test_calibrated_ots_gives_the_thesis_cof(params):
     """The shipped OTS U_vdW is calibrated (docs/coating.md) to COF 0.185 at Omega = 0 (thesis 5.5.3)."""
     from memstribo.simulations.coating_wear import wear_sweep
 
-    # at the thesis's reference conditions: its load case (25 uN) and its full-energy vdW band
-    reference = params.updated({"load_case": "thesis", "interface_model": "thesis"})
+    # at the thesis's reference conditions: its load case (25 uN), its full-energy vdW band, no adhesion in the solve
+    from memstribo.parameters import THESIS_CONDITIONS
+
+    reference = params.updated(THESIS_CONDITIONS)
     cof = float(wear_sweep(reference, "OTS", [0.0])["cof_mean"][0])
     # the mesh's default steps; tolerance 0.01 leaves room for small changes of the mesh model
     assert cof == pytest.approx(0.185, abs=0.01)

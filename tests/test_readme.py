@@ -14,7 +14,9 @@ def test_readme_quotes_the_default_meshing_cycle(params):
     assert f"mean apparent COF\n{summary['cof_mean']:.3f}" in README or \
         f"mean apparent COF {summary['cof_mean']:.3f}" in README
     assert f"(chemical {summary['cof_chemical']:.3f}, van der Waals {summary['cof_vdw']:.3f})" in README
-    thesis = summarize(simulate_mesh(params.updated({"load_case": "thesis", "interface_model": "thesis"})))
+    from memstribo.parameters import THESIS_CONDITIONS
+
+    thesis = summarize(simulate_mesh(params.updated(THESIS_CONDITIONS)))
     assert f"gives a mean COF of {thesis['cof_mean']:.3f}" in README
     assert f"the largest resisting force is {thesis['resisting_force_max'] * 1e3:.3g} mN" in README
 

@@ -19,7 +19,9 @@ def test_slide_past_the_limits_of_silicon_warns(cli):
 
 
 def test_mesh_json_lists_warnings_and_the_text_shows_them(cli):
-    values = cli.json("mesh", "--steps", "11", "--no-step-check", "--load-case", "thesis", "--set", "interface_model=thesis")
+    from memstribo.parameters import THESIS_FLAGS
+
+    values = cli.json("mesh", "--steps", "11", "--no-step-check", *THESIS_FLAGS.split())
     assert any("ideal shear strength" in text for text in values["warnings"])
-    code, out, err = cli("mesh", "--steps", "11", "--no-step-check", "--load-case", "thesis", "--set", "interface_model=thesis")
+    code, out, err = cli("mesh", "--steps", "11", "--no-step-check", *THESIS_FLAGS.split())
     assert code == 0 and "WARNING: the friction stress" in out

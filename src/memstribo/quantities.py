@@ -128,7 +128,8 @@ _ENTRIES = [
     ("per_realisation", _TEXT, "per realisation", "the summary of each realisation"),
     ("roughness_rows", _TEXT, "rows of the roughness", "how the rows of nanoblocks got their roughness lines"),
     # --- the contact solves ------------------------------------------------------------------------------------
-    ("contact_width", "m", "contact width", "measure of the contact set of the rough contact (row mean)"),
+    ("contact_width", "m", "contact width", "measure of the contact set of the rough contact, where the gap is "
+     "closed (row mean; with the Maugis-Dugdale zone it includes the contact's tensile edges, not the open zone)"),
     ("contact_approach", "m", "contact approach", "rigid approach of the rough contact solve (row mean)"),
     ("contact_converged", _TEXT, "contact converged", "true where the contact solve converged in every row"),
     ("contact_residual", "1", "contact residual", "largest complementarity residual over the rows"),

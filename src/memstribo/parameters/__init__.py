@@ -34,9 +34,19 @@ __all__ = [
     "parse_assignment",
     "read_config",
     "coerce_value",
+    "THESIS_CONDITIONS",
+    "THESIS_FLAGS",
 ]
 
 DEFAULT_SET = "silicon_thesis"
+
+#: The thesis's own conditions, for the reproduction rows and examples (docs/validation.md "[thesis case]"):
+#: its load case (F_ext = 25 uN), its full-energy vdW band, and no adhesion inside the contact solve
+#: (the thesis counts adhesion as the sum of block pull-off forces, 3-31). memstribo's defaults are
+#: MODEL 7b and 7c: the torque's load, vdW at the actual gap, the Maugis-Dugdale zone in the solve.
+THESIS_CONDITIONS = {"load_case": "thesis", "interface_model": "thesis", "contact_adhesion": "none"}
+#: :data:`THESIS_CONDITIONS` as command-line options
+THESIS_FLAGS = "--load-case thesis --set interface_model=thesis --set contact_adhesion=none"
 
 
 def available_parameter_sets() -> list[str]:

@@ -876,7 +876,7 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     h = _check_inputs(separation, dx, contact_modulus, load, mean_pressure, tolerance, max_iterations,
                       reference_distance, initial_pressure)
     n = h.size
-    if method == "active-set" and precondition and not periodic and n <= _DENSE_MAX:
+    if method == "active-set" and precondition and not periodic and n <= _DENSE_SOLVE_MAX:
         solution = _small_contact(h, float(dx), float(contact_modulus), load, mean_pressure, tolerance,
                                   reference_distance, initial_pressure, start)
         if solution is not None:
@@ -1236,7 +1236,7 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
     stress = sum(sigma for sigma, _ in zones)
     reach_max = max(float(np.max(r)) for _, r in zones)
     solution = None
-    if approach is None and not periodic and h.size <= _DENSE_MAX:  # small free-boundary grids: dense
+    if approach is None and not periodic and h.size <= _DENSE_SOLVE_MAX:  # small free-boundary grids: dense
         solution = _small_capillary(h, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
                                     reference_distance, initial_pressure, stress, reach_max, zones)
     if solution is None:
@@ -1261,7 +1261,7 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
 #: Free-boundary grids up to this many elements solve under load control with dense matrices (plain, Maugis-Dugdale
 #: and capillary problems): a meshing cycle's window (~100 elements, thousands of solves) is dominated by per-call
 #: overhead of the FFT-based solver.
-_DENSE_MAX = 512
+_DENSE_SOLVE_MAX = 1024
 
 
 @functools.lru_cache(maxsize=8)
@@ -1562,7 +1562,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     h0 = float(cohesive_range or 0.0)
     if sigma0 == 0.0 or h0 == 0.0:
         sigma0 = h0 = 0.0
-    if dense and sigma0 and approach is None and not periodic and not internal and zones is None and n <= _DENSE_MAX:
+    if dense and sigma0 and approach is None and not periodic and not internal and zones is None and n <= _DENSE_SOLVE_MAX:
         solution = _small_capillary(h, dx, modulus, load, mean_pressure, periodic, tolerance, max_iterations,
                                     reference_distance, initial_pressure, sigma0, h0, ((sigma0, h0),),
                                     kind=f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)")

@@ -557,8 +557,10 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     surface = params["mesh_contact"] == "surface"
     if surface:
         if beta != 0.0 or params["contact_adhesion"] != "none":
-            raise InputError("mesh_contact = 'surface' solves identical, non-adhesive teeth only (Dundurs beta 0, "
-                             "contact_adhesion 'none'); use mesh_contact = 'line' for the others.")
+            raise InputError("mesh_contact = 'surface' solves identical, non-adhesive teeth only (Dundurs beta 0 and "
+                             "contact_adhesion = 'none': add --set contact_adhesion=none, since the default "
+                             "Maugis-Dugdale zone is carried by the line solve only); use mesh_contact = 'line' for "
+                             "the others.")
         strip_pressure, strip_gap, strip_info = _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar)
     for row in range(n_rows_solved):
         zone = None
@@ -569,7 +571,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
             info = strip_info  # one solve for all rows
         elif beta != 0.0 and mu_previous is not None:
             pressure, gap, info = _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
-                                                    slip, pbar, zone)
+                                                    slip, pbar, zone, warm_start)
         else:
             pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, pbar, zone,
                                                   warm_start)
@@ -582,7 +584,9 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         out["approach"] += info[:, 3] / n_rows_solved
         # vdW reach: with the gap model the attraction must have faded inside the window
         out["vdw_edge"] += (np.minimum(gap[:, 0], gap[:, -1]) < params["vdw_cutoff"]) if gap_model else 0
-        out["contact_width"] += (pressure > 0).sum(axis=1) * dx / n_rows_solved
+        # in contact: the gap closed under a non-zero pressure (with the Maugis-Dugdale zone the pressure is
+        # tensile, down to -sigma0, near the contact's edges; the zone outside has an open gap)
+        out["contact_width"] += ((gap <= 0.0) & (pressure != 0.0)).sum(axis=1) * dx / n_rows_solved
         out["max_pressure"] = np.maximum(out["max_pressure"], pressure.max(axis=1))
         cumulative = np.concatenate([np.zeros((n_steps, 1)), np.cumsum(pressure, axis=1) * dx], axis=1)
         edges_x = np.concatenate([grid - 0.5 * dx, [grid[-1] + 0.5 * dx]])
@@ -744,15 +748,27 @@ def _interlocking(k, comp_at, comp_adh, stiffness, interlocking_energy):
             + interlocking_energy(stiffness.adhesive, d_adh).sum(axis=1))
 
 
-def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar, capillary=None):
-    """Contacts with the normal gap change of the friction traction mu p (dissimilar materials)."""
+def _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu, slip, pbar, capillary=None,
+                      warm_start=None):
+    """Contacts with the normal gap change of the friction traction mu p (dissimilar materials).
+
+    ``warm_start`` (a dict kept over the friction passes): the first pass's frictionless pressure of
+    the row (it does not depend on mu), and each step's solve starts from the previous pass's
+    state: with adhesion a step can have two states, and a cold start would flip between them
+    from pass to pass, so the fixed point would never settle.
+    """
     # first the frictionless solution gives p; the traction term uses it (one fixed-point sweep per pass)
-    pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None, capillary)
+    if warm_start is not None and row in warm_start and ("frictionless", row) not in warm_start:
+        warm_start[("frictionless", row)] = warm_start[row][0]  # the first pass was the frictionless one
+    if warm_start is not None and ("frictionless", row) in warm_start:
+        pressure = warm_start[("frictionless", row)]
+    else:
+        pressure, _, _ = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, None, capillary)
     dx = setup.grid_spacing
     integral = np.cumsum(pressure, axis=1) * dx
     integral -= integral.mean(axis=1, keepdims=True)
     shear = (2 * beta / modulus) * (mu * np.sign(slip))[:, None] * integral
-    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, pbar, capillary)
+    return _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear, pbar, capillary, warm_start)
 
 
 def _geometry(params):
@@ -892,10 +908,11 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     friction_old = None
     fixed_point_converged = True
     max_passes = 30
+    passes_start = {}  # dissimilar materials: each pass starts from the previous one (_solve_with_shear)
     while True:
         passes += 1
         out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress,
-                                           warm_start if beta == 0.0 else None)
+                                           warm_start if beta == 0.0 else passes_start)
         sliding = kin["sliding"]
         f_el = np.divide(out["e_el"], sliding, out=np.zeros_like(sliding), where=sliding > 0)
         friction = out["f_chem"] + out["f_vdw"] + f_el + out["f_cap"]
@@ -1315,7 +1332,11 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
                 raise InputError(f"sweep humidity values are relative humidities from 0 to 0.99, got {value!r}.")
             point_params = params.updated({"environment": "air", "relative_humidity": value}, origin="sweep")
             head = {"relative_humidity": value}
-            warm = {} if warm is None else warm  # each point starts from the previous one's contacts
+            # each point starts from the previous one's contacts, where the contact has one solution: with
+            # the Maugis-Dugdale zone a step can have two (adhered or not), and the state reached would
+            # then depend on the humidity swept before it, so those points start cold
+            if params["contact_adhesion"] == "none":
+                warm = {} if warm is None else warm
         elif parameter == "torque":
             if value <= 0:
                 raise InputError(f"sweep torque values must be positive torques, got {value!r} N m.")

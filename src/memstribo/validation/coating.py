@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+from memstribo.parameters import THESIS_CONDITIONS, THESIS_FLAGS
 from memstribo.validation.rows import ValidationRow, compare
 
-COMMAND = "memstribo coating --wear 0,0.2,0.8,1 --load-case thesis --set interface_model=thesis --json"
+COMMAND = f"memstribo coating --wear 0,0.2,0.8,1 {THESIS_FLAGS} --json"
 
 # Thesis 5.5.3 / Figure 5-28: COF of the OTS-coated pair versus the worn fraction Omega
 FIGURE_5_28 = {0.0: 0.185, 0.2: 0.32, 0.8: 0.75, 1.0: 0.84}
@@ -15,8 +16,9 @@ def rows() -> list[ValidationRow]:
     from memstribo.simulations.coating_wear import wear_sweep
     from memstribo.parameters import get_parameter_values
 
-    # the thesis's reference conditions: its load case and its full-energy vdW band (the calibration's)
-    params = get_parameter_values().updated({"load_case": "thesis", "interface_model": "thesis"})
+    # the thesis's reference conditions (the calibration's): its load case, its full-energy vdW band, no
+    # adhesion inside the contact solve
+    params = get_parameter_values().updated(THESIS_CONDITIONS)
     sweep = wear_sweep(params, "OTS", list(FIGURE_5_28))
     bare = mesh.summarize(mesh.simulate_mesh(params))
     out = []
@@ -34,7 +36,7 @@ def rows() -> list[ValidationRow]:
                            command=COMMAND, note=note))
     out.append(compare("coating", "COF at Omega = 1 equals the bare meshing cycle", "memstribo mesh (cof_mean)",
                        bare["cof_mean"], float(sweep["cof_mean"].sel(wear=1.0)), "", rtol=0.0,
-                       command="memstribo coating --wear 1 --load-case thesis --set interface_model=thesis --json",
+                       command=f"memstribo coating --wear 1 {THESIS_FLAGS} --json",
                        note="the pinion's coating is fully worn, so Omega = 1 is bare silicon (thesis 5.5.3)"))
     below = bool((sweep["cof_mean"].values[:-1] < bare["cof_mean"]).all())
     out.append(ValidationRow("coating", "coated COF below the bare COF at every Omega < 1", "thesis Figure 5-28 (trend)",

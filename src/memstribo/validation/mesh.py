@@ -1,18 +1,21 @@
 """Validation rows of the meshing-cycle simulation (thesis 4.9, 3.6; MODEL 7b, 7c; closed forms and invariants).
 
-Rows marked "[thesis case]" reproduce the thesis's own conditions: its load case (F_ext = 25 uN,
-``--load-case thesis``) and its full-energy vdW band (``--set interface_model=thesis``). Rows
-marked "[default]" use memstribo's defaults: the ``torque`` load case (F_n = F_t / cos alpha) and
-vdW at the actual gap (``interface_model = gap``), MODEL 7b and 7c.
+Rows marked "[thesis case]" reproduce the thesis's own conditions
+(:data:`memstribo.parameters.THESIS_CONDITIONS`): its load case (F_ext = 25 uN), its full-energy vdW
+band and no adhesion inside the contact solve. Rows marked "[default]" use memstribo's defaults: the
+``torque`` load case (F_n = F_t / cos alpha), vdW at the actual gap (``interface_model = gap``) and the
+Maugis-Dugdale zone inside the contact solve (``contact_adhesion = maugis``), MODEL 7b and 7c.
 """
 
 from __future__ import annotations
 
+from memstribo.parameters import THESIS_CONDITIONS, THESIS_FLAGS
 from memstribo.validation.rows import ValidationRow, compare
 
 MESH = "memstribo mesh --json"
-THESIS = "--load-case thesis --set interface_model=thesis"
-SWEEP = f"memstribo sweep load --values 25uN,300uN --set interface_model=thesis --json"
+THESIS = THESIS_FLAGS
+SWEEP = ("memstribo sweep load --values 25uN,300uN --set interface_model=thesis --set contact_adhesion=none "
+         "--json")
 
 
 def _two_digits(value: float) -> float:
@@ -30,7 +33,7 @@ def rows() -> list[ValidationRow]:
     from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values()
-    thesis = params.updated({"load_case": "thesis", "interface_model": "thesis"})
+    thesis = params.updated(THESIS_CONDITIONS)
     dataset = simulate_mesh(params)
     summary = summarize(dataset)
     thesis_summary = summarize(simulate_mesh(thesis))
