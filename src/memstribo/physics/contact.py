@@ -99,6 +99,9 @@ _COARSE_FRACTION_TOLERANCE = 1e-2
 #: (:func:`_active_set`, ``settle_first``); False restores the former first set update from the
 #: unsolved guess (kept for tests/test_adhesive_contact.py and the benchmark's comparison).
 _SETTLE_FIRST = True
+#: Warm start of each cohesive-zone update's inner solve extrapolated along the last change of p+
+#: (:func:`_cohesive_iteration`); False: the last p+ as it is (the former start).
+_LINEAR_RESPONSE_START = True
 #: Largest convergence ratio used in the Aitken extrapolation of the cohesive-zone updates.
 _AITKEN_MAX_RATIO = 0.95
 #: ... applied only where the measured ratio is at least this (slow, creeping fronts).
@@ -1116,6 +1119,7 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
     # plain update can fall into a limit cycle at a front (an element between two rough-surface
     # asperities creeps, its neighbour jumps, it falls back: the thesis load case, 567 points)
     relax, best, stalled, improving = 1.0, np.inf, 0, 0
+    previous = None  # (fraction, p+) of the previous update
     for outer in range(1, max_outer + 1):
         h_eff = h - sigma0 * operator.displacement(fraction) if fraction.any() else h
         # inexact inner solves: a gap error of _GAP_FRACTION * change * h0 moves a front by a small
@@ -1164,8 +1168,19 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
         del gaps[:-3]
         if relax < 1.0:  # damped: part of the way, but every element in contact carries its full stress
             new = np.where(contact, new, fraction + relax * (new - fraction))
-        fraction = new
+        # warm start of the next inner solve: p+ responds linearly to the fraction (for a fixed contact
+        # set), so where the new change of the fraction repeats a multiple c of the last one (a
+        # creeping front), p+ is expected to repeat c times its last change (c from a least-squares
+        # fit, used in [0, 1])
         guess = p_plus
+        if previous is not None and _LINEAR_RESPONSE_START:
+            last = fraction - previous[0]
+            norm = _dot(last, last)
+            c = min(max(_dot(new - fraction, last) / norm, 0.0), 1.0) if norm > 0.0 else 0.0
+            if c > 0.0:
+                guess = np.maximum(p_plus + c * (p_plus - previous[1]), 0.0)
+        previous = (fraction, p_plus)
+        fraction = new
     return state + (False, f"the cohesive zone did not settle (last change of the cohesive fraction {change:.1e})")
 
 
