@@ -17,7 +17,8 @@ Molinari 2017; Dugdale stress w / rho, rho = h0) at memstribo's mean gap (Tamaas
 gap, not the load): CPU times, iterations, the loads and the pressure difference. Tamaas is in
 the benchmark environment only, never a dependency of memstribo.
 
-Run:  python bench/bench_adhesive_contact.py [--sizes 10 12 14 16] [--repeat 3] [--json FILE] [--former] [--tamaas]
+Run:  python bench/bench_adhesive_contact.py [--sizes 10 12 14 16] [--repeat 3] [--json FILE] [--seed 0] [--former]
+      [--tamaas]
 """
 
 from __future__ import annotations
@@ -141,6 +142,7 @@ def main(argv=None):
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--tolerance", type=float, default=1e-8)
     parser.add_argument("--json", help="write the rows to this file")
+    parser.add_argument("--seed", type=int, default=0, help="seed of the rough profile (bench_contact.problem)")
     parser.add_argument("--former", action="store_true",
                         help="also time the former inner solves of the zone updates (CPU ratio to the plain solve)")
     parser.add_argument("--tamaas", action="store_true",
@@ -154,7 +156,7 @@ def main(argv=None):
     print(f"{'N':>7} {'plain [ms]':>11} {'adhesive [ms]':>14} {'ratio':>6} {'CPU ratio':>10} {'contact %':>10} "
           f"{'adh. contact %':>15} {'zone %':>7} {'updates':>8} converged")
     for exponent in args.sizes:
-        h, dx, mean_pressure = problem(exponent)
+        h, dx, mean_pressure = problem(exponent, seed=args.seed)
         load = mean_pressure * h.size * dx
         plain_time, plain_cpu, plain = timed(lambda: solve_line_contact(h, dx, MODULUS, load=load, tolerance=args.tolerance,
                                                              max_iterations=20000), args.repeat)

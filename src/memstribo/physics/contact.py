@@ -865,7 +865,8 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     longer changes (each element carries the fraction of it where the interpolated gap is
     <= h0, so the discrete front is unique; settled when no fraction moves by more than 1e-4,
     or the zone's load by less than 1e-4 with no fraction moving by more than 0.25; updates of
-    creeping fronts are Aitken-extrapolated). Under load control the solution need not be
+    creeping fronts are Aitken-extrapolated; each inner solve starts from the last p+ extrapolated along its last
+    change and first solves on that guess's contact set). Under load control the solution need not be
     unique (jump-in, pull-off): the state returned is the one the set iteration reaches from ``initial_pressure`` (its
     cohesive set is where it is non-zero: continuation from a previous state), or without it
     from the non-adhesive solution at the same load (w > 0; the adhered, loading-branch
@@ -1110,6 +1111,15 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
     i.e. the cohesive fraction changes by 0.5 or more somewhere; else ``tolerance``), and
     returns (p+, gap, contact, approach, iterations, residual, ok, why). Every third update
     is Aitken-extrapolated (the plain update creeps: linear convergence with a ratio near 1).
+
+    The inner solves dominate the cost (FFTs of the contact-set CG), so each is warm-started:
+    from the last p+, extrapolated by c times its last change where the new change of the
+    fraction repeats c (least squares, 0 <= c <= 1) times the last one (p+ depends linearly on the
+    fraction for a fixed contact set), and (load control, :func:`_active_set` ``settle_first``)
+    solved on the guess's contact set before that set is first updated. The splitting and the
+    fixed point are those of Rey, Anciaux & Molinari (2017) and Bazrafshan et al. (2017)
+    (traction -sigma0 on the cohesive set, the non-adhesive problem for the rest); their single
+    constrained CG over the three sets is not used (docs/contact.md, "Adhesive contact", "Speed").
     """
     iterations = 0
     gaps = []
