@@ -99,7 +99,7 @@ _COARSE_FRACTION_TOLERANCE = 1e-2
 #: (:func:`_active_set`, ``settle_first``); False restores the former first set update from the
 #: unsolved guess (kept for tests/test_adhesive_contact.py and the benchmark's comparison).
 _SETTLE_FIRST = True
-#: Warm start of each cohesive-zone update's inner solve extrapolated along the last change of p+
+#: Warm start of each cohesive-zone update's inner solve (load control) extrapolated along the last change of p+
 #: (:func:`_cohesive_iteration`); False: the last p+ as it is (the former start).
 _LINEAR_RESPONSE_START = True
 #: Largest convergence ratio used in the Aitken extrapolation of the cohesive-zone updates.
@@ -865,8 +865,8 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     longer changes (each element carries the fraction of it where the interpolated gap is
     <= h0, so the discrete front is unique; settled when no fraction moves by more than 1e-4,
     or the zone's load by less than 1e-4 with no fraction moving by more than 0.25; updates of
-    creeping fronts are Aitken-extrapolated; each inner solve starts from the last p+ extrapolated along its last
-    change and first solves on that guess's contact set). Under load control the solution need not be
+    creeping fronts are Aitken-extrapolated; under load control each inner solve starts from the last p+ extrapolated
+    along its last change and first solves on that guess's contact set). Under load control the solution need not be
     unique (jump-in, pull-off): the state returned is the one the set iteration reaches from ``initial_pressure`` (its
     cohesive set is where it is non-zero: continuation from a previous state), or without it
     from the non-adhesive solution at the same load (w > 0; the adhered, loading-branch
@@ -1102,7 +1102,7 @@ def _cohesive_fraction(gap, h0, contact, periodic, zones=None):
 
 @cites("maugis_1992", "rey_2017", "bazrafshan_2017", "model")
 def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodic, tolerance, scale,
-                        fraction_tolerance, max_outer=_ADHESIVE_MAX_OUTER, zones=None):
+                        fraction_tolerance, max_outer=_ADHESIVE_MAX_OUTER, zones=None, extrapolate=False):
     """Fixed point on the cohesive fraction: traction -sigma0*fraction, inner non-adhesive solve for p+.
 
     ``inner(h_eff, extra, guess, tol)`` solves the non-adhesive problem for p+ >= 0 with the gap h_eff
@@ -1112,11 +1112,13 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
     returns (p+, gap, contact, approach, iterations, residual, ok, why). Every third update
     is Aitken-extrapolated (the plain update creeps: linear convergence with a ratio near 1).
 
-    The inner solves dominate the cost (FFTs of the contact-set CG), so each is warm-started:
-    from the last p+, extrapolated by c times its last change where the new change of the
-    fraction repeats c (least squares, 0 <= c <= 1) times the last one (p+ depends linearly on the
-    fraction for a fixed contact set), and (load control, :func:`_active_set` ``settle_first``)
-    solved on the guess's contact set before that set is first updated. The splitting and the
+    The inner solves dominate the cost (FFTs of the contact-set CG), so each is warm-started
+    from the last p+; with ``extrapolate`` (load control) from the last p+ plus c times its last
+    change where the new change of the fraction repeats c (least squares, 0 <= c <= 1) times the
+    last one (p+ depends linearly on the fraction for a fixed contact set), and solved on the
+    guess's contact set before that set is first updated (:func:`_active_set` ``settle_first``).
+    (Under approach control the guess's positive set is the inner active set's first contact
+    set, solved exactly on small grids: there the last p+ is kept as it is.) The splitting and the
     fixed point are those of Rey, Anciaux & Molinari (2017) and Bazrafshan et al. (2017)
     (traction -sigma0 on the cohesive set, the non-adhesive problem for the rest); their single
     constrained CG over the three sets is not used (docs/contact.md, "Adhesive contact", "Speed").
@@ -1183,7 +1185,7 @@ def _cohesive_iteration(operator, h, sigma0, h0, fraction, guess, inner, periodi
         # creeping front), p+ is expected to repeat c times its last change (c from a least-squares
         # fit, used in [0, 1])
         guess = p_plus
-        if previous is not None and _LINEAR_RESPONSE_START:
+        if previous is not None and extrapolate and _LINEAR_RESPONSE_START:
             last = fraction - previous[0]
             norm = _dot(last, last)
             c = min(max(_dot(new - fraction, last) / norm, 0.0), 1.0) if norm > 0.0 else 0.0
@@ -1595,7 +1597,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
                                     fraction_tolerance,
                                     _COARSE_MAX_UPDATES if internal
                                     else _SMALL_ZONE_MAX_UPDATES if n <= _SMALL_ZONE else _ADHESIVE_MAX_OUTER,
-                                    zones)
+                                    zones, extrapolate=approach is None)
         if internal:
             ok = np.isfinite(residual)
             return (p + sigma0 * fraction if ok else None), (fraction if ok else None), iterations + coarse[0]
