@@ -1606,6 +1606,11 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     h0 = float(cohesive_range or 0.0)
     if sigma0 == 0.0 or h0 == 0.0:
         sigma0 = h0 = 0.0
+    if dense and not sigma0 and approach is None and not periodic and not internal and n <= _DENSE_SOLVE_MAX:
+        solution = _small_contact(h, dx, modulus, load, mean_pressure, tolerance, reference_distance, initial_pressure,
+                                  start)  # no zone: the plain small-grid solve, as solve_line_contact without one
+        if solution is not None:
+            return dataclasses.replace(solution, adhesive_load=0.0, cohesive=np.zeros(n, dtype=bool))
     if dense and sigma0 and approach is None and not periodic and not internal and zones is None and n <= _DENSE_SOLVE_MAX:
         solution = _small_capillary(h, dx, modulus, load, mean_pressure, periodic, tolerance, max_iterations,
                                     reference_distance, initial_pressure, sigma0, h0, ((sigma0, h0),),
