@@ -101,6 +101,8 @@ def main(argv=None) -> int:
     parser.add_argument("--steps", type=int, default=None, help="steps per meshing cycle (default: the model's)")
     parser.add_argument("--workers", type=int, nargs="+", default=[1, 2], help="worker counts (default 1 2)")
     parser.add_argument("--full", action="store_true", help="also time the 6 x 6 map, 8 realisations per point")
+    parser.add_argument("--contact-adhesion", choices=("maugis", "none"), default=None,
+                        help="fix contact_adhesion in the maps (default: the model's, maugis)")
     parser.add_argument("--only-full", action="store_true", help="time the 6 x 6 map only (on the largest --workers)")
     parser.add_argument("--cycle", type=int, default=None, metavar="N",
                         help="only time one map point with N realisations in this process (seconds per cycle)")
@@ -113,7 +115,10 @@ def main(argv=None) -> int:
         print(json.dumps(_cycle(args.cycle, args.steps), indent=2))
         return 0
     extra = {"steps": args.steps} if args.steps else {}
-    report = {"cores": os.cpu_count(), "steps": args.steps or get_parameter_values()["mesh_steps"]}
+    if args.contact_adhesion:
+        extra["fixed"] = {"contact_adhesion": args.contact_adhesion}
+    report = {"cores": os.cpu_count(), "steps": args.steps or get_parameter_values()["mesh_steps"],
+              "contact_adhesion": args.contact_adhesion or get_parameter_values()["contact_adhesion"]}
     if not args.only_full:
         spec = map_spec({"name": "bench", "realisations": args.realisations, **extra,
                          "grid": {"drive_torque": {"start": "5e-8 N*m", "stop": "3e-7 N*m", "num": args.points}}})
