@@ -475,17 +475,38 @@ def _asperity_damage(peak_block_loads, valley_block_loads, block_index, n_blocks
         asperity_loads[positive] = sharing.loads
     peaks, valleys = asperity_loads[:peak_block_loads.size], asperity_loads[peak_block_loads.size:]
     if x is None:
-        # a uniform grid plus the contact edges of every load (tau_1 peaks in a cusp there)
-        loaded = np.unique(peaks[peaks > 0])
+        # a uniform grid plus the contact edges of the loads (tau_1 peaks in a cusp there): of every load
+        # up to _MAX_EDGE_LOADS distinct ones, else of the largest half of them and evenly spaced others
+        # (a meshing cycle has tens of thousands; the damage sum ~ tau^m is dominated by the largest)
+        loaded = _edge_loads(np.unique(peaks[peaks > 0]))
         radii = power_law_contact_radius(loaded, degree, coefficient, modulus) if loaded.size else np.ones(1)
         a_max = float(radii.max())
         x = np.unique(np.concatenate([np.linspace(-1.25 * a_max, 1.25 * a_max, 501), radii, -radii]))
-    tau_peak = principal_shear_profile(x, peaks, degree, coefficient, modulus, friction, nu)
-    tau_valley = principal_shear_profile(x, valleys, degree, coefficient, modulus, friction, nu)
-    amplitude = np.abs(tau_peak - tau_valley) ** m  # (n_peaks, m*m, n_x)
-    omega = np.zeros((n_blocks,) + amplitude.shape[1:])
-    np.add.at(omega, block_index, amplitude)
+    omega = np.zeros((n_blocks, peaks.shape[1], np.size(x)))
+    # in chunks of peaks: the stress profiles of all peaks at once would take (peaks x asperities x n_x) floats
+    chunk = max(1, _CHUNK_VALUES // max(1, peaks.shape[1] * np.size(x)))
+    for start in range(0, peaks.shape[0], chunk):
+        part = slice(start, start + chunk)
+        tau_peak = principal_shear_profile(x, peaks[part], degree, coefficient, modulus, friction, nu)
+        tau_valley = principal_shear_profile(x, valleys[part], degree, coefficient, modulus, friction, nu)
+        np.add.at(omega, block_index[part], np.abs(tau_peak - tau_valley) ** m)  # (chunk, m*m, n_x)
     return x, omega, peaks, m
+
+
+#: At most this many distinct asperity loads put their contact edges into the x grid (:func:`_edge_loads`).
+_MAX_EDGE_LOADS = 256
+#: Stress values per chunk of peaks in :func:`_asperity_damage` (~160 MB of float64).
+_CHUNK_VALUES = 20_000_000
+
+
+def _edge_loads(loaded):
+    """The sorted distinct loads whose contact edges join the x grid: all of them up to _MAX_EDGE_LOADS, else the
+    largest half of that number and evenly spaced ones among the rest."""
+    if loaded.size <= _MAX_EDGE_LOADS:
+        return loaded
+    top = _MAX_EDGE_LOADS // 2
+    rest = loaded[:-top]
+    return np.concatenate([rest[np.linspace(0, rest.size - 1, _MAX_EDGE_LOADS - top).astype(int)], loaded[-top:]])
 
 
 def _result(x, omega, classes, m, counts, peak_loads_of_worst):
