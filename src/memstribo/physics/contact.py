@@ -818,7 +818,11 @@ def solve_line_contact(separation, dx, contact_modulus, *, load=None, mean_press
     method : {"active-set", "polonsky-keer"}, optional
         "active-set" (default): primal-dual active set, each contact set solved by the
         preconditioned CG, falling back to Polonsky-Keer should the set not settle within 30
-        updates; "polonsky-keer": the constrained CG of [1]_ throughout.
+        updates; "polonsky-keer": the constrained CG of [1]_ throughout. Under load control a
+        free-boundary grid of at most ``_DENSE_SOLVE_MAX`` (1024) elements, such as a meshing
+        window, is solved with the dense influence matrix instead, each contact set exactly by
+        Cholesky (with or without adhesion; the same answer to the tolerance, tested), and
+        ``iterations`` then counts contact sets (or cohesive-zone updates).
     cohesive_stress : float, optional
         Dugdale stress sigma0 [Pa] of a Maugis-Dugdale cohesive zone (give it with
         ``cohesive_range``; :func:`memstribo.physics.adhesion.maugis_stress`). Both None (default):
@@ -1544,14 +1548,17 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
 
 
 def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
-                     reference_distance, initial_pressure, stress, reach, zones, kind="capillary (dense)"):
+                     reference_distance, initial_pressure, stress, reach, zones, kind="capillary (dense)",
+                     checked=False):
     """:func:`_dense_capillary` as a :class:`ContactSolution`, or None (the general solver then runs).
 
-    ``kind`` starts the message (what the zones are).
+    ``kind`` starts the message (what the zones are); ``checked``: ``separation`` is the array its caller
+    has already checked (with the other inputs), so the checks are not run twice.
     """
     start = time.perf_counter()
-    h = _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure, None, tolerance, max_iterations,
-                               reference_distance, initial_pressure, stress, reach)
+    h = separation if checked else _check_adhesive_inputs(separation, dx, contact_modulus, load, mean_pressure, None,
+                                                          tolerance, max_iterations, reference_distance,
+                                                          initial_pressure, stress, reach)
     n = h.size
     dx = float(dx)
     modulus = float(contact_modulus)
@@ -1614,7 +1621,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     if dense and sigma0 and approach is None and not periodic and not internal and zones is None and n <= _DENSE_SOLVE_MAX:
         solution = _small_capillary(h, dx, modulus, load, mean_pressure, periodic, tolerance, max_iterations,
                                     reference_distance, initial_pressure, sigma0, h0, ((sigma0, h0),),
-                                    kind=f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)")
+                                    kind=f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)",
+                                    checked=True)
         if solution is not None:
             return solution
     reference, cap, operator, small = _operator_and_limits(n, dx, modulus, periodic, reference_distance,
