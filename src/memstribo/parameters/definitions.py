@@ -248,7 +248,8 @@ _SPECS = [
                   "window as one surface contact per step: rows share the load elastically)", kind="str",
                   choices=("line", "surface")),
     ParameterSpec("contact_adhesion", "", "Adhesion inside the rough contact solve of the meshing cycle: 'maugis' "
-                  "(Maugis-Dugdale cohesive zone, sigma0 and h0 from the constants; MODEL 7c) or 'none'",
+                  "(the default: Maugis-Dugdale cohesive zone, sigma0 and h0 from the constants; MODEL 7c) or 'none' "
+                  "(adhesion as the sum of block pull-off forces, 3-31, as in the thesis)",
                   kind="str", choices=("maugis", "none")),
     _range("mesh_elements_across_contact", "", "Contact elements across the largest Hertz width 2a when "
            "mesh_grid_spacing is unset", 8, 4096,
