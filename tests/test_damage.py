@@ -288,3 +288,26 @@ def test_cli_damage_from_the_mesh_with_c1(cli, tmp_path):
         assert (tmp_path / f"{stem}.nc").exists() and (tmp_path / f"{stem}.csv").exists()
     for stem in ("damage_profile", "damage_map", "damage_history", "pressure_and_tau1", "tau1_corner_loads"):
         assert (tmp_path / f"{stem}.png").exists() and (tmp_path / f"{stem}.svg").exists()
+
+
+def test_damage_grid_takes_a_bounded_set_of_contact_edges_and_chunks_give_the_same_sum(params, monkeypatch):
+    """The x grid holds the contact edges of at most _MAX_EDGE_LOADS distinct loads (the largest half of them
+    and evenly spaced others, smallest included); summing the profiles in chunks of peaks changes nothing."""
+    import memstribo.physics.damage as damage
+    from memstribo.simulations import mesh
+
+    few = np.arange(1.0, 11.0)
+    np.testing.assert_array_equal(damage._edge_loads(few), few)
+    many = np.sort(np.random.default_rng(3).uniform(1e-9, 1e-6, 5000))
+    picked = damage._edge_loads(many)
+    assert picked.size == damage._MAX_EDGE_LOADS and np.all(np.diff(picked) > 0)
+    np.testing.assert_array_equal(picked[-damage._MAX_EDGE_LOADS // 2:], many[-damage._MAX_EDGE_LOADS // 2:])
+    assert picked[0] == many[0]
+
+    dataset = mesh.simulate_mesh(params, steps=24)
+    whole = damage.mesh_damage(dataset, params)
+    assert whole.x.size <= 501 + 2 * damage._MAX_EDGE_LOADS
+    monkeypatch.setattr(damage, "_CHUNK_VALUES", 1)  # one peak per chunk
+    chunked = damage.mesh_damage(dataset, params)
+    np.testing.assert_array_equal(chunked.x, whole.x)
+    np.testing.assert_allclose(chunked.omega_over_c1, whole.omega_over_c1, rtol=1e-12, atol=0.0)
