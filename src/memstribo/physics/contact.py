@@ -1368,25 +1368,23 @@ def _sparse_fraction(gap, sigma, reach, contact, periodic, floor=None):
     ``g_i <= 2 reach - floor``. None where more than ``_SPARSE_FRACTION_MAX`` elements qualify.
     """
     n = gap.size
+    last = n - 1
     limit = 2.0 * reach - min(float(gap.min()) if floor is None else floor, 0.0)
     fraction = contact.astype(float)
-    candidates = (gap <= limit + abs(limit) * 1e-9).nonzero()[0]
-    if candidates.size == 0:
-        return fraction
-    candidates = candidates[~contact[candidates]]
+    candidates = ((gap <= limit + abs(limit) * 1e-9) & ~contact).nonzero()[0]
     if candidates.size > _SPARSE_FRACTION_MAX:
         return None
     values = gap.tolist()
-    for i in candidates.tolist():
+    for i in candidates.tolist():  # plain floats: cheaper than numpy on a handful of elements
         g = values[i]
         both = 0.0
         for j in (i - 1, i + 1):  # the left and the right half
-            neighbour = values[j % n] if periodic else values[min(max(j, 0), n - 1)]
+            neighbour = values[j % n] if periodic else values[0 if j < 0 else (last if j > last else j)]
             edge = 0.5 * (neighbour + g)
-            low, high = min(edge, g), max(edge, g)
+            low, high = (edge, g) if edge < g else (g, edge)
             span = high - low
             part = (reach - low) / span if span > 0.0 else float(low <= reach)
-            both += min(max(part, 0.0), 1.0)
+            both += 0.0 if part < 0.0 else (1.0 if part > 1.0 else part)
         fraction[i] = (sigma * (0.5 * both)) / sigma
     return fraction
 
@@ -1423,7 +1421,6 @@ def _dense_contact(matrix, h, total, contact, tolerance_abs, factors=None):
     if factors is None:
         factors = {}
     potrs = _lapack_cholesky()[1]
-    negative = -h
     seen = set()
     for updates in range(1, _MAX_OUTER + 1):
         cached = factors.get(key)
@@ -1434,7 +1431,7 @@ def _dense_contact(matrix, h, total, contact, tolerance_abs, factors=None):
             factors.clear()
             factors[key] = cached
         indices, factor, ones, ones_sum = cached
-        y, info = potrs(factor, negative[indices], lower=False, overwrite_b=True)
+        y, info = potrs(factor, -h[indices], lower=False, overwrite_b=True)
         if info != 0:
             return None
         delta = (total - y.sum()) / ones_sum
