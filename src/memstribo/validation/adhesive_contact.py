@@ -21,6 +21,19 @@ def _rounded(value, digits):
     return float(f"{value:.{digits}g}")
 
 
+#: The pull-off state flips by one element between machines (round-off of the BLAS and FFT kernels): on
+#: the AMD EPYC (AVX-512) of 2026-11-25 it is 96.233 N/m at a half-width of 66.2 nm, on the CI's machine
+#: above 96.25 N/m and 64.5-65.5 nm. The table shows the load to 2 significant digits and the half-width
+#: to the nearest 5 nm, so that it is the same on both.
+_PULL_OFF_NOTE = ("shown to 2 significant digits: the pull-off state differs by one element (0.85 nm) between "
+                  "machines, 96.23 or 96.25-96.35 N/m")
+
+
+def _nearest(value, step):
+    """``value`` rounded to a multiple of ``step``."""
+    return float(round(value / step) * step)
+
+
 def _pull_off(radius, modulus, sigma0, h0, points):
     """What ``memstribo contact --flat --adhesion --pull-off ...`` prints, through the library."""
     from memstribo.physics.adhesive_contact import line_contact_pull_off
@@ -58,13 +71,15 @@ def rows() -> list[ValidationRow]:
     rows_ = [
         compare(TOPIC, f"pull-off line load, Si/Si cylinder R = 10 um (lambda = {out['maugis_parameter']:.2f})",
                 "Maugis-Dugdale cylinder (Baney & Hui 1997), docs/contact.md", -reference,
-                _rounded(out["pull_off_line_load"], 3), "N/m", rtol=5e-3, command=_command(PULL_OFF_ARGS)),
+                _rounded(out["pull_off_line_load"], 2), "N/m", rtol=5e-3, command=_command(PULL_OFF_ARGS),
+                note=_PULL_OFF_NOTE),
         compare(TOPIC, "pull-off half-width, same", "Maugis-Dugdale cylinder (Baney & Hui 1997)", width * 1e9,
-                _rounded(out["pull_off_half_width"] * 1e9, 2), "nm", rtol=5e-2, command=_command(PULL_OFF_ARGS),
-                note="the contact length counts whole elements (0.85 nm)"),
+                _nearest(out["pull_off_half_width"] * 1e9, 5.0), "nm", rtol=5e-2, command=_command(PULL_OFF_ARGS),
+                note="to the nearest 5 nm: the contact length counts whole elements (0.85 nm), and the pull-off "
+                     "state differs by one element between machines (66.2 or 64.5-65.5 nm)"),
         compare(TOPIC, "pull-off line load, same", "JKR line contact (3/4)(4 pi E* w^2 R)^(1/3)",
-                -float(jkr_line_pull_off_load(10e-6, 85e9, w)), _rounded(out["pull_off_line_load"], 3), "N/m",
-                rtol=1e-2, command=_command(PULL_OFF_ARGS)),
+                -float(jkr_line_pull_off_load(10e-6, 85e9, w)), _rounded(out["pull_off_line_load"], 2), "N/m",
+                rtol=1e-2, command=_command(PULL_OFF_ARGS), note=_PULL_OFF_NOTE),
     ]
     out = _adhesive(100e-6, 3.5e-6, 2048, 85e9, -100.0, 1.78e9, 0.25e-9)
     a_jkr = brentq(lambda a: float(jkr_line_load(a, 100e-6, 85e9, w)) + 100.0, 300e-9, 2e-6)
