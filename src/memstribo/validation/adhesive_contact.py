@@ -21,10 +21,11 @@ def _rounded(value, digits):
     return float(f"{value:.{digits}g}")
 
 
-#: The pull-off state flips by one element between machines (round-off of the BLAS and FFT kernels): on
-#: the AMD EPYC (AVX-512) of 2026-11-25 it is 96.233 N/m at a half-width of 66.2 nm, on the CI's machine
-#: above 96.25 N/m and 64.5-65.5 nm. The table shows the load to 2 significant digits and the half-width
-#: to the nearest 5 nm, so that it is the same on both.
+#: The pull-off state differs by one element between machines (the same code and packages; the round-off
+#: differs with the processor): on an AMD EPYC with AVX-512 (2026-11-25) it is 96.233 N/m at a half-width of
+#: 66.2 nm; on the machine that generated the table before (which CI reproduced) 96.25-96.35 N/m and
+#: 64.5-65.5 nm. The table shows the load to 2 significant digits and the half-width to the nearest 5 nm,
+#: so that it is the same on both.
 _PULL_OFF_NOTE = ("shown to 2 significant digits: the pull-off state differs by one element (0.85 nm) between "
                   "machines, 96.23 or 96.25-96.35 N/m")
 
