@@ -25,6 +25,8 @@ def main():
     parser.add_argument("--sample", type=int, default=300, help="solves re-run for the variants (default 300)")
     parser.add_argument("--seed", type=int, default=0, help="seed of the sample (default 0)")
     args = parser.parse_args()
+    if args.sample < 1:
+        parser.error(f"--sample must be a whole number >= 1, not {args.sample}")
 
     from memstribo.parameters import get_parameter_values
     from memstribo.physics import contact
