@@ -106,7 +106,7 @@ def test_package_import_is_light(module):
     import sys
 
     code = (f"import sys, {module}; heavy = [m for m in ('matplotlib', 'SurfaceTopography', 'dask', 'distributed', "
-            f"'xarray', 'scipy') if m in sys.modules]; print(','.join(heavy))")
+            f"'xarray', 'scipy', 'numba') if m in sys.modules]; print(','.join(heavy))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.strip()
     assert out == "", f"import {module} loads {out}"
 

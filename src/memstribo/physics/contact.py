@@ -1493,12 +1493,22 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
     total + sigma sum(f); settled when no fraction moves by more than ``_FRACTION_TOLERANCE``, or
     the zone's load by less than ``_ZONE_LOAD_TOLERANCE`` with no fraction moving by more than
     ``_ZONE_MAX_CHANGE``; Aitken extrapolation of creeping fronts every third update), each
-    inner problem solved exactly (:func:`_dense_contact`). ``h`` has its minimum at 0. Returns
-    (p, gap, contact, fraction, delta, updates) or None where it cannot (the general solver then runs).
+    inner problem solved exactly (Cholesky on the contact set, primal-dual active set as
+    :func:`_dense_contact`). The loop is compiled (:func:`memstribo.physics._zone_kernel.zone_solve`):
+    a meshing cycle makes ~10^4 of these solves of ~20 updates each. ``h`` has its minimum at 0.
+    Returns (p, gap, contact, fraction, delta, updates) or None where it cannot (the general solver then runs).
     """
+    from memstribo.physics._zone_kernel import SETTLED, zone_solve  # numba: imported on first use
+
     n = h.size
     matrix = _full_matrix(n, dx, modulus, periodic, reference)
-    sigma = sum(s for s, _ in zones)
+    sigmas = np.array([float(s) for s, _ in zones])
+    reaches = np.empty((len(zones), n))
+    per_element = np.zeros(len(zones), dtype=bool)
+    for k, (_, reach) in enumerate(zones):
+        reaches[k] = reach
+        per_element[k] = np.ndim(reach) > 0
+    sigma = float(sigmas.sum())
     top = float(h.max())
     scale = top if top > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
     if p_start is not None:  # min(clip(-p/sigma, 0, 1) + (p > 0), 1)
@@ -1508,40 +1518,13 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
     else:
         fraction = np.zeros(n)
         contact = np.zeros(n, dtype=bool)
-    tolerance_abs = tolerance * scale
-    single = len(zones) == 1 and np.ndim(zones[0][1]) == 0  # one zone of one range: the sparse fraction
-    gaps = []
-    factors = {}  # the Cholesky factor of the last contact set, reused while the set stays
-    for outer in range(1, _ADHESIVE_MAX_OUTER + 1):
-        extra = sigma * fraction.sum()
-        if total + extra <= 0.0:
-            return None
-        h_eff = h - sigma * (matrix @ fraction) if extra > 0.0 else h
-        state = _dense_contact(matrix, h_eff, total + extra, contact, tolerance_abs, factors)
-        if state is None:
-            return None
-        p_plus, gap, contact, delta, _ = state
-        new = None
-        if single:  # the settled set leaves no gap below -tolerance_abs
-            new = _sparse_fraction(gap, zones[0][0], zones[0][1], contact, periodic, floor=-tolerance_abs)
-        if new is None:
-            new = _dense_fraction(gap, zones, contact, periodic)
-        step = np.abs(new - fraction)
-        change = step.max()
-        if change <= _FRACTION_TOLERANCE or (
-                change <= _ZONE_MAX_CHANGE
-                and step.sum() <= _ZONE_LOAD_TOLERANCE * max(float(new[~contact].sum()), 1.0)):
-            return p_plus - sigma * fraction, gap, contact, fraction, delta, outer
-        gaps.append(gap)  # zero on the contact set
-        if len(gaps) >= 3 and outer % 3 == 0:
-            d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
-            denominator = _dot(d0, d0)
-            ratio = min(_dot(d1, d0) / denominator, _AITKEN_MAX_RATIO) if denominator > 0 else 0.0
-            if ratio >= _AITKEN_MIN_RATIO:
-                new = _dense_fraction(gap + d1 * (ratio / (1.0 - ratio)), zones, contact, periodic)
-        del gaps[:-3]
-        fraction = new
-    return None
+    status, p, gap, delta, updates = zone_solve(
+        matrix, np.ascontiguousarray(h, dtype=float), float(total), sigmas, reaches, per_element, bool(periodic),
+        fraction, contact, tolerance * scale, _ADHESIVE_MAX_OUTER, _MAX_OUTER, _FRACTION_TOLERANCE,
+        _ZONE_LOAD_TOLERANCE, _ZONE_MAX_CHANGE, _AITKEN_MIN_RATIO, _AITKEN_MAX_RATIO)
+    if status != SETTLED:
+        return None
+    return p, gap, contact, fraction, delta, updates
 
 
 def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
@@ -1572,7 +1555,7 @@ def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, perio
     scale = top if top > 0 else max(abs(total) * dx / modulus, reach)
     # complementarity residual as the general solver's: penetration outside the contact set (its gap is exact:
     # zero on the set, so the smallest gap is the deepest penetration outside it, if any)
-    residual = max(-float(gap.min()), 0.0) / scale
+    residual = max(0.0, -float(gap.min())) / scale  # max(0, -0.0): not "-0.00e+00"
     converged = residual <= tolerance
     cohesive = (fraction > 0.0) & ~contact
     verdict = "converged" if converged else "NOT converged"
