@@ -136,12 +136,12 @@ def main(argv=None):
         point["elements_per_step"] = int(round(dataset.attrs["window"] / dataset.attrs["grid_spacing"]))
         results["vs_grid"].append(point)
     if args.ensemble:
-        from distributed import Client, LocalCluster
+        from distributed import Client
 
         from memstribo.simulations.mesh import simulate_ensemble
+        from memstribo.simulations.study import local_cluster
 
-        with LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
-                          dashboard_address=None) as cluster, Client(cluster) as client:
+        with local_cluster(args.workers) as cluster, Client(cluster) as client:
             client.run(lambda: __import__("memstribo.simulations.mesh"))  # warm the workers' imports
             start = time.perf_counter()
             ensemble = simulate_ensemble(params, realisations=args.ensemble, client=client)

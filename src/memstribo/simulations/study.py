@@ -87,6 +87,13 @@ LOCAL_CLUSTER_QUIET: dict[str, Any] = {"dashboard_address": None,
                                        "scheduler_kwargs": {"dashboard_address": "127.0.0.1:0"},
                                        "silence_logs": logging.ERROR}
 
+#: Dask's nannies export MALLOC_TRIM_THRESHOLD_=65536 to their workers (to hand freed memory back to the
+#: system sooner). Any such setting also fixes glibc's mmap threshold at 128 kB, so every array of more
+#: than 16 384 values is mapped and unmapped afresh: a meshing cycle then costs 44 % more CPU (0.481 ->
+#: 0.694 s, bench/results-map.txt entry 7). memstribo's own clusters leave glibc's default (None unsets
+#: the variable; Dask's thread limits of 1 stay); for a cluster of your own see docs/studies.md.
+LOCAL_CLUSTER_ENVIRON: dict[str, Any] = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}
+
 #: How long to wait for an existing Dask scheduler before giving up.
 CONNECT_TIMEOUT = "10s"
 
@@ -607,8 +614,8 @@ def _finished_points(folder: Path, ids: set[str]) -> dict[str, dict]:
 
 
 def _connect(scheduler: str | None, workers: int | None):
-    """A dask.distributed Client: to ``scheduler`` or to a new quiet LocalCluster."""
-    from distributed import Client, LocalCluster
+    """A dask.distributed Client: to ``scheduler`` or to a new quiet LocalCluster (:func:`local_cluster`)."""
+    from distributed import Client
 
     if scheduler:
         try:
@@ -616,9 +623,20 @@ def _connect(scheduler: str | None, workers: int | None):
         except (OSError, TimeoutError, ValueError) as exc:
             raise InputError(f"cannot connect to the Dask scheduler at '{scheduler}': {exc}. "
                              "Start one with 'dask scheduler' (see docs/studies.md).") from None
-    n_workers = workers or os.cpu_count() or 1
-    cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, **LOCAL_CLUSTER_QUIET)
+    cluster = local_cluster(workers or os.cpu_count() or 1)
     return Client(cluster, set_as_default=False), cluster
+
+
+def local_cluster(n_workers: int):
+    """The LocalCluster that studies and maps start: ``n_workers`` processes of one thread each, quiet
+    (:data:`LOCAL_CLUSTER_QUIET`), with glibc's own memory settings (:data:`LOCAL_CLUSTER_ENVIRON`; a
+    MALLOC_TRIM_THRESHOLD_ already in this process's environment, yours or left by a Dask cluster started
+    earlier in it, is still inherited)."""
+    import dask
+    from distributed import LocalCluster
+
+    with dask.config.set(LOCAL_CLUSTER_ENVIRON):  # read when the nannies are made, here
+        return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, **LOCAL_CLUSTER_QUIET)
 
 
 def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str | None = None,
