@@ -333,10 +333,16 @@ def test_limit_cycle_of_the_zone_is_damped(monkeypatch):
     assert not plain.converged and "did not settle" in plain.message
 
 
-def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tolerance):
+def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tolerance, zones=None):
     """The dense cohesive-zone fixed point as first written (commit fcc53e9): one Cholesky factorisation per
-    contact set solved and the vectorised cohesive fraction; (p, contact, fraction, updates) or None."""
+    contact set solved and the vectorised cohesive fraction; (p, contact, fraction, updates) or None.
+    ``zones``: several (stress, range) zones instead of (sigma, h0), ``sigma`` their summed stress."""
     from memstribo.physics import contact as c
+
+    def cohesive_fraction(gap, contact):
+        if zones is None:
+            return c._cohesive_fraction(gap, h0, contact, False)
+        return c._cohesive_fraction(gap, None, contact, False, zones=zones)
 
     n = h.size
     matrix = c._full_matrix(n, dx, modulus, False, n * dx)
@@ -360,7 +366,7 @@ def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tole
         else:
             return None
         gap[contact] = 0.0
-        new = c._cohesive_fraction(gap, h0, contact, False)
+        new = cohesive_fraction(gap, contact)
         step = np.abs(new - fraction)
         change = step.max()
         if change <= c._FRACTION_TOLERANCE or (change <= c._ZONE_MAX_CHANGE and step.sum()
@@ -371,7 +377,7 @@ def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tole
             d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
             ratio = min(np.dot(d1, d0) / np.dot(d0, d0), c._AITKEN_MAX_RATIO) if np.dot(d0, d0) > 0 else 0.0
             if ratio >= c._AITKEN_MIN_RATIO:
-                new = c._cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), h0, contact, False)
+                new = cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), contact)
         del gaps[:-3]
         fraction = new
     return None
@@ -408,6 +414,43 @@ def test_dense_maugis_solves_follow_the_reference_fixed_point():
             zone.append(solution.adhesive_load)
         previous = solution.pressure
     assert max(updates) > 1 and max(zone) > 0.0
+
+
+def test_dense_humid_solves_follow_the_reference_fixed_point():
+    """The same with two zones, as in humid air: the Maugis-Dugdale zone and the menisci's Laplace pressure
+    over a condensation height that varies per element (zero on some: no meniscus there, not even in
+    contact); the compiled loop follows the numpy fixed point update for update."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.surfaces.roughness import default_profile
+
+    profile = default_profile(get_parameter_values(), length=8e-6)
+    n, dx, tolerance = 200, 10e-9, 1e-8
+    x = (np.arange(n) - n / 2) * dx
+    laplace = 1.2e8
+    reach = 1.2e-9 * (1.0 + 0.5 * np.sin(np.arange(n) / 7.0))
+    reach[::3] = 0.0
+    zones = ((SIGMA0, H0), (laplace, reach))
+    previous = None
+    updates, wetted = [], []
+    for shift in np.arange(10) * 1.5 * dx:
+        rough = np.interp(x + 2.5e-6 + shift, profile.x - profile.x[0], profile.z)
+        separation = x**2 / (2 * 20e-6) - rough
+        solution = solve_line_contact(separation, dx, E_STAR, load=60.0, tolerance=tolerance, initial_pressure=previous,
+                                      cohesive_stress=SIGMA0, cohesive_range=H0, capillary_stress=laplace,
+                                      capillary_range=reach)
+        assert "dense matrices" in solution.message and solution.converged
+        if previous is not None:
+            h = separation - separation.min()
+            reference = _reference_dense_fixed_point(h, dx, E_STAR, 60.0 / dx, SIGMA0 + laplace, None, previous,
+                                                     tolerance, zones=zones)
+            assert reference is not None
+            p, contact, fraction, outer = reference
+            assert solution.iterations == outer and np.array_equal(solution.contact, contact)
+            assert np.allclose(solution.pressure, p, rtol=0, atol=1e-9 * np.abs(p).max())
+            updates.append(outer)
+            wetted.append(solution.capillary_load)
+        previous = solution.pressure
+    assert max(updates) > 1 and min(wetted) > 0.0
 
 
 def test_sparse_cohesive_fraction_is_the_vectorised_formula(monkeypatch):
