@@ -554,3 +554,25 @@ def test_load_control_may_reach_another_adhered_state(monkeypatch):
         assert state.converged and repeat.converged
         assert np.count_nonzero(state.contact != repeat.contact) <= 2
         assert repeat.adhesive_load == pytest.approx(state.adhesive_load, rel=1e-3)
+
+
+def test_zone_kernel_compiles_without_a_writable_cache(monkeypatch):
+    """Where numba finds no writable cache folder it raises at decoration; the kernel then compiles without
+    the cache (once per process) instead of failing the import."""
+    from memstribo.physics import _zone_kernel as kernel
+
+    calls = []
+
+    def njit(**options):
+        calls.append(options)
+        if options.get("cache"):
+            raise RuntimeError("cannot cache function 'f': no locator available for file 'f.py'")
+        return lambda function: ("compiled", function)
+
+    monkeypatch.setattr(kernel, "njit", njit)
+
+    def function():
+        return 0
+
+    assert kernel._jit(function) == ("compiled", function)
+    assert calls == [{"cache": True, "nogil": True}, {"nogil": True}]

@@ -6,8 +6,8 @@ calls on small arrays (~30 us of call overhead for a few us of arithmetic), so t
 here: the same fixed point, the same settling rule, the same inner active-set solve with exact
 (Cholesky) solves on each contact set; only the order of the floating-point sums differs (matrix
 products over the non-zero columns only). Imported lazily (numba's import takes ~0.5 s) and
-compiled once per machine (``cache=True``: numba's cache, next to this file or in the user's cache
-directory).
+compiled once per machine (numba's cache, next to this file or in the user's cache directory;
+without a writable one, once per process).
 
 Status codes of :func:`zone_solve`: 0 settled, 1 the update budget ran out, 2 the inner solve
 failed (no positive-definite contact set, a cycling or empty set, or a non-positive total load):
@@ -24,7 +24,16 @@ from numba import njit
 SETTLED, UNSETTLED, FAILED = 0, 1, 2
 
 
-@njit(cache=True, nogil=True)
+def _jit(function):
+    """``numba.njit`` with numba's cache, or without it where no cache folder is writable (numba raises then;
+    each process compiles anew, ~6 s)."""
+    try:
+        return njit(cache=True, nogil=True)(function)
+    except RuntimeError:  # "cannot cache function ...: no locator available"
+        return njit(nogil=True)(function)
+
+
+@_jit
 def _cholesky(matrix, indices, m, factor):
     """Lower Cholesky factor of matrix[indices[:m], indices[:m]] into factor[:m, :m]; False if not positive definite."""
     for j in range(m):
@@ -44,7 +53,7 @@ def _cholesky(matrix, indices, m, factor):
     return True
 
 
-@njit(cache=True, nogil=True)
+@_jit
 def _cholesky_solve(factor, m, b, out):
     """out[:m] = (L L^T)^-1 b[:m]."""
     for i in range(m):
@@ -59,7 +68,7 @@ def _cholesky_solve(factor, m, b, out):
         out[i] = s / factor[i, i]
 
 
-@njit(cache=True, nogil=True)
+@_jit
 def _columns_product(matrix, values, support, count, out):
     """out = matrix @ values for values non-zero only at support[:count] (matrix symmetric: rows are read)."""
     out[:] = 0.0
@@ -71,7 +80,7 @@ def _columns_product(matrix, values, support, count, out):
             out[i] += matrix[j, i] * v
 
 
-@njit(cache=True, nogil=True)
+@_jit
 def _contact(matrix, h, total, contact, tolerance_abs, max_sets, state):
     """Non-adhesive contact under load control on the grid (as contact._dense_contact); fills p, gap, contact.
 
@@ -144,7 +153,7 @@ def _contact(matrix, h, total, contact, tolerance_abs, max_sets, state):
     return False, 0.0
 
 
-@njit(cache=True, nogil=True)
+@_jit
 def _fraction(gap, sigmas, reaches, per_element, contact, periodic, out):
     """The sigma-weighted cohesive fraction of the zones (contact._dense_fraction's formula) into out."""
     n = gap.size
@@ -183,7 +192,7 @@ def _fraction(gap, sigmas, reaches, per_element, contact, periodic, out):
         out[i] /= total
 
 
-@njit(cache=True, nogil=True)
+@_jit
 def zone_solve(matrix, h, total, sigmas, reaches, per_element, periodic, fraction, contact, tolerance_abs,
                max_updates, max_sets, fraction_tolerance, load_tolerance, max_change, aitken_min, aitken_max):
     """The cohesive-zone fixed point on a small grid (contact._dense_capillary); see the module's docstring.
