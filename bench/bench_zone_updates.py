@@ -8,7 +8,8 @@ Runs one meshing cycle (one realisation) of the 6 x 6 map's heaviest point (driv
 random sample of those solves: the time per solve and per update, the same solves started cold
 (no previous pressure), and with looser zone tolerances (``_FRACTION_TOLERANCE`` and
 ``_ZONE_LOAD_TOLERANCE``), with how many solves settle in another state (zone fraction sum
-differing by more than 0.05 of an element). bench/results-map.txt, entry 6, reads these.
+differing by more than 0.05 of an element). bench/results-map.txt, entries 6 (the numpy loop) and 7
+(the compiled loop), read these.
 """
 
 from __future__ import annotations
