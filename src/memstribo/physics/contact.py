@@ -1359,17 +1359,17 @@ def _dense_fraction(gap, zones, contact, periodic):
 _SPARSE_FRACTION_MAX = 8
 
 
-def _sparse_fraction(gap, sigma, reach, contact, periodic, floor=None):
+def _sparse_fraction(gap, sigma, reach, contact, periodic):
     """The cohesive fraction [-] of one zone (stress ``sigma`` [Pa], range ``reach`` [m]), or None.
 
     The formula of :func:`_dense_fraction`, element by element (the same floating-point operations) on the few
     elements outside the contact set that can carry a fraction: a half element does only where its lower end
-    ``min(g_i, (g_i + g_j) / 2)`` is <= reach, which with every gap >= ``floor`` (default: min(g)) needs
-    ``g_i <= 2 reach - floor``. None where more than ``_SPARSE_FRACTION_MAX`` elements qualify.
+    ``min(g_i, (g_i + g_j) / 2)`` is <= reach, which with every gap >= min(g) needs ``g_i <= 2 reach - min(g)``.
+    None where more than ``_SPARSE_FRACTION_MAX`` elements qualify.
     """
     n = gap.size
     last = n - 1
-    limit = 2.0 * reach - min(float(gap.min()) if floor is None else floor, 0.0)
+    limit = 2.0 * reach - min(float(gap.min()), 0.0)
     fraction = contact.astype(float)
     candidates = ((gap <= limit + abs(limit) * 1e-9) & ~contact).nonzero()[0]
     if candidates.size > _SPARSE_FRACTION_MAX:
@@ -1405,32 +1405,26 @@ def _dense_factor(matrix, indices):
     return indices, factor, ones, ones_sum
 
 
-def _dense_contact(matrix, h, total, contact, tolerance_abs, factors=None):
+def _dense_contact(matrix, h, total, contact, tolerance_abs):
     """Non-adhesive contact on a small grid under load control: primal-dual active set with Cholesky solves.
 
     ``A_CC p_C - delta = -h_C``, ``sum(p_C) = total`` on the contact set C (:func:`_saddle_point`'s two
     solves with one factor), then C updated (p < 0 leaves, penetration joins) until it settles. Returns
     (p, gap, contact, delta, sets solved) or None (no set, cycling, not positive definite: the caller falls
-    back to the general solver). ``factors``: a dict in which the last set's factor is kept between calls
-    (the cohesive-zone updates of :func:`_dense_capillary` start from the set the previous call ended with).
+    back to the general solver). The cohesive-zone problems run the same loop compiled
+    (:mod:`memstribo.physics._zone_kernel`).
     """
     key = contact.tobytes()
     if b"\x01" not in key:
         contact = h <= h.min()
         key = contact.tobytes()
-    if factors is None:
-        factors = {}
     potrs = _lapack_cholesky()[1]
     seen = set()
     for updates in range(1, _MAX_OUTER + 1):
-        cached = factors.get(key)
-        if cached is None:
-            cached = _dense_factor(matrix, contact.nonzero()[0])
-            if cached is None:
-                return None
-            factors.clear()
-            factors[key] = cached
-        indices, factor, ones, ones_sum = cached
+        factored = _dense_factor(matrix, contact.nonzero()[0])
+        if factored is None:
+            return None
+        indices, factor, ones, ones_sum = factored
         y, info = potrs(factor, -h[indices], lower=False, overwrite_b=True)
         if info != 0:
             return None
