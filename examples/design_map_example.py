@@ -4,7 +4,7 @@ Writes the map to a working folder (default: a temporary one) and the figures
 ``docs/figures/design_map_stiction.png``, ``design_map_efficiency.png`` (and SVG) used by
 docs/design-maps.md::
 
-    python examples/design_map_example.py            # the documented map (a few minutes on 2 cores)
+    python examples/design_map_example.py            # the documented map (about 20 s on 2 cores)
     python examples/design_map_example.py --tiny --out /tmp/x   # 2 x 2 x 2 points, seconds
 """
 
