@@ -5,7 +5,7 @@ A meshing cycle solves some ten thousand Maugis-Dugdale (and capillary) line con
 calls on small arrays (~30 us of call overhead for a few us of arithmetic), so the loop is compiled
 here: the same fixed point, the same settling rule, the same inner active-set solve with exact
 (Cholesky) solves on each contact set; only the order of the floating-point sums differs (matrix
-products over the non-zero columns only). Imported lazily (numba's import takes ~0.5 s) and
+products over the non-zero columns only). Imported lazily (with numba: ~0.3 s) and
 compiled once per machine (numba's cache, next to this file or in the user's cache directory;
 without a writable one, once per process).
 
