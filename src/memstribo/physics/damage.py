@@ -489,11 +489,12 @@ def _asperity_damage(peak_block_loads, valley_block_loads, block_index, n_blocks
     if x is not None:
         return x, omega_at(x), peaks, m
     # a uniform grid plus the contact edges of the loads: tau_1 peaks in a cusp at an edge, so the damage
-    # profile's maximum lies on one. With up to _MAX_EDGE_LOADS distinct loads all edges are in the grid;
+    # profile's maximum lies at or next to one. With up to _MAX_EDGE_LOADS distinct loads all edges are in the grid;
     # with more (a meshing cycle has tens of thousands) the largest half of that number and evenly spaced
     # others, and then, after a first pass, every edge near each asperity's largest values
     # (:func:`_edges_near_maxima`): without them the maximum fell 0.2-3 % short and depended on which edges
-    # the grid held, so on round-off in the loads (0.8 %: docs/damage.md, "Resolution of the maximum").
+    # the grid held, so on round-off in the loads (0.8 %: docs/damage.md, "Resolution of the maximum"). Each
+    # block's own maximum (Omega(N)) is refined only where it is near these largest values.
     distinct = np.unique(peaks[peaks > 0])
     loaded = _edge_loads(distinct)
     radii = power_law_contact_radius(loaded, degree, coefficient, modulus) if loaded.size else np.ones(1)
@@ -531,7 +532,7 @@ def _edges_near_maxima(x, omega, edges):
     high = x[np.minimum(hits + _EDGE_WINDOW, x.size - 1)]
     edges = np.unique(edges)
     inside = np.zeros(edges.size, dtype=bool)
-    for lo, hi in zip(low, high):  # a few dozen windows
+    for lo, hi in zip(low, high):  # one window per grid point near a maximum
         inside[np.searchsorted(edges, lo):np.searchsorted(edges, hi, side="right")] = True
     return np.setdiff1d(edges[inside], x)
 
