@@ -581,7 +581,8 @@ def nanoblock_damage(loads, params, *, peaks_per_cycle: int | None = None, x=Non
     peaks_per_cycle : int, optional
         k; default the parameter ``peaks_per_cycle`` (48).
     x : array_like, optional
-        Positions through the asperity centre [m]; default 501 points over +-1.25 a_max.
+        Positions through the asperity centre [m]; default 501 points over +-1.25 a_max plus the contact edges
+        of the loads (:func:`_asperity_damage`). A given grid is used as it is: the maxima are its largest values.
 
     Returns
     -------
@@ -606,7 +607,9 @@ def mesh_damage(dataset, params, *, x=None) -> DamageResult:
     params : memstribo.parameters.Parameters
         As for :func:`nanoblock_damage` (``peaks_per_cycle`` is not used: the peaks are counted).
     x : array_like, optional
-        Positions through the asperity centre [m].
+        Positions through the asperity centre [m]; default as :func:`nanoblock_damage`, and where the
+        cycle has more than ``_MAX_EDGE_LOADS`` distinct asperity loads, a second pass adds the contact edges
+        near the largest values (docs/damage.md, "Resolution of the maximum"). A given grid is used as it is.
 
     Returns
     -------
