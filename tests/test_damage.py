@@ -327,6 +327,11 @@ def test_damage_maximum_is_resolved_and_does_not_hang_on_round_off(params):
     base = damage.mesh_damage(dataset, params)
     noise = 1.0 + 1e-13 * np.random.default_rng(5).standard_normal(dataset["block_load"].shape)
     other = damage.mesh_damage(dataset.assign(block_load=dataset["block_load"] * noise), params)
+    # the worked numbers of docs/damage.md (`memstribo damage --observed-life 1e5`, printed to 4 digits)
+    assert base.maximum["corner"] == pytest.approx(11.655e9, rel=1e-3)
+    assert base.maximum["side"] == pytest.approx(10.785e9, rel=1e-3)
+    assert base.maximum["central"] == pytest.approx(9.823e9, rel=1e-3)
+    assert base.life_ratio_corner_to_central == pytest.approx(0.8428, abs=2e-4)
     spacing = 2.5 * base.x.max() / 1.25 / (damage._UNIFORM_POINTS - 1)
     for position in ("corner", "side", "central"):
         assert other.maximum[position] == pytest.approx(base.maximum[position], rel=1e-9)
