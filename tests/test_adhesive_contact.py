@@ -22,6 +22,15 @@ E_STAR, W, SIGMA0 = 85e9, 0.445, 1.78e9
 H0 = W / SIGMA0
 
 
+def _tune(monkeypatch, **fields):
+    """Replace fields of the contact solvers' default settings for one test (:mod:`memstribo.physics.contact.settings`)."""
+    import dataclasses
+
+    from memstribo.physics.contact import settings
+
+    monkeypatch.setattr(settings, "DEFAULTS", dataclasses.replace(settings.DEFAULTS, **fields))
+
+
 def cylinder(n, length, radius):
     dx = length / n
     x = (np.arange(n) - 0.5 * (n - 1)) * dx
@@ -319,8 +328,6 @@ def test_limit_cycle_of_the_zone_is_damped(monkeypatch):
     """
     from pathlib import Path
 
-    import memstribo.physics.contact as contact
-
     case = np.load(Path(__file__).parent / "data" / "adhesive_limit_cycle.npz")
     kwargs = dict(load=float(case["load"]), tolerance=float(case["tolerance"]), initial_pressure=case["initial_pressure"],
                   cohesive_stress=float(case["cohesive_stress"]), cohesive_range=float(case["cohesive_range"]))
@@ -328,7 +335,7 @@ def test_limit_cycle_of_the_zone_is_damped(monkeypatch):
     assert sol.converged, sol.message
     assert sol.load == pytest.approx(kwargs["load"], rel=1e-9)
     assert np.all(sol.pressure >= -kwargs["cohesive_stress"] * (1 + 1e-12))
-    monkeypatch.setattr(contact, "_STALLED_UPDATES", 10**6)  # without the damping: the cycle
+    _tune(monkeypatch, stalled_updates=10**6)  # without the damping: the cycle
     plain = solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs)
     assert not plain.converged and "did not settle" in plain.message
 
@@ -337,25 +344,26 @@ def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tole
     """The dense cohesive-zone fixed point as first written (commit fcc53e9): one Cholesky factorisation per
     contact set solved and the vectorised cohesive fraction; (p, contact, fraction, updates) or None.
     ``zones``: several (stress, range) zones instead of (sigma, h0), ``sigma`` their summed stress."""
-    from memstribo.physics import contact as c
+    from memstribo.physics.contact import cohesive, dense, halfplane
+    from memstribo.physics.contact.settings import DEFAULTS as tuning
 
     def cohesive_fraction(gap, contact):
         if zones is None:
-            return c._cohesive_fraction(gap, h0, contact, False)
-        return c._cohesive_fraction(gap, None, contact, False, zones=zones)
+            return cohesive._cohesive_fraction(gap, h0, contact, False)
+        return cohesive._cohesive_fraction(gap, None, contact, False, zones=zones)
 
     n = h.size
-    matrix = c._full_matrix(n, dx, modulus, False, n * dx)
+    matrix = halfplane._full_matrix(n, dx, modulus, False, n * dx)
     scale = float(h.max())
     fraction = np.minimum(np.clip(-p_start / sigma, 0.0, 1.0) + (p_start > 0.0), 1.0)
     contact = p_start > 0.0
     gaps = []
-    for outer in range(1, c._ADHESIVE_MAX_OUTER + 1):
+    for outer in range(1, tuning.adhesive_max_outer + 1):
         extra = sigma * fraction.sum()
         h_eff = h - sigma * (matrix @ fraction) if fraction.any() else h
-        for _ in range(c._MAX_OUTER):  # the non-adhesive problem for p+ on the settled contact set
+        for _ in range(tuning.max_outer):  # the non-adhesive problem for p+ on the settled contact set
             indices = np.flatnonzero(contact)
-            p_c, delta = c._saddle_point(matrix[indices[:, None], indices], h_eff[indices], total + extra)
+            p_c, delta = dense._saddle_point(matrix[indices[:, None], indices], h_eff[indices], total + extra)
             p_plus = np.zeros(n)
             p_plus[indices] = p_c
             gap = h_eff + matrix @ p_plus - delta
@@ -369,14 +377,14 @@ def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tole
         new = cohesive_fraction(gap, contact)
         step = np.abs(new - fraction)
         change = step.max()
-        if change <= c._FRACTION_TOLERANCE or (change <= c._ZONE_MAX_CHANGE and step.sum()
-                                               <= c._ZONE_LOAD_TOLERANCE * max(float(new[~contact].sum()), 1.0)):
+        if change <= tuning.fraction_tolerance or (change <= tuning.zone_max_change and step.sum()
+                                               <= tuning.zone_load_tolerance * max(float(new[~contact].sum()), 1.0)):
             return p_plus - sigma * fraction, contact, fraction, outer
         gaps.append(gap)
         if len(gaps) >= 3 and outer % 3 == 0:
             d1, d0 = gaps[-1] - gaps[-2], gaps[-2] - gaps[-3]
-            ratio = min(np.dot(d1, d0) / np.dot(d0, d0), c._AITKEN_MAX_RATIO) if np.dot(d0, d0) > 0 else 0.0
-            if ratio >= c._AITKEN_MIN_RATIO:
+            ratio = min(np.dot(d1, d0) / np.dot(d0, d0), tuning.aitken_max_ratio) if np.dot(d0, d0) > 0 else 0.0
+            if ratio >= tuning.aitken_min_ratio:
                 new = cohesive_fraction(gap + d1 * (ratio / (1.0 - ratio)), contact)
         del gaps[:-3]
         fraction = new
@@ -457,12 +465,14 @@ def test_sparse_cohesive_fraction_is_the_vectorised_formula(monkeypatch):
     """The fraction evaluated only on the elements within reach of the zone is the vectorised formula's, bit for
     bit (ends, periodic wrap, gaps below zero, contact); with too many such elements it declines (None) and
     :func:`_dense_fraction` takes the vectorised path."""
-    import memstribo.physics.contact as c
+    from memstribo.physics.contact import cohesive
+    from memstribo.physics.contact import dense as c
+    from memstribo.physics.contact.settings import DEFAULTS
 
     def vectorised(gap, r, contact, periodic):
         with monkeypatch.context() as m:
-            m.setattr(c, "_SPARSE_FRACTION_MAX", -1)
-            return c._dense_fraction(gap, ((1.78e9, r),), contact, periodic)
+            _tune(m, sparse_fraction_max=-1)
+            return c._dense_fraction(gap, ((1.78e9, r),), contact, periodic, settings=DEFAULTS)
 
     rng = np.random.default_rng(3)
     n, reach = 200, 0.25e-9
@@ -476,15 +486,15 @@ def test_sparse_cohesive_fraction_is_the_vectorised_formula(monkeypatch):
     evaluated = 0
     for periodic in (False, True):
         for r in (reach, 0.6e-9):
-            sparse = c._sparse_fraction(gap, 1.78e9, r, contact, periodic)
+            sparse = c._sparse_fraction(gap, 1.78e9, r, contact, periodic, settings=DEFAULTS)
             expected = vectorised(gap, r, contact, periodic)
             assert sparse is not None and np.array_equal(sparse, expected)
-            assert np.array_equal(c._dense_fraction(gap, ((1.78e9, r),), contact, periodic), expected)
-            assert np.allclose(expected, c._cohesive_fraction(gap, r, contact, periodic), rtol=1e-14, atol=0)
+            assert np.array_equal(c._dense_fraction(gap, ((1.78e9, r),), contact, periodic, settings=DEFAULTS), expected)
+            assert np.allclose(expected, cohesive._cohesive_fraction(gap, r, contact, periodic), rtol=1e-14, atol=0)
             evaluated += np.count_nonzero((expected > 0) & ~contact)
         wide = 20e-9  # most elements are within reach: the vectorised formula
-        assert c._sparse_fraction(gap, 1.78e9, wide, contact, periodic) is None
-        assert np.array_equal(c._dense_fraction(gap, ((1.78e9, wide),), contact, periodic),
+        assert c._sparse_fraction(gap, 1.78e9, wide, contact, periodic, settings=DEFAULTS) is None
+        assert np.array_equal(c._dense_fraction(gap, ((1.78e9, wide),), contact, periodic, settings=DEFAULTS),
                               vectorised(gap, wide, contact, periodic))
     assert evaluated >= 16
 
@@ -494,7 +504,7 @@ def test_sparse_cohesive_fraction_is_the_vectorised_formula(monkeypatch):
 
 def _zone_step(sol):
     """Change of each element's cohesive fraction that one more zone update would make (the convergence test's)."""
-    from memstribo.physics.contact import _cohesive_fraction
+    from memstribo.physics.contact.cohesive import _cohesive_fraction
 
     fraction = np.where(sol.contact, 1.0, np.clip(-sol.pressure / SIGMA0, 0.0, 1.0))
     updated = _cohesive_fraction(sol.gap, H0, sol.contact, sol.periodic)
@@ -503,10 +513,8 @@ def _zone_step(sol):
 
 def _former_zone_updates(monkeypatch):
     """The inner solves of the zone updates as before commit ca16598: first set update from the unsolved guess, last p+ as start."""
-    import memstribo.physics.contact as contact
-
-    monkeypatch.setattr(contact, "_SETTLE_FIRST", False)
-    monkeypatch.setattr(contact, "_LINEAR_RESPONSE_START", False)
+    _tune(monkeypatch, settle_first=False)
+    _tune(monkeypatch, linear_response_start=False)
 
 
 @pytest.mark.parametrize("exponent, rms, pressure", [(12, 1.4e-9, 0.0025), (13, 2e-9, 0.0025), (14, 2e-9, 0.001)])

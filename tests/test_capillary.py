@@ -10,6 +10,15 @@ from memstribo.physics.capillary import (capillary_force_cylinder, capillary_for
 from memstribo.errors import InputError
 
 
+def _tune(monkeypatch, **fields):
+    """Replace fields of the contact solvers' default settings for one test (:mod:`memstribo.physics.contact.settings`)."""
+    import dataclasses
+
+    from memstribo.physics.contact import settings
+
+    monkeypatch.setattr(settings, "DEFAULTS", dataclasses.replace(settings.DEFAULTS, **fields))
+
+
 def test_kelvin_radius_of_water_at_room_temperature():
     # gamma V_m / (R T) = 0.072 * 18.07e-6 / (8.314462618 * 298.15) = 0.5248 nm (about 0.52 nm, issue #17)
     assert kelvin_radius(1 / math.e) == pytest.approx(0.072 * 18.07e-6 / (8.314462618 * 298.15), rel=1e-12)
@@ -230,7 +239,7 @@ def test_dense_small_grid_solves_agree_with_the_general_solver(monkeypatch):
     for zone in ({}, {"cohesive_stress": 3e8, "cohesive_range": 3e-10}, {"capillary_stress": 1e8, "capillary_range": 1.4e-9},
                  {"capillary_stress": 5e7, "capillary_range": 4e-9, "cohesive_stress": 3e8, "cohesive_range": 3e-10}):
         dense = contact.solve_line_contact(separation, 1e-9, 1e11, load=2.0, **zone)
-        monkeypatch.setattr(contact, "_DENSE_SOLVE_MAX", 0)
+        _tune(monkeypatch, dense_solve_max=0)
         general = contact.solve_line_contact(separation, 1e-9, 1e11, load=2.0, **zone)
         monkeypatch.undo()
         assert "dense matrices" in dense.message and "dense" not in general.message

@@ -10,6 +10,15 @@ from memstribo.errors import InputError
 R, E, W = 20e-6, 100e9, 1.0  # m, Pa, N/m
 
 
+def _tune(monkeypatch, **fields):
+    """Replace fields of the contact solvers' default settings for one test (:mod:`memstribo.physics.contact.settings`)."""
+    import dataclasses
+
+    from memstribo.physics.contact import settings
+
+    monkeypatch.setattr(settings, "DEFAULTS", dataclasses.replace(settings.DEFAULTS, **fields))
+
+
 def _rough(n, length, rms, seed, hurst=0.8):
     """Periodic self-affine profile by Fourier synthesis (test-local; independent of roughness.py)."""
     rng = np.random.default_rng(seed)
@@ -291,13 +300,11 @@ def test_cli_map_row_and_periodic(cli, afm_dir):
 
 
 def test_fallback_to_polonsky_keer_when_the_set_does_not_settle(monkeypatch):
-    import memstribo.physics.contact as contact_module
-
     n, length = 1024, 1e-6
     z = _rough(n, length, 1e-9, seed=13)
     h = z.max() - z
     reference_solution = solve_line_contact(h, length / n, E, mean_pressure=0.5e9, periodic=True)
-    monkeypatch.setattr(contact_module, "_MAX_OUTER", 1)
+    _tune(monkeypatch, max_outer=1)
     sol = solve_line_contact(h, length / n, E, mean_pressure=0.5e9, periodic=True, continuation=False)
     assert sol.converged and "active-set, then polonsky-keer" in sol.message
     assert np.abs(sol.pressure - reference_solution.pressure).max() < 1e-5 * reference_solution.max_pressure
@@ -329,8 +336,6 @@ def test_flat_punch_free_boundary():
 
 
 def test_small_contact_dense_path_matches_fft_path_and_direct(monkeypatch):
-    import memstribo.physics.contact as contact_module
-
     # a tooth-like case: Hertz gap plus roughness, a few tens of elements in contact
     n, length, radius = 1024, 1e-6, 10e-6
     dx = length / n
@@ -339,7 +344,7 @@ def test_small_contact_dense_path_matches_fft_path_and_direct(monkeypatch):
     h -= h.min()
     dense = solve_line_contact(h, dx, 85e9, load=12.5, tolerance=1e-10)
     assert 5 < dense.contact.sum() <= 64  # on the dense path (n_contact^2 <= 4 * 2048)
-    monkeypatch.setattr(contact_module, "_DENSE_MAX", 0)
+    _tune(monkeypatch, dense_max=0)
     fft = solve_line_contact(h, dx, 85e9, load=12.5, tolerance=1e-10)
     assert dense.converged and fft.converged
     assert np.array_equal(dense.contact, fft.contact)
@@ -377,6 +382,7 @@ def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
     Cholesky ("direct"), or else by the CG on dense matrices of a working set that contains the
     contact set, masked when larger ("dense-cg"): the same solution as the FFT path."""
     import memstribo.physics.contact as contact_module
+    import memstribo.physics.contact.line as contact_line
 
     n, length = 512, 1e-6
     dx = length / n
@@ -385,7 +391,7 @@ def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
     mean_pressure = 0.08 * E * np.std(np.diff(h)) / dx
     calls = {"matrix": 0, "restricted": 0, "direct": 0}
     original_matrix, original_restricted = contact_module.HalfPlane.matrix, contact_module.HalfPlane.restricted
-    original_direct = contact_module._direct_solution
+    original_direct = contact_line._direct_solution
 
     def matrix(self, indices, kernel, offsets=None):
         calls["matrix"] += 1
@@ -401,9 +407,9 @@ def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
 
     monkeypatch.setattr(contact_module.HalfPlane, "matrix", matrix)
     monkeypatch.setattr(contact_module.HalfPlane, "restricted", restricted)
-    monkeypatch.setattr(contact_module, "_direct_solution", direct)
+    monkeypatch.setattr(contact_line, "_direct_solution", direct)
     if path == "dense-cg":
-        monkeypatch.setattr(contact_module, "_DIRECT_MAX", 0)
+        _tune(monkeypatch, direct_max=0)
     dense = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-12)
     if path == "direct":
         assert calls["direct"] >= 2  # the final contact set was solved directly
@@ -412,8 +418,8 @@ def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
         assert calls["direct"] == 0 and calls["matrix"] >= 2  # influence + preconditioner matrices ...
         assert calls["restricted"] < 2 * dense.iterations  # ... for most CG iterations (not the first, full set)
     used_fft = calls["restricted"]
-    monkeypatch.setattr(contact_module, "_DENSE_MAX", 0)
-    monkeypatch.setattr(contact_module, "_DIRECT_MAX", 0)
+    _tune(monkeypatch, dense_max=0)
+    _tune(monkeypatch, direct_max=0)
     fft = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-12)
     assert calls["restricted"] - used_fft >= 2 * fft.iterations  # FFT path only
     assert dense.converged and fft.converged
@@ -427,7 +433,7 @@ def test_small_grid_dense_paths_match_fft_path(monkeypatch, path):
 
 
 def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
-    import memstribo.physics.contact as contact_module
+    import memstribo.physics.contact.dense as contact_dense
 
     n, dx = 400, 1e-9
     x = (np.arange(n) - n / 2 + 0.5) * dx
@@ -440,7 +446,7 @@ def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
         calls.append(names)
         return (lambda a, **kwargs: (a, 1)), (lambda c, b, **kwargs: (b, 0))
 
-    monkeypatch.setattr(contact_module, "_lapack_cholesky", lambda: not_definite(("potrf", "potrs"), None))
+    monkeypatch.setattr(contact_dense, "_lapack_cholesky", lambda: not_definite(("potrf", "potrs"), None))
     fallback = solve_line_contact(h, dx, E, load=W, tolerance=1e-10)
     assert calls  # the direct path was tried
     assert direct.converged and fallback.converged
@@ -450,15 +456,15 @@ def test_direct_path_falls_back_to_cg_when_cholesky_fails(monkeypatch):
 
 @pytest.mark.parametrize("load_factor", [0.25, 1.0, 10.0])  # ~5 %, ~20 %, ~90 % contact
 def test_cold_start_on_the_lower_gap_same_answer_as_uniform_start(monkeypatch, load_factor):
-    import memstribo.physics.contact as contact_module
+    from memstribo.physics.contact import settings as contact_settings
 
     n, length = 1024, 1e-6
     dx = length / n
     h = -_rough(n, length, 1e-9, seed=7)
     mean_pressure = load_factor * 0.08 * E * np.std(np.diff(h)) / dx
     solutions = []
-    for fraction in (contact_module._START_FRACTION, 1.0):
-        monkeypatch.setattr(contact_module, "_START_FRACTION", fraction)
+    for fraction in (contact_settings.DEFAULTS.start_fraction, 1.0):
+        _tune(monkeypatch, start_fraction=fraction)
         solutions.append(solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-11))
     lower, uniform = solutions
     assert lower.converged and uniform.converged
@@ -469,14 +475,12 @@ def test_cold_start_on_the_lower_gap_same_answer_as_uniform_start(monkeypatch, l
 def test_small_problem_measures_same_answer_as_large_problem_path(monkeypatch):
     """Up to _SMALL_PROBLEM elements: direct solves, cold start, short coarse levels; above: the
     plain nested CG levels. Both give the same solution."""
-    import memstribo.physics.contact as contact_module
-
     n, length = 2048, 1e-6
     dx = length / n
     h = -_rough(n, length, 1e-9, seed=11)
     mean_pressure = 0.08 * E * np.std(np.diff(h)) / dx
     small = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-11)
-    monkeypatch.setattr(contact_module, "_SMALL_PROBLEM", 0)
+    _tune(monkeypatch, small_problem=0)
     large = solve_line_contact(h, dx, E, mean_pressure=mean_pressure, periodic=True, tolerance=1e-11)
     assert small.converged and large.converged
     assert (small.iterations, small.coarse_iterations) != (large.iterations, large.coarse_iterations)

@@ -55,8 +55,8 @@ import numpy as np
 import scipy.fft
 
 from memstribo.errors import InputError
-from memstribo.physics.contact import _INNER_FACTOR as _LINE_INNER_FACTOR
-from memstribo.physics.contact import ContactSolve, _cg_update
+from memstribo.physics.contact.halfplane import ContactSolve, _cg_update
+from memstribo.physics.contact.settings import DEFAULTS as _LINE_DEFAULTS
 from memstribo.references import cites
 
 __all__ = ["SurfaceContactSolution", "solve_surface_contact", "surface_displacement", "rectangle_influence",
@@ -74,7 +74,7 @@ _COARSE_STEP_FRACTION = 0.1
 _COARSE_MAX_OUTER = 8
 #: Contact-set updates on the fine grid before the Polonsky-Keer fallback takes over.
 _MAX_OUTER = 40
-_INNER_FACTOR = _LINE_INNER_FACTOR  # the line contact's inner CG tolerance, for the same reason
+_INNER_FACTOR = _LINE_DEFAULTS.inner_factor  # the line contact's inner CG tolerance, for the same reason
 
 
 @dataclass(frozen=True)
