@@ -92,6 +92,9 @@ _ENTRIES = [
     ("sliding_velocity", "m/s", "sliding velocity", "sliding velocity u1 - u2 (4-12)"),
     ("time", "s", "time", "time since the first point of contact (4-18)"),
     ("c", "m", "position on the line of action", "position of the contact point on the line of action (0: pitch point)"),
+    ("position", "m", "position along the line of action",
+     "position of the contact point along the line of action, the same as c (0: pitch point): the x-axis of the "
+     "cycle's plots, with step kept as the index"),
     ("step", "1", "step", "index of the step"),
     ("steps", "1", "steps", "number of steps of the cycle or slide"),
     ("effective_radius", "m", "radius of relative curvature", "R_ef of the teeth at the contact point (4-11)"),

@@ -66,22 +66,12 @@ def run(args, params):
     from memstribo.physics.coating import get_coating
     from memstribo.simulations.coating_wear import wear_sweep
     from memstribo.physics.damage import run_damage
-    from memstribo.errors import InputError
 
     from memstribo.cli.mesh import apply_load_case
 
     params = apply_load_case(args, params)
     loads = parse_loads(args.loads) if args.loads is not None else None
-    if args.observed_life is not None and not (np.isfinite(args.observed_life) and 1 <= args.observed_life <= 1e20):
-        raise InputError(f"--observed-life must be a number of cycles from 1 to 1e20, got {args.observed_life!r}.")
-    if not 2 <= args.wear_points <= 1001:
-        raise InputError(f"--wear-points must be from 2 to 1001, got {args.wear_points}.")
-    if args.steps is not None and not 2 <= args.steps <= 100_000:
-        raise InputError(f"--steps must be an integer from 2 to 100 000, got {args.steps}.")
-    if args.steps is not None:
-        from memstribo.parameters import check_mesh_size
-
-        check_mesh_size(args.steps, params["mesh_window"], params["mesh_grid_spacing"], what="--steps")
+    _check_arguments(args, params)
     coating = get_coating(args.coating, params)
     c1_known = params["damage_coefficient"] is not None or args.observed_life is not None
     mesh_dataset = None
@@ -128,17 +118,7 @@ def run(args, params):
     else:
         notes.append("  c1 unknown: give --set damage_coefficient=C1 [Pa^-m] or --observed-life N for cycles to "
                      "failure and to stiction")
-    from memstribo.materials.pair import contact_modulus_of
-    from memstribo.physics.asperity import power_law_contact_radius
-
-    largest = float(np.max(outcome.result.asperity_peak_loads, initial=0.0))
-    if largest > 0:
-        radius = float(power_law_contact_radius(largest, params["asperity_degree"],
-                                                params["asperity_shape_coefficient"], contact_modulus_of(params)))
-        if radius > params["asperity_half_width"]:
-            notes.append(f"  warning: the largest asperity load gives a contact radius of {radius * 1e9:.3g} nm, more "
-                         f"than the asperity half width {params['asperity_half_width'] * 1e9:.3g} nm: the power-law "
-                         "shape no longer describes the asperity there")
+    notes += _asperity_warning(params, outcome)
     ratio = s["life_ratio_corner_to_central"]
     if ratio is None:
         notes.append("  life_ratio_corner_to_central: none - a nanoblock needs atomic_per_side >= 3 to have both "
@@ -165,6 +145,42 @@ def run(args, params):
         written += _stress_figures(params, outcome, args.out)
         notes.append("  wrote " + ", ".join(str(p) for p in written))
     return CommandResult(values=values, units=units, title="damage accumulation in the coating (5-10)", notes=notes)
+
+
+def _check_arguments(args, params):
+    """InputError on an observed life, wear-point count or step count outside what the command allows."""
+    import numpy as np
+
+    from memstribo.errors import InputError
+
+    if args.observed_life is not None and not (np.isfinite(args.observed_life) and 1 <= args.observed_life <= 1e20):
+        raise InputError(f"--observed-life must be a number of cycles from 1 to 1e20, got {args.observed_life!r}.")
+    if not 2 <= args.wear_points <= 1001:
+        raise InputError(f"--wear-points must be from 2 to 1001, got {args.wear_points}.")
+    if args.steps is not None and not 2 <= args.steps <= 100_000:
+        raise InputError(f"--steps must be an integer from 2 to 100 000, got {args.steps}.")
+    if args.steps is not None:
+        from memstribo.parameters import check_mesh_size
+
+        check_mesh_size(args.steps, params["mesh_window"], params["mesh_grid_spacing"], what="--steps")
+
+
+def _asperity_warning(params, outcome) -> list[str]:
+    """A note where the largest asperity load's contact radius exceeds the asperity's half width."""
+    import numpy as np
+
+    from memstribo.materials.pair import contact_modulus_of
+    from memstribo.physics.asperity import power_law_contact_radius
+
+    largest = float(np.max(outcome.result.asperity_peak_loads, initial=0.0))
+    if largest > 0:
+        radius = float(power_law_contact_radius(largest, params["asperity_degree"],
+                                                params["asperity_shape_coefficient"], contact_modulus_of(params)))
+        if radius > params["asperity_half_width"]:
+            return [f"  warning: the largest asperity load gives a contact radius of {radius * 1e9:.3g} nm, more "
+                    f"than the asperity half width {params['asperity_half_width'] * 1e9:.3g} nm: the power-law "
+                    "shape no longer describes the asperity there"]
+    return []
 
 
 def _stress_figures(params, outcome, folder):

@@ -154,18 +154,7 @@ class RunOptions:
 
             options["coating"] = get_coating(str(table["coating"])).name  # checked before the first stage
         if "roughness_files" in table:
-            files = table["roughness_files"]
-            if isinstance(files, str):
-                files = [files]
-            resolved = []
-            for name in files:
-                path = Path(str(name)).expanduser()
-                if not path.is_absolute() and base_folder is not None:
-                    path = Path(base_folder) / path
-                if not path.is_file():
-                    raise InputError(f"[run] roughness_files: '{name}' does not exist.")
-                resolved.append(str(path.resolve()))
-            options["roughness_files"] = tuple(resolved)
+            options["roughness_files"] = _roughness_files(table["roughness_files"], base_folder)
         if "mesh_roughness" in table:
             choice = table["mesh_roughness"]
             n_files = len(options.get("roughness_files", ()))
@@ -199,6 +188,21 @@ class RunOptions:
         if "map" in table:
             options["map"] = _map_option(table["map"], base_folder)
         return cls(**options)
+
+
+def _roughness_files(files, base_folder) -> tuple[str, ...]:
+    """The ``[run] roughness_files`` (a name or a list), resolved against ``base_folder``; InputError if one is missing."""
+    if isinstance(files, str):
+        files = [files]
+    resolved = []
+    for name in files:
+        path = Path(str(name)).expanduser()
+        if not path.is_absolute() and base_folder is not None:
+            path = Path(base_folder) / path
+        if not path.is_file():
+            raise InputError(f"[run] roughness_files: '{name}' does not exist.")
+        resolved.append(str(path.resolve()))
+    return tuple(resolved)
 
 
 def _map_option(value, base_folder) -> str:

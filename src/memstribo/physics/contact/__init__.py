@@ -59,11 +59,10 @@ References
 
 from __future__ import annotations
 
-from memstribo.physics.contact import settings  # noqa: F401  (first: the other modules read it)
+from memstribo.physics.contact.settings import DEFAULTS, SolverSettings  # first: the other modules read it
 from memstribo.physics.contact.halfplane import (ContactSolution, ContactSolve, HalfPlane, elastic_displacement,
                                                  strip_influence)
 from memstribo.physics.contact.line import cylinder_on_flat
-from memstribo.physics.contact.settings import DEFAULTS, SolverSettings
 from memstribo.physics.contact.solve import solve_line_contact
 
 __all__ = ["ContactSolution", "ContactSolve", "solve_line_contact", "elastic_displacement", "strip_influence",

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.fft
 
-from memstribo.physics.contact import settings as _settings
+import memstribo.physics.contact.settings as _settings
 from memstribo.references import cites
 
 

@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import numpy as np  # noqa: F401  (the doctest of solve_line_contact)
 
-from memstribo.physics.contact import settings as _settings
+import memstribo.physics.contact.settings as _settings
 from memstribo.physics.contact.cohesive import _solve_adhesive, _solve_capillary
 from memstribo.physics.contact.line import _solve_elastic
 from memstribo.references import cites

@@ -1,0 +1,141 @@
+"""One meshing cycle, top-down: set-up, the step loop (with the friction fixed point), the verdict, the dataset."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from memstribo.errors import InputError
+from memstribo.materials.pair import contact_modulus_of, dundurs_beta
+from memstribo.references import cites
+from memstribo.simulations.mesh.record import cycle_dataset
+from memstribo.simulations.mesh.setup import _prepare
+from memstribo.simulations.mesh.steps import _run_cycle
+from memstribo.simulations.mesh.verdict import cycle_verdict, summarize
+
+
+@cites("thesis", "model", "johnson_1985", "polonsky_keer_1999", "hu_1986")
+def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False, realisation=0,
+                  sliding_axis="x", warm_start=None):
+    """Friction, adhesion, COF and the stiction margin of rough teeth over one meshing cycle (thesis 4.6, 4.9).
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters
+        Parameter set (gear, load case, material, nanoblock, interface and ``mesh_*`` parameters).
+    roughness : None, "thesis", str or Path, Profile or SurfaceMap
+        Roughness of the teeth: ``None``/"thesis" is the seeded synthetic default (labelled
+        synthetic); a path is read with :func:`memstribo.surfaces.readers.read_topography`. Every row of
+        nanoblocks on each flank gets its own line (:func:`memstribo.surfaces.roughness.row_roughness`):
+        map rows one nanoblock apart, or independent lines with the statistics of a profile.
+    steps : int, optional
+        Number of positions c from c_f to c_l (default ``mesh_steps``).
+    coating : memstribo.physics.coating.Coating, optional
+        SAM coating of the teeth; ``None`` is bare silicon.
+    wear : float
+        Worn fraction Omega of the gear's coating, 0..1 (the pinion's is fully worn); only with
+        a coating. ``wear=1`` equals the bare result.
+    progress : bool
+        Show a tqdm progress bar on stderr.
+    realisation : int
+        Index of the roughness realisation (seeds of the synthesised lines).
+    sliding_axis : {"x", "y"}
+        Which axis of a 2D map runs along the flank (the sliding direction): ``"x"`` (the scan
+        lines, default) or ``"y"`` (the map's columns).
+    warm_start : dict, optional
+        Contact pressures of a previous cycle of the same case (same steps, roughness and
+        geometry) to start each contact solve from, filled in by the call: a humidity sweep
+        passes one dict through its points (:func:`sweep`), so each point starts from the
+        previous humidity's contacts (the result agrees with a cold start to the contact
+        tolerance). Used with the line contact of identical teeth only (Dundurs beta 0).
+
+    Returns
+    -------
+    xarray.Dataset
+        Over ``step`` with coordinates ``c`` and ``position`` (the position along the line of action [m]):
+        ``friction_force`` (averaged over the sliding distance ``friction_averaging_distance``),
+        ``friction_force_instantaneous``, ``resisting_force`` R(c) (all pairs in mesh), ``stiction_margin``
+        F_t - R(c), ``mesh_efficiency``, ``adhesion_force``, ``normal_force``, ``cof`` and its split,
+        energies by mechanism, ``block_load`` (``step``, ``block``) and more; each variable with
+        ``units`` and ``long_name``. Attributes record the load case, interface model, contact
+        adhesion, roughness rows, the F_t/F_f iteration and ``warnings`` (JSON list of text).
+
+    Raises
+    ------
+    InputError
+        A pair that cannot mesh, a load beyond the elastic range (Hertz peak pressure above
+        ``elastic_limit_pressure``), a wear fraction outside [0, 1], a problem too large for memory.
+    """
+    if not 0.0 <= float(wear) <= 1.0:
+        raise InputError(f"wear (the worn fraction Omega of the gear's coating) must be within 0..1, got {wear!r}.")
+    modulus = contact_modulus_of(params)
+    beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
+                        params["counter_poisson_ratio"])
+    setup = _prepare(params, roughness, steps, realisation, sliding_axis)           # set-up: geometry, rows, lines
+    cycle = _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start)  # the steps
+    verdict = cycle_verdict(params, setup, cycle)                                   # forces, margin, efficiency
+    return cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, realisation, sliding_axis)
+
+
+def _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start):
+    """The step loop, repeated for dissimilar materials until the friction force settles (thesis 4.6 step 7).
+
+    Under-relaxed so it cannot oscillate; identical materials (beta = 0) uncouple and one pass is exact.
+    Returns a dict: the per-step totals ``out``, ``block_loads``, kinematics ``kin``, the elastic friction force
+    ``f_el`` [N], the instantaneous ``friction`` [N], ``passes`` and ``converged``.
+    """
+    mu = None
+    passes = 0
+    friction_old = None
+    fixed_point_converged = True
+    max_passes = 30
+    passes_start = {}  # dissimilar materials: each pass starts from the previous one (_solve_with_shear)
+    while True:
+        passes += 1
+        out, block_loads, kin = _run_cycle(setup, params, coating, wear, modulus, beta, mu, progress,
+                                           warm_start if beta == 0.0 else passes_start)
+        sliding = kin["sliding"]
+        f_el = np.divide(out["e_el"], sliding, out=np.zeros_like(sliding), where=sliding > 0)
+        friction = out["f_chem"] + out["f_vdw"] + f_el + out["f_cap"]
+        mu_new = friction / (setup.load + out["f_adh"] + out["f_cap_adh"])
+        if beta == 0.0:
+            break
+        if friction_old is not None and np.max(np.abs(friction - friction_old)) <= 1e-3 * max(friction.max(), 1e-300):
+            break
+        if passes >= max_passes:
+            fixed_point_converged = False
+            break
+        mu = mu_new if mu is None else 0.5 * (mu + mu_new)
+        friction_old = friction
+    out["f_adh"] = out["f_adh"] + out["f_cap_adh"]  # menisci pull the flanks together too (issue #17)
+    return dict(out=out, block_loads=block_loads, kin=kin, f_el=f_el, friction=friction, passes=passes,
+                converged=fixed_point_converged)
+
+
+def step_convergence(params, roughness=None, *, steps=None, coating=None, wear=1.0, baseline=None, realisation=0):
+    """Relative change of the minimum margin and the mean COF at twice the steps (MODEL 7b).
+
+    Parameters
+    ----------
+    params, roughness, steps, coating, wear, realisation
+        As for :func:`simulate_mesh`.
+    baseline : dict, optional
+        The :func:`summarize` of the run at ``steps`` (computed when not given).
+
+    Returns
+    -------
+    dict
+        ``step_converged`` (both changes below 2 %), ``step_change_margin`` and
+        ``step_change_cof`` (relative, [-]; the margin's relative to F_t), ``steps_checked``.
+    """
+    steps = int(params["mesh_steps"] if steps is None else steps)
+    if baseline is None:
+        baseline = summarize(simulate_mesh(params, roughness, steps=steps, coating=coating, wear=wear,
+                                           realisation=realisation))
+    doubled = summarize(simulate_mesh(params, roughness, steps=2 * steps - 1, coating=coating, wear=wear,
+                                      realisation=realisation))
+    change_margin = abs(doubled["stiction_margin"] - baseline["stiction_margin"]) / max(baseline["tangential_force"],
+                                                                                      1e-300)
+    change_cof = abs(doubled["cof_mean"] - baseline["cof_mean"]) / max(abs(baseline["cof_mean"]), 1e-300)
+    return {"step_converged": bool(change_margin < 0.02 and change_cof < 0.02),
+            "step_change_margin": float(change_margin), "step_change_cof": float(change_cof),
+            "steps_checked": 2 * steps - 1}

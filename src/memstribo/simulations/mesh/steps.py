@@ -1,0 +1,318 @@
+"""The step loop of a meshing cycle: each row's contact, then bonds, menisci, interlocking and adhesion per step."""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace
+
+import numpy as np
+
+from memstribo.errors import InputError
+from memstribo.materials.pair import no_slip_coefficient
+from memstribo.simulations.mesh.contacts import (_capillary_zone, _solve_contacts, _solve_contacts_surface,
+                                                _solve_with_shear)
+from memstribo.simulations.mesh.interface import (_GOLDEN, _SILVER, _interlocking, _lattice, lattice_overlap_across,
+                                                 vdw_gap_factor)
+from memstribo.simulations.mesh.setup import _geometry, _work_of_adhesion, roll_coordinate
+
+
+def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress, warm_start=None):
+    """One meshing cycle: the rough contact of every roughness row at every step, then the bonds, menisci and
+    interlocking of the nanoblock lattices on it; (per-step totals, block loads per row, kinematics)."""
+    kinematics = _kinematics(setup)
+    ctx = _context(setup, params, coating, wear, modulus)
+    n_steps = setup.positions.size
+    n_rows_solved = len(setup.pinion_profiles)  # every row, each with its own roughness (MODEL 7b)
+    pbar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        pbar = tqdm(total=n_steps * n_rows_solved, desc="meshing cycle", unit="step", leave=False)
+    out = {key: np.zeros(n_steps) for key in _TOTALS}
+    block_loads = []
+    strip = _surface_strip(setup, params, modulus, beta, kinematics, pbar)
+    for row in range(n_rows_solved):
+        pressure, gap, info, zone = _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row,
+                                                 strip, pbar, warm_start)
+        _record_solve(out, ctx, pressure, gap, info, n_rows_solved)
+        k1, k2, flank_states = _flank_blocks(out, ctx, pressure, gap, kinematics)
+        block_loads.append((k1, flank_states[0][2], k2, flank_states[1][2]))
+        bare2 = ctx.gear_bare(k2, row)
+        _chemical_bonds(out, ctx, setup, flank_states, bare2, row)
+        inside, w_x, k1_at_x = _vdw_and_menisci(out, ctx, gap, info, zone, kinematics, row)
+        _interlocking_energy(out, ctx, (k1, k2), flank_states, kinematics["sliding_fraction"])
+        if ctx.with_cohesive_zone:  # the attraction is the contact solve's cohesive line load over the row
+            out["f_adh"] += info[:, 4] * ctx.w_adh
+            continue
+        out["f_adh"] += _block_pull_off(ctx, inside, w_x, k1_at_x)
+    if pbar is not None:
+        pbar.close()
+    return out, block_loads, kinematics
+
+
+#: The per-step totals of a cycle, summed over the rows.
+_TOTALS = ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh", "contact_width", "max_pressure",
+           "unconverged", "residual", "iterations", "window_exceeded", "approach", "rigid_atomic_blocks", "vdw_edge",
+           "f_cap", "f_cap_adh", "wetted")
+
+
+def _kinematics(setup):
+    """Radii of curvature, roll coordinates, surface speeds and sliding of each step (chapter 4)."""
+    pair = setup.pair
+    c = setup.positions
+    r1, r2 = pair.radii_of_curvature(c)
+    r_ef = r1 * r2 / (r1 + r2)
+    s1 = roll_coordinate(r1, pair.base_radii[0])
+    s2 = roll_coordinate(r2, pair.base_radii[1])
+    u1, u2 = pair.surface_velocities(c)
+    slip = u1 - u2
+    sliding = np.abs(slip) * setup.step_time
+    sliding_fraction = np.abs(slip) / (u1 + u2)
+    return dict(r_ef=r_ef, s1=s1, s2=s2, u1=u1, u2=u2, slip=slip, sliding=sliding, sliding_fraction=sliding_fraction)
+
+
+def _context(setup, params, coating, wear, modulus):
+    """The constants of a cycle's step loop: lattice sizes, block stiffness, interface and humidity settings."""
+    from memstribo.physics.nanoblock.geometry import adhesive_layer_thickness
+    from memstribo.physics.nanoblock.mechanics import BlockStiffness
+
+    ctx = SimpleNamespace(coating=coating, wear=wear, modulus=modulus, params=params)
+    ctx.w_adh, ctx.w_at, ctx.m = params["adhesive_width"], params["atomic_width"], int(params["atomic_per_side"])
+    ctx.pitch = params["atomic_pitch"]
+    ctx.bond = params["bond_length"]
+    ctx.dx = setup.grid_spacing
+    ctx.grid = setup.grid
+    ctx.half = 0.5 * ctx.grid.size * ctx.dx
+    geometry = _geometry(params)
+    ctx.stiffness = BlockStiffness.from_geometry(geometry, params["youngs_modulus"], modulus,
+                                                 params["threshold_strain"])
+    ctx.offsets = (np.arange(ctx.m) - 0.5 * (ctx.m - 1)) * ctx.pitch
+    ctx.w_si = _work_of_adhesion(params)
+    # thesis interface: one rule with the sliding models (3.5), for bare and coated blocks alike
+    ctx.layer = adhesive_layer_thickness(params, geometry)
+    ctx.gap_model = params["interface_model"] == "gap"
+    ctx.with_cohesive_zone = params["contact_adhesion"] == "maugis"
+    if coating is not None:
+        ctx.w_coat, ctx.u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
+    ctx.c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
+    ctx.humid = params["environment"] == "air"
+    if ctx.humid:
+        from memstribo.physics import capillary
+
+        ctx.r_kelvin = capillary.kelvin_radius(params["relative_humidity"], params["temperature"])
+        ctx.theta_bare = float(params["water_contact_angle"])
+        ctx.theta_coat = ctx.theta_bare
+        if coating is not None and math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
+            ctx.theta_coat = math.radians(coating.water_contact_angle_deg)
+        ctx.renewal = params["meniscus_renewal_distance"] or params["atomic_pitch"]
+
+    def gear_bare(k, row):
+        """Gear blocks bare (worn coating) or coated: a deterministic low-discrepancy choice."""
+        if coating is None:
+            return np.ones(k.shape, dtype=bool)
+        return np.mod(k * _GOLDEN + row * _SILVER, 1.0) < wear
+
+    ctx.gear_bare = gear_bare
+    return ctx
+
+
+def _surface_strip(setup, params, modulus, beta, kinematics, pbar):
+    """The surface (3D) solve of all rows at once where ``mesh_contact = 'surface'``, else None."""
+    if params["mesh_contact"] != "surface":
+        return None
+    if beta != 0.0 or params["contact_adhesion"] != "none":
+        raise InputError("mesh_contact = 'surface' solves identical, non-adhesive teeth only (Dundurs beta 0 and "
+                         "contact_adhesion = 'none': add --set contact_adhesion=none, since the default "
+                         "Maugis-Dugdale zone is carried by the line solve only); use mesh_contact = 'line' for "
+                         "the others.")
+    return _solve_contacts_surface(setup, params, modulus, kinematics["r_ef"], kinematics["s1"], kinematics["s2"],
+                                   pbar)
+
+
+def _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row, strip, pbar, warm_start):
+    """(pressure [Pa], gap [m], solver info, capillary zone) of one roughness row at every step."""
+    r_ef, s1, s2 = kinematics["r_ef"], kinematics["s1"], kinematics["s2"]
+    zone = None
+    if ctx.humid and strip is None:  # the menisci's Laplace pressure inside the contact solve (docs/humidity.md)
+        zone = _capillary_zone(ctx.r_kelvin, ctx.theta_bare, ctx.theta_coat, s2, ctx.grid, ctx.w_adh, row,
+                               ctx.coating, ctx.wear)
+    if strip is not None:
+        strip_pressure, strip_gap, strip_info = strip
+        return strip_pressure[row], strip_gap[row], strip_info, zone  # one solve for all rows
+    if beta != 0.0 and mu_previous is not None:
+        pressure, gap, info = _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
+                                                kinematics["slip"], pbar, zone, warm_start)
+    else:
+        pressure, gap, info = _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, None, pbar, zone,
+                                              warm_start)
+    return pressure, gap, info, zone
+
+
+def _record_solve(out, ctx, pressure, gap, info, n_rows_solved):
+    """Add a row's solver state to the totals: window and vdW-reach checks, convergence, contact width."""
+    grid, dx = ctx.grid, ctx.dx
+    # window check: the contact must stay clear of the window's ends (5 % margin each side)
+    edge = max(1, grid.size // 20)
+    out["window_exceeded"] += (pressure[:, :edge].any(axis=1) | pressure[:, -edge:].any(axis=1))
+    out["unconverged"] += info[:, 0] == 0
+    out["residual"] = np.maximum(out["residual"], info[:, 1])
+    out["iterations"] += info[:, 2] / n_rows_solved
+    out["approach"] += info[:, 3] / n_rows_solved
+    # vdW reach: with the gap model the attraction must have faded inside the window
+    out["vdw_edge"] += (np.minimum(gap[:, 0], gap[:, -1]) < ctx.params["vdw_cutoff"]) if ctx.gap_model else 0
+    # in contact: the gap closed under a non-zero pressure (with the Maugis-Dugdale zone the pressure is
+    # tensile, down to -sigma0, near the contact's edges; the zone outside has an open gap)
+    out["contact_width"] += ((gap <= 0.0) & (pressure != 0.0)).sum(axis=1) * dx / n_rows_solved
+    out["max_pressure"] = np.maximum(out["max_pressure"], pressure.max(axis=1))
+
+
+def _flank_blocks(out, ctx, pressure, gap, kinematics):
+    """The nanoblock lattices of both flanks on a row's contact: (k1, k2, per flank (x_blocks, x_atoms, loads,
+    atomic force, atomic compression, adhesive compression)) by the fixed-load structure model (3.4.2)."""
+    from memstribo.physics.nanoblock.mechanics import structure_fixed_load
+
+    n_steps = pressure.shape[0]
+    grid, dx, w_adh, m = ctx.grid, ctx.dx, ctx.w_adh, ctx.m
+    cumulative = np.concatenate([np.zeros((n_steps, 1)), np.cumsum(pressure, axis=1) * dx], axis=1)
+    edges_x = np.concatenate([grid - 0.5 * dx, [grid[-1] + 0.5 * dx]])
+
+    def footprint_load(x_centre):
+        """w_adh * integral of p over [x - w_adh/2, x + w_adh/2] for x (steps, slots)."""
+        lo = np.clip(x_centre - 0.5 * w_adh, edges_x[0], edges_x[-1])
+        hi = np.clip(x_centre + 0.5 * w_adh, edges_x[0], edges_x[-1])
+        f_hi = np.stack([np.interp(hi[i], edges_x, cumulative[i]) for i in range(n_steps)])
+        f_lo = np.stack([np.interp(lo[i], edges_x, cumulative[i]) for i in range(n_steps)])
+        return w_adh * (f_hi - f_lo)
+
+    def local_gap(x):
+        """Deformed gap at x (steps, ...) [m]; far outside the window: effectively no contact."""
+        flat = x.reshape(n_steps, -1)
+        values = np.stack([np.interp(flat[i], grid, gap[i], left=1.0, right=1.0) for i in range(n_steps)])
+        return values.reshape(x.shape)
+
+    # lattices: pinion block k centred at sigma = (k + 1/2) w_adh -> x = s1 - sigma; gear: x = sigma - s2
+    s1, s2 = kinematics["s1"], kinematics["s2"]
+    k1 = _lattice(s1, w_adh, ctx.half)
+    k2 = _lattice(s2, w_adh, ctx.half)
+    x1 = s1[:, None] - (k1 + 0.5) * w_adh
+    x2 = (k2 + 0.5) * w_adh - s2[:, None]
+    flank_states = []
+    for x_blocks in (x1, x2):
+        loads = footprint_load(x_blocks)
+        x_atoms = x_blocks[..., None] - ctx.offsets  # pinion: sigma increases -> x decreases; symmetric offsets
+        overlap_row = -local_gap(x_atoms)  # (steps, slots, m)
+        overlap = np.repeat(overlap_row, m, axis=-1)  # m x m atomic blocks, rows across the width alike
+        loaded = loads > 0
+        atomic_force = np.zeros(overlap.shape)
+        atomic_comp = np.zeros(overlap.shape)
+        adhesive_comp = np.zeros(loads.shape)
+        if loaded.any():
+            state = structure_fixed_load(overlap[loaded][:, None, :], ctx.stiffness, loads[loaded])
+            atomic_force[loaded] = state.atomic_force[:, 0, :]
+            atomic_comp[loaded] = state.atomic_compression[:, 0, :]
+            adhesive_comp[loaded] = state.adhesive_compression[:, 0]
+            rigid = np.zeros(loads.shape)
+            rigid[loaded] = np.asarray(state.rigid).reshape(int(loaded.sum()), -1).sum(axis=1)
+            out["rigid_atomic_blocks"] += rigid.sum(axis=1)
+        flank_states.append((x_blocks, x_atoms, loads, atomic_force, atomic_comp, adhesive_comp))
+    return k1, k2, flank_states
+
+
+def _chemical_bonds(out, ctx, setup, flank_states, bare2, row):
+    """Chemical bonds (3-10) and their friction force (3-1) of a row: overlaps of touching opposing atomic blocks
+    along x (sliding) times their overlap across the face width, where the gear's lattice sits at a random offset."""
+    # the published relations, looked up on their modules at call time: a change to a relation
+    # changes the meshing cycle (tests/test_mesh.py::test_the_cycle_calls_the_published_relations)
+    from memstribo.physics import friction
+
+    m, w_at, bond = ctx.m, ctx.w_at, ctx.bond
+    n_steps = flank_states[0][1].shape[0]
+    across = lattice_overlap_across(w_at, ctx.pitch, m, ctx.w_adh, setup.row_roughness.lattice_offsets[row])
+    touch1 = flank_states[0][3][..., :m] > 0  # first row of the m x m array (rows alike)
+    touch2 = (flank_states[1][3][..., :m] > 0) & bare2[..., None]
+    xa1 = flank_states[0][1].reshape(n_steps, -1)
+    xa2 = flank_states[1][1].reshape(n_steps, -1)
+    t1 = touch1.reshape(n_steps, -1)
+    t2 = touch2.reshape(n_steps, -1)
+    overlap_len = np.clip(w_at - np.abs(xa1[:, :, None] - xa2[:, None, :]), 0.0, None)
+    overlap_len = overlap_len * (t1[:, :, None] & t2[:, None, :])
+    chem = friction.chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)  # (3-10)
+    out["chem_bonds"] += chem
+    # all bonds break once per bond length of sliding (3.5): the force is that energy per bond length (3-1)
+    out["f_chem"] += friction.friction_force(friction.bond_breaking_energy(chem, ctx.params["bond_energy"], bond, bond),
+                                             bond)
+
+
+def _vdw_and_menisci(out, ctx, gap, info, zone, kinematics, row):
+    """vdW bonds (3-12) over the adhesive layer and, in humid air, the menisci of a row; returns (the share of each
+    element inside the layer, w12 at each element [J/m^2], the pinion block at each element) for the pull-off."""
+    from memstribo.physics import friction
+
+    params, grid, dx, w_adh, bond = ctx.params, ctx.grid, ctx.dx, ctx.w_adh, ctx.bond
+    coating = ctx.coating
+    k1_at_x = np.floor((kinematics["s1"][:, None] - grid[None, :]) / w_adh).astype(int)  # pinion block per element
+    k2_at_x = np.floor((kinematics["s2"][:, None] + grid[None, :]) / w_adh).astype(int)
+    bare_x = ctx.gear_bare(k2_at_x, row)
+    # vdW: the share of a block's contact energy at the local gap (MODEL 7c), or the thesis's band
+    inside = vdw_gap_factor(gap, params["cutoff_distance"], params["vdw_cutoff"]) if ctx.gap_model \
+        else (gap <= ctx.layer).astype(float)
+    u_vdw_x = np.where(bare_x, params["vdw_bond_energy"], ctx.u_vdw_coat) if coating is not None \
+        else params["vdw_bond_energy"]
+    w_x = np.where(bare_x, ctx.w_si, ctx.w_coat) if coating is not None else ctx.w_si
+    n_vdw = friction.vdw_bond_count(w_adh, dx, bond) * inside  # (3-12), bonds per element
+    out["vdw_bonds"] += n_vdw.sum(axis=1)
+    out["f_vdw"] += friction.friction_force(
+        friction.bond_breaking_energy(n_vdw, u_vdw_x, bond, bond).sum(axis=1), bond)
+    if ctx.humid:  # capillary menisci where the gap is below the condensation height (docs/humidity.md)
+        _menisci(out, ctx, gap, info, zone, bare_x)
+    return inside, w_x, k1_at_x
+
+
+def _menisci(out, ctx, gap, info, zone, bare_x):
+    """Wetted area, meniscus attraction and rupture force of a row (issue #17, docs/humidity.md)."""
+    from memstribo.physics import capillary
+
+    theta_bare, theta_coat = ctx.theta_bare, ctx.theta_coat
+    theta_gear = np.where(bare_x, theta_bare, theta_coat) if ctx.coating is not None else theta_bare
+    height = capillary.condensation_height(ctx.r_kelvin, theta_bare, theta_gear)
+    wet = (gap <= height) & (height > 0)
+    area = wet * (ctx.w_adh * ctx.dx)
+    out["wetted"] += area.sum(axis=1)
+    # attraction: the contact solve's meniscus line load over the row (line contact), else the wetted area's
+    out["f_cap_adh"] += (info[:, 5] * ctx.w_adh if zone is not None
+                         else capillary.laplace_pressure(ctx.r_kelvin) * area.sum(axis=1))
+    # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
+    rupture = capillary.WATER["surface_tension"] * (np.cos(theta_bare) + np.cos(theta_gear))
+    out["f_cap"] += (area * rupture).sum(axis=1) / ctx.renewal
+
+
+def _interlocking_energy(out, ctx, lattices, flank_states, sliding_fraction):
+    """Elastic interlocking (3-25) on material blocks, both flanks, times the sliding fraction."""
+    from memstribo.physics.nanoblock import mechanics
+
+    e_el = np.zeros(sliding_fraction.size)
+    for (k, (_, _, _, _, comp_at, comp_adh)) in zip(lattices, flank_states):
+        e_el += _interlocking(k, comp_at, comp_adh, ctx.stiffness, mechanics.elastic_interlocking_energy)
+    out["e_el"] += e_el * sliding_fraction
+
+
+def _block_pull_off(ctx, inside, w_x, k1_at_x):
+    """Adhesion force (3-31) of a row from the pull-off (3-32) of each pinion block: a = half its engaged length,
+    w12 averaged over it."""
+    from memstribo.physics import adhesion, friction
+
+    n_steps = inside.shape[0]
+    dx, w_adh = ctx.dx, ctx.w_adh
+    key = k1_at_x - k1_at_x.min(axis=1, keepdims=True)
+    n_keys = int(key.max()) + 1
+    flat = (np.arange(n_steps)[:, None] * n_keys + key).ravel()
+    length = np.bincount(flat, weights=(inside * dx).ravel(), minlength=n_steps * n_keys)
+    work = np.bincount(flat, weights=(inside * dx * w_x).ravel(), minlength=n_steps * n_keys)
+    length = length.reshape(n_steps, n_keys)
+    work = np.divide(work.reshape(n_steps, n_keys), length, out=np.zeros_like(length), where=length > 0)
+    a = 0.5 * np.minimum(length, w_adh)
+    engaged = a > 0
+    pull_off = np.zeros_like(a)
+    if engaged.any():
+        pull_off[engaged] = adhesion.pull_off_force(work[engaged], ctx.modulus, ctx.c_ns, a[engaged])  # (3-32)
+    return friction.adhesion_force(pull_off, axis=1)  # (3-31)

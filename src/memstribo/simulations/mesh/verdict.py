@@ -1,0 +1,235 @@
+"""The verdict of a meshing cycle: friction averaged over sliding, R(c) of all pairs in mesh, the stiction margin,
+the mesh efficiency, the warnings, and the summary (the keys of ``memstribo mesh --json``)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from memstribo.materials.pair import dundurs_beta
+from memstribo.physics.gear import tangential_force
+from memstribo.quantities import unit as quantity_unit
+
+
+def cycle_verdict(params, setup, cycle) -> dict:
+    """The verdict of a cycle's steps: friction averaged over the sliding distance and split by mechanism,
+    energies, R(c) of all pairs in mesh, the stiction margin F_t - R(c), the mesh efficiency, the friction
+    shear stress and the warnings (MODEL 7b; thesis 4-27). Forces [N], energies [J], stresses [Pa]."""
+    pair = setup.pair
+    out, kin, f_el = cycle["out"], cycle["kin"], cycle["f_el"]
+    sliding = kin["sliding"]
+    f_t = float(tangential_force(params["drive_torque"], pair.pitch_radii[0]))
+    v = dict(f_t=f_t, denominator=setup.load + out["f_adh"])
+    v["e_chem"], v["e_vdw"] = out["f_chem"] * sliding, out["f_vdw"] * sliding
+    v["e_el"] = f_el * sliding
+    v["e_cap"] = out["f_cap"] * sliding
+    energy = v["energy"] = v["e_chem"] + v["e_vdw"] + v["e_el"] + v["e_cap"]
+    averaging = v["averaging"] = params["friction_averaging_distance"] or params["atomic_pitch"]
+    # every part averaged alike (the average is linear), so the parts add up to the friction force
+    v["f_chem_avg"], v["f_vdw_avg"], v["f_el_avg"], v["f_cap_avg"] = (sliding_average(f, sliding, averaging) for f in (
+        out["f_chem"], out["f_vdw"], f_el, out["f_cap"]))
+    friction_avg = v["friction_avg"] = v["f_chem_avg"] + v["f_vdw_avg"] + v["f_el_avg"] + v["f_cap_avg"]
+    v["resisting"] = resisting_force(setup.positions, friction_avg, pair.first_contact, pair.last_contact,
+                                     pair.base_pitch)
+    v["margin"] = f_t - v["resisting"]
+    # mesh efficiency: friction power of all pairs in mesh over the input power T omega1 (MODEL 7b)
+    power_pair = np.divide(energy, setup.step_time, out=np.zeros_like(energy), where=setup.step_time > 0)
+    power_loss = resisting_force(setup.positions, power_pair, pair.first_contact, pair.last_contact, pair.base_pitch)
+    input_power = v["input_power"] = float(params["drive_torque"]) * float(pair.pinion_speed)
+    v["efficiency"] = 1.0 - power_loss / input_power
+    period = pair.base_pitch / pair.contact_point_speed
+    v["efficiency_mean"] = 1.0 - float(energy.sum()) / (input_power * period)
+    # mean friction stress over the real contact area, against the ideal shear strength
+    contact_area = out["contact_width"] * setup.effective_face_width
+    v["shear_stress"] = np.divide(friction_avg, contact_area, out=np.zeros_like(friction_avg), where=contact_area > 0)
+    beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
+                        params["counter_poisson_ratio"])
+    v["warnings"] = _warnings(params, out, setup, v["shear_stress"], v["efficiency"], cycle["converged"],
+                              cycle["passes"], beta)
+    return v
+
+
+#: The keys of the summary (``memstribo mesh --json``) and of the ensemble verdict, with their units from the
+#: vocabulary (:mod:`memstribo.quantities`).
+SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic", "friction_force_mean",
+                "friction_force_max", "adhesion_force_mean", "normal_force_max", "tangential_force", "stiction",
+                "stiction_margin", "steps", "sliding_distance", "energy_dissipated", "energy_chemical",
+                "energy_vdw", "energy_elastic", "unconverged_steps", "window_exceeded_steps",
+                "max_contact_pressure", "steps_above_elastic_limit", "resisting_force_max", "normal_force_total",
+                "mesh_efficiency", "mesh_efficiency_min", "max_shear_stress", "load_case", "interface_model",
+                "contact_adhesion", "mesh_contact", "environment", "relative_humidity", "cof_capillary",
+                "energy_capillary", "roughness_rows", "warnings", "step_converged", "step_change_margin",
+                "step_change_cof", "steps_checked", "realisations", "stiction_probability",
+                "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95", "cof_mean_median",
+                "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median", "mesh_efficiency_p05",
+                "mesh_efficiency_p95", "per_realisation")
+
+
+SUMMARY_UNITS = {key: quantity_unit(key) for key in SUMMARY_KEYS}
+
+
+#: Below this relative humidity the Kelvin radius is about a molecular size (0.23 nm at RH 0.1, 25 degC):
+#: the meniscus model's lower limit (docs/humidity.md).
+_LOWEST_MENISCUS_HUMIDITY = 0.1
+
+
+def sliding_average(values, sliding, distance):
+    """Energy-per-distance average of a force over a window of sliding distance (MODEL 7b).
+
+    Step ``i`` slides ``sliding[i]`` and dissipates ``values[i] * sliding[i]`` uniformly over it;
+    the result at step ``i`` is the energy dissipated within ``distance / 2`` of sliding on either
+    side of the step's midpoint, divided by the sliding distance that window covers (shorter at
+    the ends of the path). Steps that do not slide (the pitch point) get the average of their
+    neighbourhood. This makes the friction force a property of a physical sliding distance,
+    not of the step size.
+
+    Parameters
+    ----------
+    values : array_like
+        Force at each step [N] (e.g. the friction force of the bond population).
+    sliding : array_like
+        Sliding distance of each step [m], >= 0.
+    distance : float
+        Averaging distance [m], > 0.
+
+    Returns
+    -------
+    ndarray
+        Averaged force [N].
+    """
+    values = np.asarray(values, dtype=float)
+    sliding = np.asarray(sliding, dtype=float)
+    edges = np.concatenate([[0.0], np.cumsum(sliding)])
+    energy = np.concatenate([[0.0], np.cumsum(values * sliding)])
+    centre = 0.5 * (edges[:-1] + edges[1:])
+    lo = np.clip(centre - 0.5 * distance, edges[0], edges[-1])
+    hi = np.clip(centre + 0.5 * distance, edges[0], edges[-1])
+    covered = hi - lo
+    # cumulative energy is piecewise linear in the cumulative sliding distance
+    e_hi = np.interp(hi, edges, energy)
+    e_lo = np.interp(lo, edges, energy)
+    return np.divide(e_hi - e_lo, covered, out=values.copy(), where=covered > 0)
+
+
+def resisting_force(positions, friction_force, first_contact, last_contact, base_pitch):
+    """R(c): the friction forces of every tooth pair in mesh when one pair is at c [N] (MODEL 7b).
+
+    The other pairs sit whole base pitches away on the path of contact, at ``c + k p_b`` for
+    every integer k with ``c_f <= c + k p_b <= c_l``; each resists the drive with its friction
+    force at its own position (taken from the same cycle, interpolated in c).
+    """
+    c = np.asarray(positions, dtype=float)
+    total = np.zeros_like(c)
+    k_max = int(math.ceil((last_contact - first_contact) / base_pitch)) + 1
+    for k in range(-k_max, k_max + 1):
+        other = c + k * base_pitch
+        on_path = (other >= first_contact - 1e-15) & (other <= last_contact + 1e-15)
+        total += np.where(on_path, np.interp(other, c, friction_force), 0.0)
+    return total
+
+
+def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta) -> list[str]:
+    """Physical limits and numerical trouble of a cycle, as sentences (MODEL 7c)."""
+    warnings = []
+    if setup.hertz_width_ratio > 0.2:
+        warnings.append(f"the Hertz half-width reaches {setup.hertz_width_ratio:.2g} of the radius of relative "
+                        "curvature: the half-space contact model (a << R) is stretched")
+    unconverged = int((out["unconverged"] > 0).sum())
+    if unconverged:
+        warnings.append(f"the contact solve did not converge in {unconverged} step(s) (flagged in contact_converged)")
+    exceeded = int((out["window_exceeded"] > 0).sum())
+    if exceeded:
+        warnings.append(f"the contact reached the ends of the {setup.grid.size * setup.grid_spacing * 1e6:.3g} um window "
+                        f"in {exceeded} step(s): raise mesh_window")
+    if params["interface_model"] == "gap" and (out["vdw_edge"] > 0).any():
+        warnings.append(f"the gap at the window's ends is below vdw_cutoff in {int((out['vdw_edge'] > 0).sum())} "
+                        "step(s): vdW beyond the window is missed; raise mesh_window")
+    above = int((out["max_pressure"] > params["elastic_limit_pressure"]).sum())
+    if above:
+        warnings.append(f"the rough contact's peak pressure exceeds the elastic limit of silicon "
+                        f"({params['elastic_limit_pressure'] / 1e9:.3g} GPa) in {above} step(s)")
+    rigid = int((out["rigid_atomic_blocks"] > 0).sum())
+    if rigid:
+        warnings.append(f"atomic blocks are past the threshold strain of the bilinear law "
+                        f"({params['threshold_strain']:g}) in {rigid} step(s): they carry load rigidly")
+    peak_shear = float(np.max(shear_stress)) if shear_stress.size else 0.0
+    if peak_shear > params["ideal_shear_strength"]:
+        warnings.append(f"the friction stress over the real contact reaches {peak_shear / 1e9:.3g} GPa, above the ideal "
+                        f"shear strength of silicon ({params['ideal_shear_strength'] / 1e9:.3g} GPa): the teeth "
+                        "would shear and wear rather than slide")
+    if not fixed_point_converged:
+        warnings.append(f"the F_t/F_f fixed point of dissimilar materials (Dundurs beta {beta:.3g}) did not converge "
+                        f"in {passes} passes: the friction is not reliable")
+    if (efficiency <= 0).any():
+        warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
+                        "step(s): friction takes more power than the drive supplies there")
+    if params["environment"] == "air" and 0.0 < params["relative_humidity"] < _LOWEST_MENISCUS_HUMIDITY:
+        from memstribo.physics.capillary import kelvin_radius
+
+        warnings.append(f"relative humidity {params['relative_humidity']:g} is below {_LOWEST_MENISCUS_HUMIDITY:g}: the "
+                        f"Kelvin radius ({kelvin_radius(params['relative_humidity'], params['temperature']) * 1e9:.2g} "
+                        "nm) is about a molecular size, where adsorbed water films, not menisci, dominate; the capillary "
+                        "terms are outside their validity (docs/humidity.md)")
+    return warnings
+
+
+def summarize(dataset) -> dict:
+    """The summary of a meshing cycle: the keys of ``memstribo mesh --json`` (SI).
+
+    One COF per meaning: ``cof_mean`` is the cycle's dissipated energy over
+    ``integral (F_N + F_adh) ds`` (3-7 over the cycle), and its split by mechanism
+    (``cof_chemical``, ``cof_vdw``, ``cof_elastic``) is the same ratio per mechanism, so the
+    parts add up to ``cof_mean`` exactly. The stiction verdict: ``resisting_force_max`` is the
+    largest R(c), ``stiction_margin`` = ``tangential_force`` - ``resisting_force_max`` (MODEL 7b).
+    """
+    import json
+
+    time = np.asarray(dataset["time"])
+    weights = np.gradient(time) if time.size > 1 else np.ones(1)
+    weights = weights / weights.sum()
+    sliding = np.asarray(dataset["sliding_distance"])
+    denominator = np.asarray(dataset["normal_force"] + dataset["adhesion_force"])
+    work = float((denominator * sliding).sum())
+    energy = {k: float(dataset[k].sum()) for k in ("energy_chemical", "energy_vdw", "energy_elastic",
+                                                   "energy_capillary") if k in dataset}
+    split = {f"cof_{k.split('_')[1]}": (v / work if work > 0 else 0.0) for k, v in energy.items()}
+    friction = np.asarray(dataset["friction_force"])
+    resisting = np.asarray(dataset["resisting_force"])
+    f_t = float(dataset.attrs["tangential_force_total"])
+    margin = f_t - float(resisting.max())
+    efficiency = np.asarray(dataset["mesh_efficiency"])
+    return {
+        "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split.get("cof_capillary", 0.0),
+        "cof_max": float(dataset["cof"].max()),
+        **split,
+        "friction_force_mean": float((friction * weights).sum()),
+        "friction_force_max": float(friction.max()),
+        "resisting_force_max": float(resisting.max()),
+        "adhesion_force_mean": float((np.asarray(dataset["adhesion_force"]) * weights).sum()),
+        "normal_force_max": float(dataset["normal_force"].max()),
+        "normal_force_total": float(dataset.attrs["normal_force_total"]),
+        "tangential_force": f_t,
+        "stiction": bool(margin < 0),
+        "stiction_margin": margin,
+        "mesh_efficiency": float(dataset.attrs["mesh_efficiency_mean"]),
+        "mesh_efficiency_min": float(efficiency.min()),
+        "max_shear_stress": float(dataset["friction_shear_stress"].max()),
+        "steps": int(time.size),
+        "sliding_distance": float(sliding.sum()),
+        "energy_dissipated": float(sum(energy.values())),
+        **energy,
+        "unconverged_steps": int((~np.asarray(dataset["contact_converged"], dtype=bool)).sum()),
+        "window_exceeded_steps": int(np.asarray(dataset["window_exceeded"], dtype=bool).sum()),
+        "max_contact_pressure": float(dataset["max_contact_pressure"].max()),
+        "steps_above_elastic_limit": int((np.asarray(dataset["max_contact_pressure"])
+                                          > dataset.attrs.get("elastic_limit_pressure", np.inf)).sum()),
+        "load_case": str(dataset.attrs["load_case"]),
+        "environment": str(dataset.attrs.get("environment", "vacuum")),
+        "relative_humidity": float(dataset.attrs.get("relative_humidity", 0.0)),
+        "interface_model": str(dataset.attrs["interface_model"]),
+        "contact_adhesion": str(dataset.attrs["contact_adhesion"]),
+        "mesh_contact": str(dataset.attrs.get("mesh_contact", "line")),
+        "roughness_rows": str(dataset.attrs["roughness_rows"]),
+        "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
+    }
