@@ -57,16 +57,14 @@ def timed(function, repeat):
 
 def former(h, dx, load, args, current):
     """The former inner solves of the zone updates, timed in turn with the plain and the current adhesive solve."""
-    import memstribo.physics.contact as contact
-    from memstribo.physics.contact import solve_line_contact
+    import dataclasses
+
+    from memstribo.physics.contact import DEFAULTS, solve_line_contact
 
     def run(settle):
-        contact._SETTLE_FIRST = contact._LINEAR_RESPONSE_START = settle
-        try:
-            return solve_line_contact(h, dx, MODULUS, load=load, tolerance=args.tolerance, max_iterations=20000,
-                                      cohesive_stress=SIGMA0, cohesive_range=RANGE)
-        finally:
-            contact._SETTLE_FIRST = contact._LINEAR_RESPONSE_START = True
+        settings = dataclasses.replace(DEFAULTS, settle_first=settle, linear_response_start=settle)
+        return solve_line_contact(h, dx, MODULUS, load=load, tolerance=args.tolerance, max_iterations=20000,
+                                  cohesive_stress=SIGMA0, cohesive_range=RANGE, settings=settings)
 
     def plain():
         return solve_line_contact(h, dx, MODULUS, load=load, tolerance=args.tolerance, max_iterations=20000)

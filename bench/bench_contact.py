@@ -174,13 +174,15 @@ SOLVERS = {"memstribo": run_memstribo, "tamaas": run_tamaas, "contactmechanics":
 def tooth_timings(sizes, repeat=5, calls=10):
     """Timings of a tooth-like free-boundary contact (Hertz gap + roughness, few elements in contact):
     cold and warm-started solves, with the dense small-set path and with FFTs only."""
+    import dataclasses
+
     import memstribo.physics.contact as contact
 
     radius, load, modulus, length = 10e-6, 12.5, 85e9, 1e-6
     print(f"# tooth-like contact: R = 10 um, w = 12.5 N/m, E* = 85 GPa, Rq 1 nm over 1 um, free boundary; "
           f"best of {repeat} x {calls} solves")
     print(f"{'N':>6} {'path':>6} {'cold [ms]':>10} {'warm [ms]':>10} {'in contact':>11}")
-    default = contact._DENSE_MAX, contact._DIRECT_MAX
+    default = contact.DEFAULTS.dense_max
     for exponent in sizes:
         n = 2**exponent
         dx = length / n
@@ -189,22 +191,19 @@ def tooth_timings(sizes, repeat=5, calls=10):
         z *= 1e-9 / z.std()
         h = x**2 / (2 * radius) - z
         shifted = x**2 / (2 * radius) - np.roll(z, 1)  # one meshing step later
-        for path, dense_max in (("dense", default[0]), ("fft", 0)):
-            contact._DENSE_MAX = contact._DIRECT_MAX = dense_max
-            try:
-                first = contact.solve_line_contact(h, dx, modulus, load=load)
-                timings = []
-                for keywords in ({}, {"initial_pressure": first.pressure}):
-                    best = np.inf
-                    for _ in range(repeat):
-                        start = time.perf_counter()
-                        for _ in range(calls):
-                            contact.solve_line_contact(shifted if keywords else h, dx, modulus, load=load,
-                                                       **keywords)
-                        best = min(best, (time.perf_counter() - start) / calls)
-                    timings.append(best)
-            finally:
-                contact._DENSE_MAX, contact._DIRECT_MAX = default
+        for path, dense_max in (("dense", default), ("fft", 0)):
+            settings = dataclasses.replace(contact.DEFAULTS, dense_max=dense_max, direct_max=dense_max)
+            first = contact.solve_line_contact(h, dx, modulus, load=load, settings=settings)
+            timings = []
+            for keywords in ({}, {"initial_pressure": first.pressure}):
+                best = np.inf
+                for _ in range(repeat):
+                    start = time.perf_counter()
+                    for _ in range(calls):
+                        contact.solve_line_contact(shifted if keywords else h, dx, modulus, load=load,
+                                                   settings=settings, **keywords)
+                    best = min(best, (time.perf_counter() - start) / calls)
+                timings.append(best)
             print(f"{n:>6} {path:>6} {timings[0] * 1e3:>10.2f} {timings[1] * 1e3:>10.2f} "
                   f"{int(first.contact.sum()):>11}", flush=True)
 

@@ -4,7 +4,7 @@
 
 Runs one meshing cycle (one realisation) of the 6 x 6 map's heaviest point (drive torque
 3e-8 N*m, face width 4 um: 20 rows, 481 steps), records every small-grid zone solve
-(``contact._dense_capillary``), and prints the updates per solve (mean, percentiles), then, on a
+(``memstribo.physics.contact.dense._dense_capillary``), and prints the updates per solve (mean, percentiles), then, on a
 random sample of those solves: the time per solve and per update, the same solves started cold
 (no previous pressure), and with looser zone tolerances (``_FRACTION_TOLERANCE`` and
 ``_ZONE_LOAD_TOLERANCE``), with how many solves settle in another state (zone fraction sum
@@ -30,7 +30,10 @@ def main():
         parser.error(f"--sample must be a whole number >= 1, not {args.sample}")
 
     from memstribo.parameters import get_parameter_values
-    from memstribo.physics import contact
+    import dataclasses
+
+    from memstribo.physics.contact import DEFAULTS
+    from memstribo.physics.contact import dense as contact
     from memstribo.simulations.design_map import map_point
 
     params = get_parameter_values().updated({"drive_torque": 3e-8, "face_width": 4e-6, "realisations": 1})
@@ -38,8 +41,8 @@ def main():
     problems = []
     original = contact._dense_capillary
 
-    def recorded(*problem):
-        state = original(*problem)
+    def recorded(*problem, settings):
+        state = original(*problem, settings=settings)
         problems.append((problem, state))
         return state
 
@@ -58,14 +61,12 @@ def main():
 
     random.seed(args.seed)
     sample = [p for p, s in random.sample(problems, min(args.sample, len(problems))) if s is not None]
-    reference = [original(*p) for p in sample]
+    reference = [original(*p, settings=DEFAULTS) for p in sample]
 
-    def run(label, problems_, restore=None):
+    def run(label, problems_, settings=DEFAULTS):
         begin = time.perf_counter()
-        states = [original(*p) for p in problems_]
+        states = [original(*p, settings=settings) for p in problems_]
         seconds = time.perf_counter() - begin
-        if restore:
-            restore()
         done = [(s, r) for s, r in zip(states, reference) if s is not None]
         count = np.array([s[-1] for s, _ in done])
         moved = sum(abs(s[3][~s[2]].sum() - r[3][~r[2]].sum()) > 0.05 for s, r in done)
@@ -75,14 +76,9 @@ def main():
     print(f"sample of {len(sample)} solves:")
     run("as in the cycle (previous pressure)", sample)
     run("cold start", [p[:7] + (None,) + p[8:] for p in sample])
-    saved = contact._FRACTION_TOLERANCE, contact._ZONE_LOAD_TOLERANCE
-
-    def restore():
-        contact._FRACTION_TOLERANCE, contact._ZONE_LOAD_TOLERANCE = saved
-
     for tolerance in (3e-4, 1e-3, 3e-3):
-        contact._FRACTION_TOLERANCE = contact._ZONE_LOAD_TOLERANCE = tolerance
-        run(f"zone tolerances {tolerance:g}", sample, restore)
+        run(f"zone tolerances {tolerance:g}", sample,
+            dataclasses.replace(DEFAULTS, fraction_tolerance=tolerance, zone_load_tolerance=tolerance))
 
 
 if __name__ == "__main__":

@@ -12,30 +12,26 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from memstribo.simulations import mesh
-from memstribo.physics.coating import get_coating
-from memstribo.errors import InputError
+import memstribo
 from memstribo.physics.nanoblock.geometry import nanoblock_geometry_from_profile
-from memstribo.parameters import get_parameter_values
-from memstribo.surfaces.readers import read_topography
 from memstribo.surfaces.roughness import profile_statistics
 
 ROOT = Path(__file__).resolve().parent.parent
 
 
 def main(path: str | Path = ROOT / "data" / "afm" / "opdx-3.opdx") -> dict:
-    params = get_parameter_values().updated({"mesh_steps": 120})
-    profile = read_topography(path)                      # Profile (x, z in m) with provenance
+    params = memstribo.parameter_set(mesh_steps=120)
+    profile = memstribo.read_surface(path)                    # Profile (x, z in m) with provenance
     stats = profile_statistics(profile)                  # ISO 4287 parameters (levelled)
     print(f"profile {profile.name}: {profile.source}")
     print(f"  Rq = {stats.Rq * 1e9:.3f} nm, rms slope = {stats.rms_slope:.3f}, lambda_q = {stats.lambda_q * 1e9:.1f} nm")
     try:  # H_at = 0.5 Rq, H_adh = 1.2 Rq, widths cut at those levels, pitch = lambda_q (thesis 3.4)
         geometry = nanoblock_geometry_from_profile(profile)
-    except InputError as exc:  # e.g. a smooth long-wavelength profile: no atomic block fits
+    except memstribo.InputError as exc:  # e.g. a smooth long-wavelength profile: no atomic block fits
         geometry = None
         print(f"  (no nanoblock geometry from this profile: {exc})")
-    bare = mesh.summarize(mesh.simulate_mesh(params, profile))
-    coated = mesh.summarize(mesh.simulate_mesh(params, profile, coating=get_coating("OTS"), wear=0.0))
+    bare = memstribo.mesh_cycle(params, profile).summary
+    coated = memstribo.mesh_cycle(params, profile, coating="OTS", wear=0.0).summary
     if geometry is not None:
         print(f"  nanoblock from the profile: w_at = {geometry.atomic_width * 1e9:.1f} nm, "
               f"H_at = {geometry.atomic_height * 1e9:.2f} nm, w_adh = {geometry.adhesive_width * 1e9:.1f} nm")

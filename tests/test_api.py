@@ -64,3 +64,43 @@ def test_run_takes_options_by_name(tmp_path):
     result = memstribo.run(out=tmp_path / "out", stages=["gear"], validation=False)
     assert result.ok and (tmp_path / "out" / "report.html").exists()
     assert result.verdict["tangential_force"] == pytest.approx(2.82e-3, rel=5e-3)
+
+
+def test_the_api_docstring_examples_run():
+    """#24 item 4: every API function's docstring has an example, and the examples run (doctest)."""
+    import doctest
+
+    import memstribo.api as api
+
+    for name in api.__all__:
+        assert ">>>" in (getattr(api, name).__doc__ or ""), f"memstribo.{name} has no example"
+    result = doctest.testmod(api, optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert result.attempted >= 8 and result.failed == 0
+
+
+def test_dir_and_help_list_the_api():
+    import pydoc
+
+    import memstribo
+
+    listed = dir(memstribo)
+    for name in ("mesh_cycle", "MeshCycle", "sweep", "run", "read_surface", "parameter_set"):
+        assert name in listed and name in memstribo.__all__
+        assert name in pydoc.render_doc(memstribo, renderer=pydoc.plaintext)
+
+
+def test_the_cycle_carries_the_position_along_the_line_of_action_and_plots_over_it(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import memstribo
+
+    cycle = memstribo.mesh_cycle(steps=31)
+    position = cycle.dataset["position"]
+    assert position.dims == ("step",) and position.attrs["units"] == "m"
+    assert list(cycle.dataset.indexes) == ["step"]  # step stays the index
+    assert (position.values == cycle.dataset["c"].values).all()
+    figure = cycle.plot()
+    assert len(figure.axes) == 3
+    assert figure.axes[2].get_xlabel().startswith("position along the line of action")
+    assert figure.axes[1].get_lines()[1].get_ydata()[0] == cycle.dataset["tangential_force"].values[0] * 1e6

@@ -9,6 +9,15 @@ The model is organised by topic, one module each, in the order of the chain::
 Each public function implements one published relation in SI units; :mod:`memstribo.job.chain`
 composes them into the main job (``memstribo run``). Heavy libraries (SurfaceTopography,
 matplotlib, dask) are imported only where they are used, so ``import memstribo`` is quick.
+
+The public API (:mod:`memstribo.api`, loaded on first use)
+----------------------------------------------------------
+read_surface(surface)            a measured surface as a Profile or SurfaceMap (heights in m)
+parameter_set(name, **changes)   a validated parameter set (SI), with changes in any unit
+mesh_cycle(params, surface)      one meshing cycle (or an ensemble): a MeshCycle
+MeshCycle                        .dataset (xarray), .summary (dict), .ensemble, .plot(), .to_xarray()
+sweep(params, parameter, values) meshing cycles over loads, torques or areas, as one dataset
+run(config, out)                 the whole chain, roughness to damage, with report.html
 """
 
 from importlib.metadata import PackageNotFoundError, version
@@ -33,6 +42,11 @@ __all__ = [
     "get_parameter_values",
     *_API,
 ]
+
+
+def __dir__():
+    """The module's names and the API's (loaded lazily), so that tab completion and ``dir`` offer them."""
+    return sorted(set(globals()) | set(__all__))
 
 
 def __getattr__(name):

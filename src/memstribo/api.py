@@ -44,11 +44,21 @@ def read_surface(surface, *, channel: str | None = None, unit: str | None = None
         already in memory. A SurfaceTopography ``Topography`` (2D) or ``UniformLineScan`` (1D)
         is converted with its ``physical_sizes`` and ``unit``.
     channel, unit : str, optional
-        Channel of a multi-channel file; height unit of a file that does not say it.
+        Channel of a multi-channel file; height unit of a file that does not say it (e.g. ``"nm"``).
 
     Returns
     -------
     Profile or SurfaceMap
+        Heights ``z`` [m] over positions ``x`` [m] (a profile), or a map of heights [m] with its spacings
+        ``dx``, ``dy`` [m].
+
+    Examples
+    --------
+    >>> import numpy as np, memstribo
+    >>> from memstribo.surfaces.roughness import Profile
+    >>> line = Profile(x=np.arange(5) * 1e-9, z=np.array([0.0, 1.0, 0.0, -1.0, 0.0]) * 1e-9, name="a line")
+    >>> memstribo.read_surface(line) is line  # objects in memory pass through; files are read by format
+    True
     """
     from memstribo.surfaces.roughness import Profile
 
@@ -102,7 +112,15 @@ def parameter_set(name: str = "silicon_thesis", overrides: dict | None = None, *
     Returns
     -------
     memstribo.parameters.Parameters
-        Every value validated and in SI, with its source (``"Python API"`` for the changes).
+        Every value validated and in SI (``params["normal_load"]`` in N, ``params["drive_torque"]`` in N m, ...),
+        with its source (``"Python API"`` for the changes); ``memstribo parameters`` lists names and units.
+
+    Examples
+    --------
+    >>> import memstribo
+    >>> params = memstribo.parameter_set(normal_load="50 uN")
+    >>> round(params["normal_load"], 12)  # N
+    5e-05
     """
     from memstribo.parameters import get_parameter_values
 
@@ -126,6 +144,17 @@ class MeshCycle:
     ensemble : dict or None
         The verdict over the realisations (``memstribo.simulations.mesh.simulate_ensemble``), without the
         per-realisation summaries, or None for one realisation.
+
+    The dataset is indexed by ``step``; its coordinate ``position`` is the position of the contact point along
+    the line of action [m] (0: the pitch point), the x-axis of :meth:`plot`.
+
+    Examples
+    --------
+    >>> import memstribo
+    >>> cycle = memstribo.mesh_cycle(steps=31)
+    >>> figure = cycle.plot()  # friction, R(c) against F_t, the COF split over the position
+    >>> [ax.get_ylabel() for ax in figure.axes]
+    ['force [uN]', 'force [uN]', 'COF [-]']
     """
 
     dataset: Any
@@ -152,6 +181,45 @@ class MeshCycle:
             dataset.attrs["ensemble"] = json.dumps({k: v for k, v in self.ensemble.items() if k != "per_realisation"})
         return dataset
 
+    def plot(self, axes=None):
+        """Friction force, R(c) against F_t, and the COF split over the position along the line of action.
+
+        Parameters
+        ----------
+        axes : sequence of three matplotlib Axes, optional
+            Where to draw; default a new figure of three panels sharing the position axis.
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+            Panels: the friction force F_f [uN]; the resisting force R(c) of all pairs in mesh and the
+            tangential force F_t [uN] (stiction where R reaches F_t); the COF and its split by mechanism [-];
+            all over the position along the line of action [um].
+        """
+        import matplotlib.pyplot as plt
+
+        if axes is None:
+            figure, axes = plt.subplots(3, 1, sharex=True, figsize=(7.0, 8.0), constrained_layout=True)
+        else:
+            figure = axes[0].figure
+        ds = self.dataset
+        x = ds["position"].values * 1e6
+        axes[0].plot(x, ds["friction_force"].values * 1e6, label="friction force F_f")
+        axes[0].set_ylabel("force [uN]")
+        axes[1].plot(x, ds["resisting_force"].values * 1e6, label="R(c), all pairs in mesh")
+        axes[1].plot(x, ds["tangential_force"].values * 1e6, "--", label="tangential force F_t")
+        axes[1].set_ylabel("force [uN]")
+        axes[2].plot(x, ds["cof"].values, "k", label="COF")
+        for part in ("chemical", "vdw", "elastic", "capillary"):
+            values = ds[f"cof_{part}"].values
+            if values.any():
+                axes[2].plot(x, values, label=f"COF {part}")
+        axes[2].set_ylabel("COF [-]")
+        axes[2].set_xlabel("position along the line of action [um]")
+        for ax in axes:
+            ax.legend(fontsize="small")
+        return figure
+
 
 def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int | None = None, coating=None,
                wear: float = 1.0, client=None, progress: bool = False) -> MeshCycle:
@@ -174,10 +242,23 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     client : distributed.Client, optional
         Runs the realisations on a Dask cluster.
     progress : bool
+        Show a progress bar on stderr.
 
     Returns
     -------
     MeshCycle
+        ``.dataset`` over ``step`` (coordinate ``position`` [m] along the line of action): forces [N],
+        pressures [Pa], energies [J], COF [-], each variable with ``units``; ``.summary`` (the keys of
+        ``memstribo mesh --json``, SI); ``.ensemble`` (stiction probability, quantiles) for realisations > 1.
+
+    Examples
+    --------
+    >>> import memstribo
+    >>> cycle = memstribo.mesh_cycle(steps=31)
+    >>> cycle.dataset["position"].attrs["units"], cycle.dataset.sizes["step"]
+    ('m', 31)
+    >>> sorted(k for k in cycle.summary if k.startswith("cof_m"))
+    ['cof_max', 'cof_mean']
     """
     from memstribo.physics.coating import get_coating
     from memstribo.simulations.mesh import simulate_ensemble, simulate_mesh, summarize
@@ -211,8 +292,16 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     Returns
     -------
     xarray.Dataset
-        One dimension named after the swept quantity (``normal_load``, ``drive_torque`` or
-        ``area_multiple``), a variable per numeric summary key, each with ``units``.
+        One dimension named after the swept quantity (``normal_load`` [N], ``drive_torque`` [N m] or
+        ``area_multiple`` [-]), a variable per numeric summary key, each with ``units``.
+
+    Examples
+    --------
+    >>> import memstribo
+    >>> params = memstribo.parameter_set(load_case="thesis")
+    >>> points = memstribo.sweep(params, "load", ["25 uN", "50 uN"], steps=31)
+    >>> points["normal_load"].values.tolist(), points["cof_mean"].attrs["units"]
+    ([2.5e-05, 5e-05], '1')
     """
     import numpy as np
     import xarray as xr
@@ -258,6 +347,14 @@ def run(config: str | Path | None = None, out: str | Path = "memstribo-results",
     Returns
     -------
     memstribo.job.options.RunResult
+        The folder written (``report.html``, one NetCDF/CSV set per stage, figures) and each stage's summary (SI).
+
+    Examples
+    --------
+    >>> import tempfile, memstribo
+    >>> result = memstribo.run(out=tempfile.mkdtemp(), stages=["roughness"], validation=False)  # doctest: +ELLIPSIS
+    >>> (result.folder / "report.html").is_file()
+    True
     """
     from memstribo.job.chain import RunChain
     from memstribo.job.options import RunOptions

@@ -152,6 +152,66 @@ def load_approach_curve(separation, dx, contact_modulus, approaches, *, cohesive
     return _curve(rows), pressure
 
 
+def _unload(separation, dx, modulus, options, start, rows, h0, target, max_steps):
+    """Reduce the approach step by step from the adhered state ``start`` (rows appended to ``rows``, steps adapted
+    to change the load by about ``target`` [N/m]); returns (whether the maximum tension was passed, why it stopped)."""
+    from memstribo.physics.contact import solve_line_contact
+
+    pressure, approach = start.pressure, start.approach
+    step = 0.25 * h0
+    smallest = 1e-3 * h0
+    passed = False
+    message = ""
+    for _ in range(max_steps):
+        solution = solve_line_contact(separation, dx, modulus, approach=approach - step, initial_pressure=pressure,
+                                      **options)
+        lost = rows[-1][2] > 0 and not solution.contact.any()
+        if (lost or not solution.converged) and step > smallest:
+            # the set iteration may leave the adhered state before it ends (jump-out): retry with
+            # half the step, so that the end of the adhered branch is found to within h0/1000
+            step *= 0.5
+            continue
+        if not solution.converged:
+            if passed:  # beyond the maximum tension: the end of the adhered branch
+                message = f"the set iteration finds no adhered state beyond this point ({solution.message})"
+            else:
+                rows.append(_summary(solution))
+                message = f"an unloading step did not converge: {solution.message}"
+            break
+        rows.append(_summary(solution))
+        approach -= step
+        pressure = solution.pressure
+        change = abs(rows[-1][1] - rows[-2][1])
+        if len(rows) >= 3 and rows[-1][1] > rows[-2][1]:
+            passed = True
+        if lost and rows[-1][1] > rows[-2][1]:
+            message = "the contact was lost (jump-out)"
+            break
+        if passed and (rows[-1][1] >= 0.0 or rows[-1][1] > 0.5 * min(r[1] for r in rows)):
+            message = "the tension fell below half its maximum"
+            break
+        step *= float(np.clip(target / change, 0.5, 2.0)) if change > 0 else 2.0
+    return passed, message
+
+
+def _largest_tension(curve):
+    """(index, load [N/m], half-width [m]) of the largest tension on the curve, refined by a parabola through the
+    three steps around it."""
+    k = int(np.argmin(curve.load))
+    load_min, width = float(curve.load[k]), float(curve.half_width[k])
+    if 0 < k < len(curve.load) - 1 and (curve.half_width[k + 1] > 0 or curve.half_width[k] == 0):
+        d = curve.approach[k - 1:k + 2]
+        p = curve.load[k - 1:k + 2]
+        coefficients = np.polyfit(d - d[1], p, 2)
+        if coefficients[0] > 0:
+            vertex = -coefficients[1] / (2.0 * coefficients[0])
+            if d[0] - d[1] <= vertex <= d[2] - d[1] or d[2] - d[1] <= vertex <= d[0] - d[1]:
+                load_min = float(np.polyval(coefficients, vertex))
+                width = float(np.interp(vertex + d[1], d[::-1], curve.half_width[k - 1:k + 2][::-1])
+                              if d[0] > d[2] else np.interp(vertex + d[1], d, curve.half_width[k - 1:k + 2]))
+    return k, load_min, width
+
+
 @cites("maugis_1992", "baney_hui_1997", "johnson_greenwood_2008", "model")
 def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_stress, *, points=2048, length=None,
                           steps=40, tolerance=1e-8, periodic=False, max_steps=None):
@@ -227,55 +287,10 @@ def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_st
     if not start.converged:
         return PullOff(np.nan, np.nan, lam, h0, _curve(rows), dx, length, False,
                        f"the adhered state at zero load did not converge: {start.message}")
-    pressure, approach = start.pressure, start.approach
-    step = 0.25 * h0
-    smallest = 1e-3 * h0
-    target = scale / steps
     max_steps = int(max_steps) if max_steps is not None else 4 * int(steps)
-    passed = False
-    message = ""
-    for _ in range(max_steps):
-        solution = solve_line_contact(separation, dx, modulus, approach=approach - step, initial_pressure=pressure,
-                                      **options)
-        lost = rows[-1][2] > 0 and not solution.contact.any()
-        if (lost or not solution.converged) and step > smallest:
-            # the set iteration may leave the adhered state before it ends (jump-out): retry with
-            # half the step, so that the end of the adhered branch is found to within h0/1000
-            step *= 0.5
-            continue
-        if not solution.converged:
-            if passed:  # beyond the maximum tension: the end of the adhered branch
-                message = f"the set iteration finds no adhered state beyond this point ({solution.message})"
-            else:
-                rows.append(_summary(solution))
-                message = f"an unloading step did not converge: {solution.message}"
-            break
-        rows.append(_summary(solution))
-        approach -= step
-        pressure = solution.pressure
-        change = abs(rows[-1][1] - rows[-2][1])
-        if len(rows) >= 3 and rows[-1][1] > rows[-2][1]:
-            passed = True
-        if lost and rows[-1][1] > rows[-2][1]:
-            message = "the contact was lost (jump-out)"
-            break
-        if passed and (rows[-1][1] >= 0.0 or rows[-1][1] > 0.5 * min(r[1] for r in rows)):
-            message = "the tension fell below half its maximum"
-            break
-        step *= float(np.clip(target / change, 0.5, 2.0)) if change > 0 else 2.0
+    passed, message = _unload(separation, dx, modulus, options, start, rows, h0, scale / steps, max_steps)
     curve = _curve(rows)
-    k = int(np.argmin(curve.load))
-    load_min, width = float(curve.load[k]), float(curve.half_width[k])
-    if 0 < k < len(curve.load) - 1 and (curve.half_width[k + 1] > 0 or curve.half_width[k] == 0):
-        d = curve.approach[k - 1:k + 2]
-        p = curve.load[k - 1:k + 2]
-        coefficients = np.polyfit(d - d[1], p, 2)
-        if coefficients[0] > 0:
-            vertex = -coefficients[1] / (2.0 * coefficients[0])
-            if d[0] - d[1] <= vertex <= d[2] - d[1] or d[2] - d[1] <= vertex <= d[0] - d[1]:
-                load_min = float(np.polyval(coefficients, vertex))
-                width = float(np.interp(vertex + d[1], d[::-1], curve.half_width[k - 1:k + 2][::-1])
-                              if d[0] > d[2] else np.interp(vertex + d[1], d, curve.half_width[k - 1:k + 2]))
+    k, load_min, width = _largest_tension(curve)
     converged = bool(passed and curve.converged.all())
     if not passed and not message:
         message = f"the maximum tension was not passed within {max_steps} steps: raise max_steps"

@@ -404,6 +404,15 @@ class LoadSharing:
         return self.share_of(position) * self.block_load
 
 
+def _point_load_influence(positions, contact_modulus):
+    """Boussinesq displacement [m/N] of each asperity under a unit load on each other one, 1/(pi E* s_ij)."""
+    distance = np.linalg.norm(positions[:, None, :] - positions[None, :, :], axis=-1)
+    influence = np.zeros_like(distance)
+    off = distance > 0
+    influence[off] = 1.0 / (math.pi * contact_modulus * distance[off])
+    return influence
+
+
 @cites("sneddon_1965", "johnson_1985", "thesis")
 def nanoblock_load_sharing(block_load, per_side: int, pitch: float, degree: float, shape_coefficient: float,
                            contact_modulus: float, *, tolerance: float = 1e-12,
@@ -469,11 +478,7 @@ def nanoblock_load_sharing(block_load, per_side: int, pitch: float, degree: floa
     as_array(contact_modulus, "contact_modulus", "Pa", positive=True)
     positions = asperity_positions(per_side, pitch)
     n = positions.shape[0]
-    distance = np.linalg.norm(positions[:, None, :] - positions[None, :, :], axis=-1)
-    influence = np.zeros_like(distance)
-    off = distance > 0
-    influence[off] = 1.0 / (math.pi * contact_modulus * distance[off])
-
+    influence = _point_load_influence(positions, contact_modulus)
     shares = np.full((loads_total.size, n), 1.0 / n)
     p = shares * loads_total[:, None]
     eye = np.eye(n)

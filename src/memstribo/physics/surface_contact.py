@@ -531,6 +531,19 @@ def _nested_guess(h, dx, dy, modulus, target, periodic, cap):
     return _prolong(np.maximum(coarse_p, 0.0), h.shape, periodic), used + iterations
 
 
+def _resolution_notes(coarse_iterations, contact, periodic) -> str:
+    """What a surface solve's message adds: coarse-grid iterations, too few elements in contact, the domain's edge."""
+    message = ""
+    if coarse_iterations:
+        message += f"; {coarse_iterations} more on the coarser nested grids"
+    n_contact = int(np.count_nonzero(contact))
+    if n_contact < 10:
+        message += f"; the contact is resolved by only {n_contact} element(s): refine the grid"
+    if not periodic and (contact[0].any() or contact[-1].any() or contact[:, 0].any() or contact[:, -1].any()):
+        message += "; the contact reaches the edge of the domain: enlarge it"
+    return message
+
+
 @cites("johnson_1985", "polonsky_keer_1999", "vollebregt_2014")
 def solve_surface_contact(separation, dx, dy, contact_modulus, *, load=None, mean_pressure=None, periodic=False,
                           tolerance=1e-8, max_iterations=None, initial_pressure=None, continuation=True,
@@ -624,13 +637,7 @@ def solve_surface_contact(separation, dx, dy, contact_modulus, *, load=None, mea
     else:
         message = (f"{method}: NOT converged: residual {residual:.2e} > tolerance {tolerance:.1e} after {iterations} "
                    f"iterations (max_iterations={cap})")
-    if coarse_iterations:
-        message += f"; {coarse_iterations} more on the coarser nested grids"
-    n_contact = int(np.count_nonzero(contact))
-    if n_contact < 10:
-        message += f"; the contact is resolved by only {n_contact} element(s): refine the grid"
-    if not periodic and (contact[0].any() or contact[-1].any() or contact[:, 0].any() or contact[:, -1].any()):
-        message += "; the contact reaches the edge of the domain: enlarge it"
+    message += _resolution_notes(coarse_iterations, contact, periodic)
     return SurfaceContactSolution(pressure=p, gap=gap, contact=contact, approach=g_mean + offset,
                                   load=float(p.sum() * dx * dy), iterations=iterations, residual=float(residual),
                                   converged=bool(converged), solve_time=time.perf_counter() - start,

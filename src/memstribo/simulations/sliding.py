@@ -286,6 +286,87 @@ def _prepare_profile(profile, params):
     return level_profile(profile)
 
 
+def _slide_variables(r, positions, stiffness, d_chem, params, tips, mode) -> dict:
+    """The slide's variables (name -> (dims, values)): forces, COF split, bonds, energies, block and atomic states;
+    elastic interlocking released once per bond length (module docstring)."""
+    steps = np.diff(positions, prepend=positions[0])
+    d_at = np.diff(r["at_c"], axis=0, prepend=r["at_c"][:1])
+    d_adh = np.diff(r["adh_c"], axis=0, prepend=r["adh_c"][:1])
+    raw = (mechanics.elastic_interlocking_energy(stiffness.atomic, d_at).sum(axis=(-2, -1))
+           + mechanics.elastic_interlocking_energy(stiffness.adhesive, d_adh).sum(axis=-1))
+    safe = np.where(steps > 0, steps, 1.0)
+    elastic = np.where(steps > 0, raw * d_chem / safe, 0.0)
+    f_chem, f_vdw, f_el, e_chem, e_vdw, e_el = _rates(r["bonds_chem"], r["bonds_vdw"], elastic, steps, params)
+    total = f_chem + f_vdw + f_el
+    cof, cof_chem, cof_vdw, cof_el = _cof([total, f_chem, f_vdw, f_el], r["normal"], r["adhesion"])
+    stress = r["at_f"] / stiffness.atomic_area
+    variables = {
+        "normal_force": ("step", r["normal"]), "adhesion_force": ("step", r["adhesion"]),
+        "friction_force": ("step", total), "friction_force_chemical": ("step", f_chem),
+        "friction_force_vdw": ("step", f_vdw), "friction_force_elastic": ("step", f_el),
+        "cof": ("step", cof), "cof_chemical": ("step", cof_chem), "cof_vdw": ("step", cof_vdw),
+        "cof_elastic": ("step", cof_el), "bonds_chemical": ("step", r["bonds_chem"]),
+        "bonds_vdw": ("step", r["bonds_vdw"]), "energy_chemical": ("step", e_chem),
+        "energy_vdw": ("step", e_vdw), "energy_elastic": ("step", e_el),
+        "atomic_in_contact": ("step", r["contacts"]),
+        "max_atomic_stress": ("step", stress.max(axis=(-2, -1))),
+        "structure_height": ("step", tips - r["approach"]),
+        "approach": ("step", r["approach"]),
+        "block_force": (("step", "block"), r["block_force"]),
+        "block_adhesion_force": (("step", "block"), r["block_adhesion"]),
+        "adhesive_compression": (("step", "block"), r["adh_c"]),
+        "bulk_compression": (("step", "block"), r["bulk_c"]),
+        "shrink": (("step", "block"), r["shrink"]),
+        "atomic_compression": (("step", "block", "atomic"), r["at_c"]),
+        "atomic_stress": (("step", "block", "atomic"), stress),
+        "atomic_rigid": (("step", "block", "atomic"), r["rigid"].astype(np.int8)),
+    }
+    if mode == "fixed-load":
+        variables["load_residual"] = ("step", r["residual"])
+    return variables
+
+
+def _footprint_offsets(centres, w_at, w_adh, blocks, h):
+    """Grid offsets (in steps of ``h`` [m]) of the samples across each atomic face (n, m, k) and adhesive face (n, k)."""
+    def offsets(left_edge, width, samples):
+        centres_ = left_edge[..., None] + (np.arange(samples) + 0.5) / samples * width
+        return np.rint(centres_ / h).astype(np.intp)
+
+    at_offsets = offsets(centres - w_at / 2, w_at, int(np.clip(round(w_at / h), 5, 17)))  # (n, m, k)
+    adh_offsets = offsets(np.arange(blocks) * w_adh, w_adh, int(np.clip(round(w_adh / h), 9, 33)))  # (n, k)
+    return at_offsets, adh_offsets
+
+
+def _slide_distance(profile, x, blocks, w_adh, distance):
+    """The sliding distance [m]: the given one, or all the profile allows; InputError if it does not fit."""
+    length = blocks * w_adh
+    available = x[-1] - x[0] - length
+    if available < 0:
+        raise InputError(f"profile '{profile.name}' is {x[-1] - x[0]:.4g} m long, shorter than the sliding "
+                         f"structure ({blocks} blocks x {w_adh:.4g} m = {length:.4g} m): use a longer profile "
+                         "or fewer slider_blocks.")
+    if distance is None:
+        return available
+    if distance > available * (1 + 1e-12):
+        raise InputError(f"sliding distance {distance:.4g} m does not fit on profile '{profile.name}': the "
+                         f"structure ({length:.4g} m) can slide at most {available:.4g} m over it.")
+    return distance
+
+
+def _tips(params, mode, z, gap, load):
+    """(height of the atomic blocks' tips [m], load [N] or None): at the gap (fixed gap; default Rq), or level with
+    the profile's highest point (fixed load)."""
+    if mode == "fixed-gap":
+        if gap is None:
+            gap = params["sliding_gap"]
+        tips = float(np.sqrt(np.mean(z**2))) if gap is None else float(gap)  # default: Rq
+        if not math.isfinite(tips):
+            raise InputError(f"gap must be finite [m], got {gap!r}.")
+        return tips, load
+    load = as_positive_scalar(params["normal_load"] if load is None else load, "load", "N")
+    return float(z.max()), load  # reference: tips level with the highest point of the profile
+
+
 @cites("thesis", "model", "borodich_savencu_2017")
 def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distance=None, step=None,
                      progress=False):
@@ -299,31 +380,14 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
     step = (params["sliding_step"] or d_chem) if step is None else step
     w_at, w_adh = geometry.atomic_width, geometry.adhesive_width
     length = blocks * w_adh
-    available = x[-1] - x[0] - length
-    if available < 0:
-        raise InputError(f"profile '{profile.name}' is {x[-1] - x[0]:.4g} m long, shorter than the sliding "
-                         f"structure ({blocks} blocks x {w_adh:.4g} m = {length:.4g} m): use a longer profile "
-                         "or fewer slider_blocks.")
-    if distance is None:
-        distance = available
-    elif distance > available * (1 + 1e-12):
-        raise InputError(f"sliding distance {distance:.4g} m does not fit on profile '{profile.name}': the "
-                         f"structure ({length:.4g} m) can slide at most {available:.4g} m over it.")
+    distance = _slide_distance(profile, x, blocks, w_adh, distance)
     positions = _positions(distance, step)
     centres = structure_footprints(geometry, blocks)  # (n, m)
     table = _RangeMax(z)
     layer = adhesive_layer_thickness(params, geometry)  # one rule with the meshing cycle
     stiffness = mechanics.BlockStiffness.from_geometry(geometry, params["youngs_modulus"],
                                                        constants.contact_modulus, params["threshold_strain"])
-    if mode == "fixed-gap":
-        if gap is None:
-            gap = params["sliding_gap"]
-        tips = float(np.sqrt(np.mean(z**2))) if gap is None else float(gap)  # default: Rq
-        if not math.isfinite(tips):
-            raise InputError(f"gap must be finite [m], got {gap!r}.")
-    else:
-        load = as_positive_scalar(params["normal_load"] if load is None else load, "load", "N")
-        tips = float(z.max())  # reference: tips level with the highest point of the profile
+    tips, load = _tips(params, mode, z, gap, load)
 
     # The m rows of atomic blocks across the sliding direction see the same line profile: solve
     # for one block per column with m times the stiffness (exact), then spread the result.
@@ -336,13 +400,7 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
     h = slide_step / refine
     n_grid = (n_steps - 1) * refine + int(math.ceil(length / h)) + 2
     grid = np.interp(np.minimum(x[0] + h * np.arange(n_grid), x[-1]), x, z)
-
-    def offsets(left_edge, width, samples):
-        centres_ = left_edge[..., None] + (np.arange(samples) + 0.5) / samples * width
-        return np.rint(centres_ / h).astype(np.intp)
-
-    at_offsets = offsets(centres - w_at / 2, w_at, int(np.clip(round(w_at / h), 5, 17)))  # (n, m, k)
-    adh_offsets = offsets(np.arange(blocks) * w_adh, w_adh, int(np.clip(round(w_adh / h), 9, 33)))  # (n, k)
+    at_offsets, adh_offsets = _footprint_offsets(centres, w_at, w_adh, blocks, h)
     out = {key: [] for key in ("bonds_chem", "bonds_vdw", "adhesion", "block_adhesion", "normal", "approach",
                                "residual", "block_force", "adh_c", "bulk_c", "shrink", "at_c", "at_f", "rigid",
                                "contacts")}
@@ -397,41 +455,7 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
     if mode == "fixed-gap" and not np.any(r["contacts"]):
         raise InputError(f"gap {tips:.4g} m: no atomic block touches the counter profile anywhere on the slide "
                          f"(highest point {z.max():.4g} m above the mean line); give a smaller gap.")
-    # elastic interlocking, released once per bond length (module docstring)
-    steps = np.diff(positions, prepend=positions[0])
-    d_at = np.diff(r["at_c"], axis=0, prepend=r["at_c"][:1])
-    d_adh = np.diff(r["adh_c"], axis=0, prepend=r["adh_c"][:1])
-    raw = (mechanics.elastic_interlocking_energy(stiffness.atomic, d_at).sum(axis=(-2, -1))
-           + mechanics.elastic_interlocking_energy(stiffness.adhesive, d_adh).sum(axis=-1))
-    safe = np.where(steps > 0, steps, 1.0)
-    elastic = np.where(steps > 0, raw * d_chem / safe, 0.0)
-    f_chem, f_vdw, f_el, e_chem, e_vdw, e_el = _rates(r["bonds_chem"], r["bonds_vdw"], elastic, steps, params)
-    total = f_chem + f_vdw + f_el
-    cof, cof_chem, cof_vdw, cof_el = _cof([total, f_chem, f_vdw, f_el], r["normal"], r["adhesion"])
-    stress = r["at_f"] / stiffness.atomic_area
-    variables = {
-        "normal_force": ("step", r["normal"]), "adhesion_force": ("step", r["adhesion"]),
-        "friction_force": ("step", total), "friction_force_chemical": ("step", f_chem),
-        "friction_force_vdw": ("step", f_vdw), "friction_force_elastic": ("step", f_el),
-        "cof": ("step", cof), "cof_chemical": ("step", cof_chem), "cof_vdw": ("step", cof_vdw),
-        "cof_elastic": ("step", cof_el), "bonds_chemical": ("step", r["bonds_chem"]),
-        "bonds_vdw": ("step", r["bonds_vdw"]), "energy_chemical": ("step", e_chem),
-        "energy_vdw": ("step", e_vdw), "energy_elastic": ("step", e_el),
-        "atomic_in_contact": ("step", r["contacts"]),
-        "max_atomic_stress": ("step", stress.max(axis=(-2, -1))),
-        "structure_height": ("step", tips - r["approach"]),
-        "approach": ("step", r["approach"]),
-        "block_force": (("step", "block"), r["block_force"]),
-        "block_adhesion_force": (("step", "block"), r["block_adhesion"]),
-        "adhesive_compression": (("step", "block"), r["adh_c"]),
-        "bulk_compression": (("step", "block"), r["bulk_c"]),
-        "shrink": (("step", "block"), r["shrink"]),
-        "atomic_compression": (("step", "block", "atomic"), r["at_c"]),
-        "atomic_stress": (("step", "block", "atomic"), stress),
-        "atomic_rigid": (("step", "block", "atomic"), r["rigid"].astype(np.int8)),
-    }
-    if mode == "fixed-load":
-        variables["load_residual"] = ("step", r["residual"])
+    variables = _slide_variables(r, positions, stiffness, d_chem, params, tips, mode)
     attrs = {"model": mode, "profile": profile.name, "profile_source": profile.source,
              "synthetic_profile": int(bool(getattr(profile, "synthetic", False))),
              "adhesive_layer_thickness": layer, "slider_blocks": blocks}
