@@ -364,6 +364,8 @@ map_point.units = {key: quantity_unit(key) for key in MAP_RESULTS}
 
 def _check_or_write_manifest(manifest_path, folder, resume, map_hash, manifest_new):
     """Write a new map's manifest, or check that the folder's is this map's and that ``resume`` was asked for."""
+    from memstribo.simulations.study import _write_json_atomic
+
     if manifest_path.exists():
         try:
             manifest = json.loads(manifest_path.read_text(encoding="utf-8"))
@@ -419,7 +421,7 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
     """
     from memstribo.output import provenance_attributes, write_dataset
     from memstribo.parameters import get_parameter_values
-    from memstribo.simulations.study import _finished_points, _hash, _write_json_atomic, POINTS_FOLDER, prepare_points
+    from memstribo.simulations.study import _finished_points, _hash, POINTS_FOLDER, prepare_points
     from memstribo.simulations.study import points_references
 
     start = time.perf_counter()
