@@ -191,7 +191,8 @@ class RunOptions:
 
 
 def _roughness_files(files, base_folder) -> tuple[str, ...]:
-    """The ``[run] roughness_files`` (a name or a list), resolved against ``base_folder``; InputError if one is missing."""
+    """The ``[run] roughness_files`` (a name or a list), resolved against ``base_folder``; InputError if one is
+    missing."""
     if isinstance(files, str):
         files = [files]
     resolved = []

@@ -244,8 +244,8 @@ def _adhesive_nested(h, dx, modulus, load, mean_pressure, periodic, reference, s
     if n % 2 or n < 2 * settings.coarsest or n // 2 > settings.largest_adhesive_level:
         return None, None, 0
     coarse_mean = None if mean_pressure is None else mean_pressure
-    state = _solve_adhesive(h[::2], 2.0 * dx, modulus, load, coarse_mean, None, periodic, settings.coarse_tolerance, cap,
-                            reference, None, precondition, True, sigma0, h0,
+    state = _solve_adhesive(h[::2], 2.0 * dx, modulus, load, coarse_mean, None, periodic, settings.coarse_tolerance,
+                            cap, reference, None, precondition, True, sigma0, h0,
                             fraction_tolerance=settings.coarse_fraction_tolerance, internal=True,
                             zones=_coarse_zones(zones), settings=settings)
     p_plus, fraction, used = state

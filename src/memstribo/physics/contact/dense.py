@@ -252,8 +252,8 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
         contact = np.zeros(n, dtype=bool)
     status, p, gap, delta, updates = zone_solve(
         matrix, np.ascontiguousarray(h, dtype=float), float(total), sigmas, reaches, per_element, bool(periodic),
-        fraction, contact, tolerance * scale, settings.adhesive_max_outer, settings.max_outer, settings.fraction_tolerance,
-        settings.zone_load_tolerance, settings.zone_max_change, settings.aitken_min_ratio, settings.aitken_max_ratio)
+        fraction, contact, tolerance * scale, settings.adhesive_max_outer, settings.max_outer,
+        settings.fraction_tolerance, settings.zone_load_tolerance, settings.zone_max_change, settings.aitken_min_ratio, settings.aitken_max_ratio)
     if status != SETTLED:
         return None
     return p, gap, contact, fraction, delta, updates

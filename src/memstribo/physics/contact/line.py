@@ -300,10 +300,10 @@ def _nested_guess(h, dx, modulus, target, periodic, reference, cap, small=True, 
     # neighbours (on long domains the first alone is too loose to predict the contact set)
     scale = float(coarse_h.max()) if coarse_h.max() > 0 else 1.0
     local = float(np.std(np.diff(coarse_h))) or scale
-    coarse_p, used, _, _ = _active_set(operator, coarse_h, guess * (target / guess.mean()), target,
-                                       min(settings.coarse_tolerance * scale, settings.coarse_step_fraction * local), cap, True,
-                                       settings.coarse_max_outer if small and operator.size <= settings.dense_grid else None, small,
-                                       settings=settings)
+    tolerance = min(settings.coarse_tolerance * scale, settings.coarse_step_fraction * local)
+    max_outer = settings.coarse_max_outer if small and operator.size <= settings.dense_grid else None
+    coarse_p, used, _, _ = _active_set(operator, coarse_h, guess * (target / guess.mean()), target, tolerance, cap,
+                                       True, max_outer, small, settings=settings)
     fine = np.empty(n)
     fine[0::2] = coarse_p
     following = np.roll(coarse_p, -1) if periodic else np.append(coarse_p[1:], 0.0)
@@ -400,8 +400,8 @@ def _message(method_used, converged, iteration, residual, tolerance, cap, coarse
         message = (f"{method_used}: converged in {iteration} iterations (residual {residual:.2e} <= tolerance "
                    f"{tolerance:.1e})")
     else:
-        message = (f"{method_used}: NOT converged: residual {residual:.2e} > tolerance {tolerance:.1e} after {iteration} "
-                   f"iterations (max_iterations={cap})")
+        message = (f"{method_used}: NOT converged: residual {residual:.2e} > tolerance {tolerance:.1e} after "
+                   f"{iteration} iterations (max_iterations={cap})")
     if coarse_iterations:
         message += f"; {coarse_iterations} more on the coarser nested grids"
     if n_contact < 3:
