@@ -148,7 +148,16 @@ def test_validation_rows_without_a_checkout_keep_the_other_topics(monkeypatch, t
 
     with_files, note = validation_rows()
     assert note is None
+    # an installed wheel (no data/afm/ beside the package) run from the repository root still finds the scans
+    from memstribo import output
+
     monkeypatch.setattr(roughness_rows, "AFM", tmp_path / "no-such-folder")
+    monkeypatch.setattr(output, "__file__", str(tmp_path / "site-packages" / "memstribo" / "output.py"))
+    monkeypatch.chdir(Path(__file__).resolve().parent.parent)
+    from_root, note = validation_rows()
+    assert note is None and len(from_root) == len(with_files)
+    # ... and run anywhere else it leaves those rows out, with a note
+    monkeypatch.chdir(tmp_path)
     rows, note = validation_rows()
     assert "data/afm" in note and "checkout" in note
     assert 0 < len(rows) < len(with_files)

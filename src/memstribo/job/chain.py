@@ -38,7 +38,8 @@ from typing import Any
 import numpy as np
 
 from memstribo.errors import InputError, MemstriboError
-from memstribo.output import atomic_write_text, dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
+from memstribo.output import (atomic_write_text, dumps_json, ensure_directory, save_figure, software_provenance,
+                              to_jsonable, write_dataset)
 
 from memstribo.job.figures import (plot_block_loads, plot_cycle, plot_energy, plot_ensemble, plot_gear, plot_humidity,
                                    plot_map, plot_profiles, plot_sliding, plot_sweep)
@@ -714,7 +715,7 @@ class RunChain:
         log = logging.getLogger("memstribo.run")
         rerun: set[str] = set()
         if self.previous is None:
-            self._write_text("parameters.toml", self.params.to_toml())
+            self._write_text("parameters.toml", _toml_with_provenance(self.params.to_toml()))
         else:  # the kept stages' references stay in references.txt
             earlier = [key for key in self.previous.get("references", []) if key in REFERENCES]
             if earlier:
@@ -780,9 +781,23 @@ class RunChain:
             "elapsed": elapsed, "options": to_jsonable(self.options.__dict__),
             "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
             "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
-            "references": [key for key, _ in references], "kept": list(self.kept)}))
+            "references": [key for key, _ in references], "kept": list(self.kept),
+            "provenance": software_provenance()}))
         write_report(result, self.folder / "report.html", validation)
         return result
+
+
+def _toml_with_provenance(text: str) -> str:
+    """``parameters.toml`` with ``[meta.provenance]``: what ran (:func:`memstribo.output.software_provenance`).
+
+    ``[meta]`` is ignored when the file is read back as a ``--config`` file."""
+    import tomllib
+
+    import tomli_w
+
+    data = tomllib.loads(text)
+    data.setdefault("meta", {})["provenance"] = to_jsonable(software_provenance())
+    return tomli_w.dumps(data)
 
 
 def _map_captions(spec, dataset) -> dict[str, str]:

@@ -85,8 +85,9 @@ def validation_rows() -> tuple[list, str | None]:
     except Exception as exc:  # a topic's rows broke: say so in the page, keep the rest of the report
         return [], f"{type(exc).__name__}: {exc}"
     if not measured_files_available():
-        return rows, ("the rows that read the measured AFM files of data/afm/ are not here: this installation "
-                      "has no checkout of the repository (see docs/validation.md for them)")
+        return rows, ("the rows that read the measured AFM files of data/afm/ are left out: memstribo is installed "
+                      "outside a checkout of the repository and did not run inside one (run it from the checkout's "
+                      "root to include them; docs/validation.md lists them)")
     return rows, None
 
 
