@@ -586,14 +586,18 @@ def dumps_json(value: Any) -> str:
 
 
 # --- readable numbers (CLI tables, report) -------------------------------------------------
-_PREFIXES = [(1e-18, "a"), (1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "u"), (1e-3, "m"), (1.0, ""),
+#: SI prefixes of readable output; micro is "µ" (U+00B5) in text and figures alike (input accepts "u" too)
+_PREFIXES = [(1e-18, "a"), (1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "µ"), (1e-3, "m"), (1.0, ""),
              (1e3, "k"), (1e6, "M"), (1e9, "G"), (1e12, "T")]
 # units that take SI prefixes in readable output
 _PREFIXABLE = {"m", "N", "Pa", "J", "s", "N*m", "N/m", "J/m^2", "W"}
 
 
 def format_quantity(value: float, unit: str = "") -> str:
-    """``2.5e-05, "N"`` -> ``"25 uN"``: a number with an engineering prefix and its unit."""
+    """``2.5e-05, "N"`` -> ``"25 µN"``: a number with an engineering prefix and its unit.
+
+    Angles (``"rad"``) read in degrees: ``0.3491, "rad"`` -> ``"20 deg"``.
+    """
     if value is None:
         return "-"
     unit = "" if unit == "1" else unit  # CF's dimensionless unit reads as a plain number
@@ -606,6 +610,8 @@ def format_quantity(value: float, unit: str = "") -> str:
     value = float(value)
     if not math.isfinite(value):
         return str(value)
+    if unit == "rad":
+        return f"{math.degrees(value):.4g} deg"
     if unit in _PREFIXABLE and value != 0.0:
         magnitude = abs(value)
         factor, prefix = _PREFIXES[0]
@@ -614,6 +620,30 @@ def format_quantity(value: float, unit: str = "") -> str:
                 factor, prefix = f, p
         return f"{value / factor:.4g} {prefix}{unit}"
     return f"{value:.4g} {unit}".rstrip()
+
+
+def engineering_scale(values, unit: str) -> tuple[float, str]:
+    """``(factor, unit text)`` to draw ``values`` [``unit``, SI] as ``values / factor`` on an axis without an offset.
+
+    A unit that takes SI prefixes gets one (``J`` -> ``nJ``, ``Pa`` -> ``GPa``, ``N`` -> ``µN``), chosen from the
+    largest magnitude; another unit (``Pa^2``) gets a power of ten written into the label (``1e18 Pa^2``).
+
+    >>> engineering_scale([5.6e-10, 7.6e-10], "J")
+    (1e-09, 'nJ')
+    """
+    finite = np.abs(np.asarray(values, dtype=float))
+    finite = finite[np.isfinite(finite) & (finite > 0)]
+    if finite.size == 0:
+        return 1.0, unit
+    magnitude = float(finite.max())
+    if unit in _PREFIXABLE:
+        factor, prefix = _PREFIXES[0]
+        for f, p in _PREFIXES:
+            if magnitude >= f * 0.9995:
+                factor, prefix = f, p
+        return factor, f"{prefix}{unit}"
+    exponent = 3 * int(math.floor(math.log10(magnitude) / 3))
+    return (1.0, unit) if exponent == 0 else (10.0 ** exponent, f"1e{exponent} {unit}".strip())
 
 
 def format_value(value: Any, unit: str = "") -> str:

@@ -315,10 +315,19 @@ def _figure_html(folder, number, figure) -> str:
 KEY_FIGURES = ("mesh_bare_ensemble", "mesh_bare_forces_cof", "wear_sweep")
 
 
+def _figure_numbers(result) -> dict[str, int]:
+    """Figure stem -> its number in the page's order: the key figures, the other figures, the design map's."""
+    key = [f for f in result.figures if f.stage != _MAP_STAGE and f.stem in KEY_FIGURES]
+    key.sort(key=lambda f: KEY_FIGURES.index(f.stem))
+    other = [f for f in result.figures if f.stage != _MAP_STAGE and f.stem not in KEY_FIGURES]
+    maps = [f for f in result.figures if f.stage == _MAP_STAGE]
+    return {f.stem: number for number, f in enumerate(key + other + maps, start=1)}
+
+
 def _figures_html(result) -> str:
-    # the design map's figures are in its own section (_design_map_html); numbers count every figure
-    numbered = [(number, figure) for number, figure in enumerate(result.figures, start=1)
-                if figure.stage != _MAP_STAGE]
+    # the design map's figures are in its own section (_design_map_html); numbers follow the page
+    numbers = _figure_numbers(result)
+    numbered = sorted(((numbers[f.stem], f) for f in result.figures if f.stage != _MAP_STAGE), key=lambda p: p[0])
     if not numbered:
         return "<p>No figures: the stages that draw them did not run.</p>"
     key = [_figure_html(result.folder, n, f) for n, f in numbered if f.stem in KEY_FIGURES]
@@ -369,8 +378,9 @@ def _design_map_html(result) -> str:
                      "map.nc says why).</li>")
     items += [f"<li class='note'>{_e(note)}</li>" for note in summary.get("notes", [])]
     parts.append("<ul>" + "".join(items) + "</ul>")
-    parts += [_figure_html(result.folder, number, figure)
-              for number, figure in enumerate(result.figures, start=1) if figure.stage == _MAP_STAGE]
+    numbers = _figure_numbers(result)
+    parts += [_figure_html(result.folder, numbers[figure.stem], figure)
+              for figure in result.figures if figure.stage == _MAP_STAGE]
     return "".join(parts)
 
 
@@ -415,7 +425,7 @@ def _humidity_html(result) -> str:
         items.append(f"<li><b>{_e(part['name'])}</b>: {_e(verdict)} ({_e(part.get('critical_humidity_note', ''))})"
                      "</li>")
     parts.append(f"<ul>{''.join(items)}</ul>")
-    figure = next((i for i, f in enumerate(result.figures, start=1) if f.stem == "humidity_cof_margin"), None)
+    figure = _figure_numbers(result).get("humidity_cof_margin")
     if figure is not None:
         parts.append(f"<p>Figure {figure} draws these curves; the numbers are in <code>data/humidity_sweep.json"
                      "</code>.</p>")
