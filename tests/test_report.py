@@ -274,3 +274,18 @@ def test_validation_rows_without_a_checkout_keep_the_other_topics(monkeypatch, t
     assert 0 < len(rows) < len(with_files)
     assert not any(row.command.startswith("memstribo roughness data/afm/") for row in rows)
     assert {row.topic for row in rows} == {row.topic for row in with_files}
+
+
+def test_uncertainty_hook_shows_under_the_verdict_when_the_run_has_one(tmp_path, params):
+    """summaries['uncertainty'] (an uncertainty stage's output) is shown right after the verdict, escaped."""
+    result = make_result(tmp_path, params)
+    assert "Uncertainty and what the verdict hangs on" not in render_report(result)  # none: nothing shown
+    result.summaries["uncertainty"] = {
+        "summary": "stiction margin -1.2 to -0.8 mN <90 %>", "interval": "COF 0.7 to 0.9",
+        "drivers": [{"name": "hamaker_constant", "effect": "60 % of the variance"}, "roughness_rq & seed"]}
+    text = render_report(result)
+    verdict, uncertainty, figures = (text.index("class='verdict'"), text.index("id='uncertainty'"),
+                                     text.index("<h2>Figures"))
+    assert verdict < uncertainty < figures
+    assert "-1.2 to -0.8 mN &lt;90 %&gt;" in text and "hamaker_constant &mdash; 60 % of the variance" in text
+    assert "roughness_rq &amp; seed" in text and "COF 0.7 to 0.9" in text

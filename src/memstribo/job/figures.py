@@ -212,10 +212,15 @@ def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""
         right.plot(xs, energy / factor, "o-", ms=3)
         right.set_ylabel(f"energy dissipated per cycle [{unit}]")
     else:
-        right.plot(xs, np.asarray(dataset["resisting_force_max"].values) * 1e6, "o-", ms=3,
-                   label="largest resisting force R")
-        right.axhline(tangential_force * 1e6, color="k", lw=0.8, label="F_t")
-        right.set_ylabel("force [µN]")
+        from memstribo.output import engineering_scale
+
+        force = np.asarray(dataset["resisting_force_max"].values, dtype=float)
+        factor, unit = engineering_scale(np.append(force, tangential_force), "N")
+        right.plot(xs, force / factor, "o-", ms=3, label="largest resisting force R")
+        right.plot(xs, np.full_like(xs, tangential_force / factor, dtype=float), "k-", lw=0.8,
+                   label="F_t (stiction where R > F_t)")  # a line that autoscaling keeps inside the axes
+        right.margins(y=0.08)
+        right.set_ylabel(f"force [{unit}]")
         right.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)
     right.set_xlabel(x_label)
     figure.suptitle(title, fontsize=10)
