@@ -467,8 +467,8 @@ def netcdf_encoding(dataset) -> dict[str, dict[str, Any]]:
 
     * coordinate variables get no ``_FillValue`` (CF 2.5.1: a coordinate has no missing values);
     * text variables are written as fixed-length character arrays (``char``, UTF-8, a dimension
-      ``<name>_strlen``) instead of NetCDF-4 variable-length strings, which CF-1.8 does not know;
-      xarray reads them back as ``str``.
+      ``string<N>`` for N bytes) instead of NetCDF-4 variable-length strings, which CF-1.8 does not
+      know; xarray reads them back as ``str`` (a missing entry, ``None``, as ``""``).
 
     64-bit integers are narrowed by :func:`cf_dataset` (CF-1.8 has no ``int64``).
     """
@@ -478,7 +478,7 @@ def netcdf_encoding(dataset) -> dict[str, dict[str, Any]]:
         if name in dataset.coords and variable.dtype.kind in "fc":
             entry["_FillValue"] = None
         if variable.dtype.kind in "UO":
-            entry.update(dtype="S1", char_dim_name=f"{name}_strlen", _Encoding="utf-8")
+            entry.update(dtype="S1", _Encoding="utf-8")  # xarray's own character dimension (string<N>)
             if name in dataset.coords:
                 entry["_FillValue"] = None
         if entry:
