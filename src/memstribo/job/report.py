@@ -506,7 +506,7 @@ def render_report(result, validation=None) -> str:
         "<h2>Inputs and their provenance</h2>", _inputs_html(result),
         _humidity_html(result),
         _design_map_html(result),
-        "<h2>Stages and files</h2><details><summary>The stages with their status, time and datasets</summary>",
+        "<h2>Stages</h2><details><summary>The stages with their status, time and files</summary>",
         _stages_html(result), "</details>",
         "<h2>Validation: thesis against memstribo</h2>", _validation_html(validation),
         "<h2>References used by this run</h2><details><summary>The papers the models of this run cite</summary>",
