@@ -57,13 +57,14 @@ def test_no_command_prints_help(cli):
 def test_format_quantity_handles_every_kind_of_value():
     from memstribo.cli.common import format_quantity, format_value
 
-    assert format_quantity(2.5e-5, "N") == "25 uN"
+    assert format_quantity(2.5e-5, "N") == "25 µN"
     assert format_quantity(195.5e-9, "m") == "195.5 nm"
     assert format_quantity("OTS") == "OTS"
     assert format_quantity(True) == "yes"
     assert format_quantity(None, "N") == "-"
-    assert format_value([36.85e-6, 147.4e-6], "m") == "[36.85 um, 147.4 um]"
+    assert format_value([36.85e-6, 147.4e-6], "m") == "[36.85 µm, 147.4 µm]"
     assert format_value({"corner": 1.0}, "") == "corner: 1"
+    assert format_quantity(0.3490658503988659, "rad") == "20 deg"  # angles read in degrees
 
 
 # --- one --progress auto|on|off on every long command (issue #15) -------------------------------------------------

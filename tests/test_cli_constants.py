@@ -41,7 +41,7 @@ def test_constants_follow_parameter_overrides(cli):
 def test_constants_readable_output_has_units(cli):
     code, out, err = cli("constants")
     assert code == 0
-    assert "GPa" in out and "J/m^2" in out and "uN" in out
+    assert "GPa" in out and "J/m^2" in out and "µN" in out
 
 
 @pytest.mark.parametrize("argv,match", [

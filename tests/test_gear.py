@@ -164,7 +164,10 @@ def test_cli_gear_json(cli):
     assert values["hertz_half_width"] == pytest.approx(43.45e-9, rel=1e-3)
     assert len(values["pitch_radii"]) == 2
     code, out, err = cli("gear")
-    assert code == 0 and "contact_ratio" in out and "um" in out
+    assert code == 0 and "contact_ratio" in out and "µm" in out and " um" not in out
+    assert "pressure_angle          20 deg" in out  # angles in degrees (issue #29), not 0.3491 rad
+    code, out, err = cli("gear", "--set", "pressure_angle=95 deg")
+    assert code == 2 and ">= 10 deg and <= 35 deg" in err
 
 
 def test_cli_gear_set_and_bad_input(cli):

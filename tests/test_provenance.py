@@ -233,3 +233,94 @@ def test_other_commands_write_provenance(cli, tmp_path, argv, expected):
                     assert is_udunits(variable.attrs["units"]), f"{path.name}:{name} {variable.attrs['units']!r}"
     for path in tmp_path.glob("*.csv"):
         assert path.read_text(encoding="utf-8").startswith("# memstribo ")
+
+
+# --- CF compliance (issue #29, item 1) ----------------------------------------------------------
+def cf_check(path: Path, report: Path) -> tuple[bool, str]:
+    """Run the IOOS compliance checker's CF-1.8 suite on ``path`` (strict: any failed check fails);
+    return whether it passed and its text report."""
+    pytest.importorskip("compliance_checker")
+    from compliance_checker.runner import CheckSuite, ComplianceChecker
+
+    import warnings
+
+    with warnings.catch_warnings():  # the checker's own deprecation notes (its SOS plugins) are not ours
+        warnings.simplefilter("ignore", DeprecationWarning)
+        CheckSuite.load_all_available_checkers()
+    passed, errors = ComplianceChecker.run_checker(str(path), ["cf:1.8"], 0, "strict", output_filename=str(report),
+                                                   output_format="text")
+    text = report.read_text(encoding="utf-8")
+    return bool(passed) and not errors, text + (f"\nchecker errors: {errors}" if errors else "")
+
+
+def test_every_netcdf_file_of_a_run_passes_the_cf_checker(run_folder, tmp_path):
+    folder, _, _ = run_folder
+    files = sorted((folder / "data").glob("*.nc"))
+    assert len(files) >= 11
+    failed = {}
+    for path in files:
+        passed, text = cf_check(path, tmp_path / f"{path.stem}.txt")
+        if not passed:
+            failed[path.name] = text[-1500:]
+        import netCDF4  # CF-1.8 (and cfchecks) know no variable-length strings: text is a char array
+
+        with netCDF4.Dataset(path) as raw:
+            for name, variable in raw.variables.items():
+                assert variable.dtype is not str, f"{path.name}:{name} is a variable-length string"
+                assert variable.dtype.kind != "i" or variable.dtype.itemsize <= 4, f"{path.name}:{name} is int64"
+    assert not failed, "\n\n".join(f"{name}:\n{text}" for name, text in failed.items())
+
+
+def test_the_cf_checker_catches_what_it_is_here_for(tmp_path):
+    """The check can fail: int64, a _FillValue on a coordinate and a variable-length string (the
+    encodings of memstribo before issue #29) each fail it; write_dataset's encodings pass it."""
+    dataset = xr.Dataset({"cof": ("step", np.linspace(0.1, 0.5, 3), {"units": "1", "long_name": "COF"}),
+                          "block_flank": ("block", np.array(["pinion", "gear"]), {"long_name": "flank"})},
+                         coords={"step": ("step", np.arange(3, dtype=np.int64), {"long_name": "step", "units": "1"}),
+                                 "x": ("x", np.linspace(0.0, 1.0, 2), {"long_name": "x", "units": "m"})})
+    dataset.attrs = provenance_attributes()
+    plain = tmp_path / "plain.nc"
+    dataset.to_netcdf(plain, format="NETCDF4")  # xarray's defaults
+    passed, text = cf_check(plain, tmp_path / "plain.txt")
+    assert not passed
+    assert "int64" in text and "_FillValue" in text
+    nc, _ = write_dataset(dataset, tmp_path, "ours")
+    passed, text = cf_check(nc, tmp_path / "ours.txt")
+    assert passed, text
+    again = xr.load_dataset(nc)  # and it reads back as it was: text as str, integers as int32
+    assert list(again["block_flank"].values) == ["pinion", "gear"] and again["step"].dtype == np.int32
+    assert "_FillValue" not in again["x"].encoding
+
+
+def test_provenance_names_the_commit_the_command_line_and_the_versions(run_folder, monkeypatch, tmp_path):
+    import platform
+    import subprocess
+
+    from memstribo import output
+
+    folder, _, _ = run_folder
+    head = subprocess.run(["git", "-C", str(REPO), "rev-parse", "HEAD"], capture_output=True, text=True)
+    with xr.open_dataset(folder / "data" / "mesh_bare.nc") as dataset:
+        attrs = dict(dataset.attrs)
+    if head.returncode == 0:
+        assert attrs["git_commit"].split()[0] == head.stdout.strip()
+    assert attrs["command_line"].startswith("memstribo run ") and "--set 'normal_load=30 uN'" in attrs["command_line"]
+    assert attrs["python_version"].startswith(platform.python_version())
+    versions = json.loads(attrs["package_versions"])
+    assert versions["numpy"] == np.__version__ and versions["xarray"] == xr.__version__
+    # the same record in run.json and in parameters.toml's [meta.provenance]
+    import tomllib
+
+    manifest = json.loads((folder / "run.json").read_text())
+    meta = tomllib.loads((folder / "parameters.toml").read_text())["meta"]["provenance"]
+    for record in (manifest["provenance"], meta):
+        assert record["git_commit"] == attrs["git_commit"] and record["command_line"] == attrs["command_line"]
+        assert record["package_versions"] == versions
+    # an installed wheel (the package outside any checkout) run from the repository root finds it;
+    # run elsewhere it says so
+    monkeypatch.setattr(output, "__file__", str(tmp_path / "site-packages" / "memstribo" / "output.py"))
+    monkeypatch.chdir(REPO / "docs")
+    assert output.checkout_root() == REPO
+    monkeypatch.chdir(tmp_path)
+    assert output.checkout_root() is None
+    assert output.git_commit() == "none: not run from a checkout of the repository"

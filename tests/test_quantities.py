@@ -132,5 +132,5 @@ def test_every_numeric_registered_unit_reads_in_text_output():
     from memstribo.output import format_quantity
 
     assert format_quantity(0.25, "1") == "0.25"
-    assert format_quantity(2.5e-5, "N") == "25 uN"
+    assert format_quantity(2.5e-5, "N") == "25 µN"
     assert np.isfinite(len(QUANTITIES)) and len(QUANTITIES) > 150

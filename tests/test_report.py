@@ -111,6 +111,117 @@ def browser_dom(path: Path, profile: Path) -> str:
     return run.stdout
 
 
+#: Injected at the top of <head> of a copy of the page: collects script errors, failed loads and
+#: console.error calls, then (after load) the widths, the height and the images into body[data-probe].
+PROBE = """<script>
+window.__errors = [];
+window.addEventListener('error', function (e) {
+  window.__errors.push('error: ' + (e.message || (e.target && (e.target.src || e.target.href)) || '?')); }, true);
+(function () { var orig = console.error; console.error = function () {
+  window.__errors.push('console.error: ' + Array.prototype.join.call(arguments, ' ')); orig.apply(console, arguments); }; })();
+window.addEventListener('load', function () { setTimeout(function () {
+  var imgs = Array.prototype.slice.call(document.images), d = document.documentElement;
+  document.body.setAttribute('data-probe', JSON.stringify({scrollWidth: d.scrollWidth, innerWidth: window.innerWidth,
+    height: d.scrollHeight, images: imgs.length,
+    broken: imgs.filter(function (i) { return !(i.complete && i.naturalWidth > 0); }).length,
+    errors: window.__errors}));
+}, 100); });
+</script>"""
+
+
+def browser_probe(page: Path, width: int, tmp_path: Path, height: int = 900) -> dict:
+    """Load ``page`` in headless Chromium in a viewport ``width`` CSS px wide; return what PROBE saw.
+
+    The page runs in an iframe of exactly that width (a headless window is at least 500 px wide), so its
+    media queries and its ``innerWidth`` are the phone's. Console messages at error level in
+    Chromium's log count as errors too.
+    """
+    import html
+    import json
+
+    browser = chromium()
+    if browser is None:
+        if os.environ.get("CI", "").lower() == "true":
+            pytest.fail("chromium is not installed, and CI=true: the browser test must run in CI")
+        pytest.skip("chromium is not installed (apt-get install chromium)")
+    text = page.read_text(encoding="utf-8")
+    inner = tmp_path / f"probe-{width}-{page.name}"
+    inner.write_text(text.replace("<head>", "<head>" + PROBE, 1), encoding="utf-8")
+    frame = tmp_path / f"frame-{width}-{page.name}"
+    frame.write_text(f"""<!DOCTYPE html><html><head><meta charset='utf-8'></head><body style='margin:0'>
+<iframe id='f' src='{inner.name}' style='border:0;width:{width}px;height:{height}px'></iframe><script>
+function poll() {{ var d = document.getElementById('f').contentDocument;
+  var v = d && d.body && d.body.getAttribute('data-probe');
+  if (v) {{ document.body.setAttribute('data-probe', v); }} else {{ setTimeout(poll, 50); }} }}
+document.getElementById('f').addEventListener('load', function () {{ setTimeout(poll, 50); }});
+</script></body></html>""", encoding="utf-8")
+    run = subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                          "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-extensions",
+                          "--hide-scrollbars", "--allow-file-access-from-files", f"--window-size={width + 100},{height + 100}",
+                          f"--user-data-dir={tmp_path / f'chromium-{width}'}", "--virtual-time-budget=10000",
+                          "--enable-logging=stderr", "--v=0", "--dump-dom", frame.resolve().as_uri()],
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr[-2000:]
+    match = re.search(r'data-probe="([^"]*)"', run.stdout)
+    assert match, run.stdout[:1000]
+    probe = json.loads(html.unescape(match.group(1)))
+    probe["errors"] += [line for line in run.stderr.splitlines() if ":CONSOLE" in line and "ERROR" in line]
+    return probe
+
+
+def wide_validation_rows(n=80):
+    """Rows as long as the real table's (long commands and notes, no spaces in some)."""
+    rows = [compare("mesh", f"quantity {i} with a long name that wraps", "thesis 4.9.3, Figure 4-46 (about 0.45)",
+                    0.45, 0.5 + i * 1e-3, "", rtol=0.2,
+                    command="memstribo sweep load --values 25uN,300uN --set interface_model=thesis --set "
+                            "contact_adhesion=none --steps 481 --json",
+                    note="data/afm/" + "x" * 120 + f".txt, differs on purpose {i}") for i in range(n)]
+    return rows, None
+
+
+@pytest.fixture(scope="module")
+def run_report(tmp_path_factory):
+    """report.html of a small real run (every stage, few steps), with a validation table as long as the real one."""
+    from memstribo.job.chain import RunChain
+    from memstribo.job.options import options_for_test
+    from memstribo.parameters import get_parameter_values
+
+    out = tmp_path_factory.mktemp("report-run")
+    result = RunChain(get_parameter_values(), out, options_for_test()).run()
+    assert result.ok
+    return result, write_report(result, out / "report-with-table.html", wide_validation_rows())
+
+
+@pytest.mark.browser
+@pytest.mark.parametrize("width", [1280, 390])
+def test_report_reads_at_desktop_and_phone_width(run_report, tmp_path, width):
+    """No sideways scroll, no console error, every image loaded, at a desktop's and a phone's width."""
+    result, page = run_report
+    probe = browser_probe(page, width, tmp_path)
+    assert probe["innerWidth"] == width
+    assert probe["scrollWidth"] <= probe["innerWidth"], probe
+    assert probe["errors"] == [], probe["errors"]
+    assert probe["images"] == len(result.figures) >= 10 and probe["broken"] == 0, probe
+    text = page.read_text(encoding="utf-8")
+    # the verdict first; the long parts folded
+    assert text.index("id='verdict'") < text.index("<h2>Figures") < text.index("Inputs and their provenance")
+    assert "<details id='validation-table'>" in text
+
+
+@pytest.mark.browser
+def test_browser_probe_sees_sideways_scroll_errors_and_broken_images(tmp_path):
+    """The probe is not a formality: a too-wide block, a script error and a broken image are each seen."""
+    page = tmp_path / "bad.html"
+    page.write_text("<!DOCTYPE html><html><head><meta charset='utf-8'>"
+                    "<meta name='viewport' content='width=device-width, initial-scale=1'></head><body>"
+                    "<table><tr><td style='white-space:nowrap'>" + "wide " * 200 + "</td></tr></table>"
+                    "<img src='data:image/png;base64,bm90IGEgcG5n'><script>undefinedFunction();</script>"
+                    "</body></html>", encoding="utf-8")
+    probe = browser_probe(page, 390, tmp_path)
+    assert probe["scrollWidth"] > probe["innerWidth"] == 390
+    assert probe["broken"] == 1 and any("undefinedFunction" in e for e in probe["errors"]), probe
+
+
 @pytest.mark.browser
 def test_every_figure_renders_in_headless_chromium(tmp_path, params):
     result = make_result(tmp_path, params, n_figures=3)
@@ -148,9 +259,33 @@ def test_validation_rows_without_a_checkout_keep_the_other_topics(monkeypatch, t
 
     with_files, note = validation_rows()
     assert note is None
+    # an installed wheel (no data/afm/ beside the package) run from the repository root still finds the scans
+    from memstribo import output
+
     monkeypatch.setattr(roughness_rows, "AFM", tmp_path / "no-such-folder")
+    monkeypatch.setattr(output, "__file__", str(tmp_path / "site-packages" / "memstribo" / "output.py"))
+    monkeypatch.chdir(Path(__file__).resolve().parent.parent)
+    from_root, note = validation_rows()
+    assert note is None and len(from_root) == len(with_files)
+    # ... and run anywhere else it leaves those rows out, with a note
+    monkeypatch.chdir(tmp_path)
     rows, note = validation_rows()
     assert "data/afm" in note and "checkout" in note
     assert 0 < len(rows) < len(with_files)
     assert not any(row.command.startswith("memstribo roughness data/afm/") for row in rows)
     assert {row.topic for row in rows} == {row.topic for row in with_files}
+
+
+def test_uncertainty_hook_shows_under_the_verdict_when_the_run_has_one(tmp_path, params):
+    """summaries['uncertainty'] (an uncertainty stage's output) is shown right after the verdict, escaped."""
+    result = make_result(tmp_path, params)
+    assert "Uncertainty and what the verdict hangs on" not in render_report(result)  # none: nothing shown
+    result.summaries["uncertainty"] = {
+        "summary": "stiction margin -1.2 to -0.8 mN <90 %>", "interval": "COF 0.7 to 0.9",
+        "drivers": [{"name": "hamaker_constant", "effect": "60 % of the variance"}, "roughness_rq & seed"]}
+    text = render_report(result)
+    verdict, uncertainty, figures = (text.index("class='verdict'"), text.index("id='uncertainty'"),
+                                     text.index("<h2>Figures"))
+    assert verdict < uncertainty < figures
+    assert "-1.2 to -0.8 mN &lt;90 %&gt;" in text and "hamaker_constant &mdash; 60 % of the variance" in text
+    assert "roughness_rq &amp; seed" in text and "COF 0.7 to 0.9" in text

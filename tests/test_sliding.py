@@ -173,7 +173,7 @@ def test_cli_text_and_out(cli, tmp_path, afm_dir):
     code, out, err = cli("slide", "--model", "fixed-load", "--profile", afm_dir / "si_profile_linescan.txt",
                          "--distance", "100 nm", "--out", tmp_path)
     assert code == 0, err
-    assert "cof" in out and "uN" in out
+    assert "cof" in out and "µN" in out
     for name in ("slide.nc", "slide_steps.csv", "slide_cof.png", "slide_cof.svg", "slide_shrink.png"):
         assert (tmp_path / name).is_file(), name
     import xarray as xr

@@ -96,7 +96,9 @@ def write_dataset(dataset, folder: str | Path, stem: str, csv: bool = True, *,
     """
     folder = ensure_directory(folder)
     dataset = cf_dataset(dataset, provenance)
-    written = [_atomic_write(folder / f"{stem}.nc", lambda tmp: dataset.to_netcdf(tmp, format="NETCDF4"))]
+    encoding = netcdf_encoding(dataset)
+    written = [_atomic_write(folder / f"{stem}.nc",
+                             lambda tmp: dataset.to_netcdf(tmp, format="NETCDF4", encoding=encoding))]
     if csv:
         frame = _table(dataset).to_dataframe()
         frame.columns = [_column_label(dataset, name) for name in frame.columns]
@@ -206,6 +208,121 @@ def _leading_file(source: str) -> Path | None:
     return None
 
 
+#: Packages whose versions every provenance record names (the ones whose behaviour moves the numbers).
+KEY_PACKAGES = ("numpy", "scipy", "numba", "xarray", "netCDF4", "SurfaceTopography", "matplotlib", "pint")
+
+
+def _is_checkout(folder: Path) -> bool:
+    """Whether ``folder`` is the root of a memstribo source tree (its pyproject.toml names memstribo)."""
+    try:
+        text = (folder / "pyproject.toml").read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return False
+    return re.search(r'^name\s*=\s*"memstribo"\s*$', text, re.MULTILINE) is not None
+
+
+def checkout_root(cwd: str | Path | None = None) -> Path | None:
+    """The root of the memstribo source tree in use, or None.
+
+    The tree the package was imported from (an editable install or ``PYTHONPATH=src``) comes first;
+    otherwise the current folder or one above it, when it is a memstribo checkout (a wheel installed
+    with ``pip install .`` and run from the repository root). This is what finds ``data/afm/`` and
+    the git commit.
+    """
+    package = Path(__file__).resolve().parents[2]
+    if _is_checkout(package):
+        return package
+    here = Path(cwd) if cwd is not None else Path.cwd()
+    for folder in (here, *here.parents):
+        if _is_checkout(folder):
+            return folder
+    return None
+
+
+_GIT_CACHE: dict[str, str] = {}
+
+
+def git_commit(root: str | Path | None = None) -> str:
+    """The git commit of the checkout at ``root`` (default :func:`checkout_root`), as text.
+
+    ``"<40 hex digits>"``, with ``" (uncommitted changes)"`` appended when tracked files differ from
+    it; ``"none: not run from a checkout of the repository"`` or ``"none: <why>"`` otherwise.
+    """
+    import subprocess
+
+    root = Path(root) if root is not None else checkout_root()
+    if root is None:
+        return "none: not run from a checkout of the repository"
+    key = str(root)
+    if key not in _GIT_CACHE:
+        try:
+            head = subprocess.run(["git", "-C", key, "rev-parse", "HEAD"], capture_output=True, text=True,
+                                  timeout=10)
+            if head.returncode != 0 or not re.fullmatch(r"[0-9a-f]{40}", head.stdout.strip()):
+                _GIT_CACHE[key] = "none: the checkout has no git history here"
+            else:
+                dirty = subprocess.run(["git", "-C", key, "status", "--porcelain", "--untracked-files=no"],
+                                       capture_output=True, text=True, timeout=10).stdout.strip()
+                _GIT_CACHE[key] = head.stdout.strip() + (" (uncommitted changes)" if dirty else "")
+        except (OSError, subprocess.SubprocessError):
+            _GIT_CACHE[key] = "none: git is not available"
+    return _GIT_CACHE[key]
+
+
+def package_versions(names=KEY_PACKAGES) -> dict[str, str]:
+    """Installed version of each package in ``names`` ("not installed" when absent)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    out = {}
+    for name in names:
+        try:
+            out[name] = version(name)
+        except PackageNotFoundError:
+            out[name] = "not installed"
+    return out
+
+
+_COMMAND_LINE: list[str] | None = None
+
+
+def set_command_line(argv) -> None:
+    """Record the command line of this process (the CLI's ``main`` calls it with ``["memstribo", *args]``)."""
+    global _COMMAND_LINE
+    _COMMAND_LINE = [str(a) for a in argv]
+
+
+def command_line(argv=None) -> str:
+    """The command line that runs, shell-quoted: ``argv``, else the one :func:`set_command_line` recorded,
+    else ``sys.argv`` (the program shown as ``memstribo`` when it is the CLI)."""
+    import shlex
+    import sys
+
+    argv = list(argv if argv is not None else _COMMAND_LINE if _COMMAND_LINE is not None else sys.argv)
+    if not argv or argv == [""] or argv[0] in ("-c", "-"):
+        return "python (no command line: called from Python)"
+    program = Path(argv[0]).name
+    if program in ("memstribo", "main.py", "__main__.py", "-m"):
+        program = "memstribo"
+    return " ".join([program, *(shlex.quote(str(a)) for a in argv[1:])])
+
+
+def software_provenance() -> dict[str, Any]:
+    """What ran: memstribo version, git commit (from a checkout), command line, Python and package versions.
+
+    Returns
+    -------
+    dict
+        ``memstribo_version``, ``git_commit`` (see :func:`git_commit`), ``command_line`` (see
+        :func:`command_line`), ``python_version`` (``platform.python_version()``, implementation) and
+        ``package_versions`` (name -> version of :data:`KEY_PACKAGES`).
+    """
+    import platform
+
+    return {"memstribo_version": _version(), "git_commit": git_commit(), "command_line": command_line(),
+            "python_version": f"{platform.python_version()} ({platform.python_implementation()})",
+            "package_versions": package_versions()}
+
+
 def provenance_attributes(params=None, *, roughness=None, extra: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """Global attributes saying what made a file: version, time, parameters, load case, roughness.
 
@@ -227,7 +344,9 @@ def provenance_attributes(params=None, *, roughness=None, extra: Mapping[str, An
     dict
         Attribute name -> str, int or float, ready for NetCDF: ``Conventions``
         (``"CF-1.8"``), ``title``, ``source``, ``history``, ``date_created`` (ISO 8601,
-        UTC), ``memstribo_version``, ``references``, ``models_cited``, and the above.
+        UTC), ``memstribo_version``, ``references``, ``models_cited``, ``git_commit``,
+        ``command_line``, ``python_version``, ``package_versions`` (JSON text; see
+        :func:`software_provenance`), and the above.
     """
     from memstribo.references import used_references
 
@@ -244,6 +363,7 @@ def provenance_attributes(params=None, *, roughness=None, extra: Mapping[str, An
                       "gear microelectromechanical systems', PhD thesis, Cardiff University; see models_cited "
                       "and memstribo.references.REFERENCES",
         "models_cited": ", ".join(key for key, _ in used_references()) or "none recorded",
+        **software_provenance(),
     }
     if params is not None:
         attrs.update(_parameter_attributes(params))
@@ -307,7 +427,8 @@ def _netcdf_attributes(attrs: Mapping[str, Any]) -> dict[str, Any]:
 
 
 #: Attributes that always say when and by what the file was written (never the dataset's own).
-_FIXED = ("Conventions", "date_created", "history", "memstribo_version")
+_FIXED = ("Conventions", "date_created", "history", "memstribo_version", "git_commit", "command_line",
+          "python_version", "package_versions")
 
 
 def cf_dataset(dataset, provenance: Mapping[str, Any] | None = None):
@@ -316,6 +437,11 @@ def cf_dataset(dataset, provenance: Mapping[str, Any] | None = None):
     from memstribo.quantities import known, quantity
 
     dataset = dataset.copy(deep=False)
+    narrowed = {name: _cf_integer(variable, name) for name, variable in dataset.variables.items()}
+    narrowed = {name: v for name, v in narrowed.items() if v is not dataset.variables[name]}
+    if narrowed:
+        dataset = dataset.assign({n: v for n, v in narrowed.items() if n not in dataset.coords})
+        dataset = dataset.assign_coords({n: v for n, v in narrowed.items() if n in dataset.coords})
     for name in list(dataset.variables):
         variable = dataset.variables[name]
         attrs = dict(variable.attrs)
@@ -334,6 +460,41 @@ def cf_dataset(dataset, provenance: Mapping[str, Any] | None = None):
     own = _netcdf_attributes(dataset.attrs)
     dataset.attrs = {**provenance, **{k: v for k, v in own.items() if k not in _FIXED}}
     return dataset
+
+
+def netcdf_encoding(dataset) -> dict[str, dict[str, Any]]:
+    """Per-variable NetCDF encodings that the CF checkers accept (CF-1.8 section 2.2 and 2.5.1).
+
+    * coordinate variables get no ``_FillValue`` (CF 2.5.1: a coordinate has no missing values);
+    * text variables are written as fixed-length character arrays (``char``, UTF-8, a dimension
+      ``string<N>`` for N bytes) instead of NetCDF-4 variable-length strings, which CF-1.8 does not
+      know; xarray reads them back as ``str`` (a missing entry, ``None``, as ``""``).
+
+    64-bit integers are narrowed by :func:`cf_dataset` (CF-1.8 has no ``int64``).
+    """
+    encoding: dict[str, dict[str, Any]] = {}
+    for name, variable in dataset.variables.items():
+        entry: dict[str, Any] = {}
+        if name in dataset.coords and variable.dtype.kind in "fc":
+            entry["_FillValue"] = None
+        if variable.dtype.kind in "UO":
+            entry.update(dtype="S1", _Encoding="utf-8")  # xarray's own character dimension (string<N>)
+            if name in dataset.coords:
+                entry["_FillValue"] = None
+        if entry:
+            encoding[str(name)] = entry
+    return encoding
+
+
+def _cf_integer(variable, name):
+    """``variable`` with a 64-bit integer dtype narrowed to ``int32`` (CF-1.8 knows no ``int64``)."""
+    if variable.dtype.kind not in "iu" or variable.dtype.itemsize < 8:
+        return variable
+    values = np.asarray(variable.values)
+    info = np.iinfo(np.int32)
+    if values.size and (values.min() < info.min or values.max() > info.max):
+        raise ValueError(f"integer variable {name!r} does not fit a 32-bit integer (CF-1.8 has no int64)")
+    return variable.astype(np.int32)
 
 
 def _csv_header(dataset, name: str, twin: str) -> str:
@@ -425,14 +586,18 @@ def dumps_json(value: Any) -> str:
 
 
 # --- readable numbers (CLI tables, report) -------------------------------------------------
-_PREFIXES = [(1e-18, "a"), (1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "u"), (1e-3, "m"), (1.0, ""),
+#: SI prefixes of readable output; micro is "µ" (U+00B5) in text and figures alike (input accepts "u" too)
+_PREFIXES = [(1e-18, "a"), (1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "µ"), (1e-3, "m"), (1.0, ""),
              (1e3, "k"), (1e6, "M"), (1e9, "G"), (1e12, "T")]
 # units that take SI prefixes in readable output
 _PREFIXABLE = {"m", "N", "Pa", "J", "s", "N*m", "N/m", "J/m^2", "W"}
 
 
 def format_quantity(value: float, unit: str = "") -> str:
-    """``2.5e-05, "N"`` -> ``"25 uN"``: a number with an engineering prefix and its unit."""
+    """``2.5e-05, "N"`` -> ``"25 µN"``: a number with an engineering prefix and its unit.
+
+    Angles (``"rad"``) read in degrees: ``0.3491, "rad"`` -> ``"20 deg"``.
+    """
     if value is None:
         return "-"
     unit = "" if unit == "1" else unit  # CF's dimensionless unit reads as a plain number
@@ -445,6 +610,8 @@ def format_quantity(value: float, unit: str = "") -> str:
     value = float(value)
     if not math.isfinite(value):
         return str(value)
+    if unit == "rad":
+        return f"{math.degrees(value):.4g} deg"
     if unit in _PREFIXABLE and value != 0.0:
         magnitude = abs(value)
         factor, prefix = _PREFIXES[0]
@@ -453,6 +620,30 @@ def format_quantity(value: float, unit: str = "") -> str:
                 factor, prefix = f, p
         return f"{value / factor:.4g} {prefix}{unit}"
     return f"{value:.4g} {unit}".rstrip()
+
+
+def engineering_scale(values, unit: str) -> tuple[float, str]:
+    """``(factor, unit text)`` to draw ``values`` [``unit``, SI] as ``values / factor`` on an axis without an offset.
+
+    A unit that takes SI prefixes gets one (``J`` -> ``nJ``, ``Pa`` -> ``GPa``, ``N`` -> ``µN``), chosen from the
+    largest magnitude; another unit (``Pa^2``) gets a power of ten written into the label (``1e18 Pa^2``).
+
+    >>> engineering_scale([5.6e-10, 7.6e-10], "J")
+    (1e-09, 'nJ')
+    """
+    finite = np.abs(np.asarray(values, dtype=float))
+    finite = finite[np.isfinite(finite) & (finite > 0)]
+    if finite.size == 0:
+        return 1.0, unit
+    magnitude = float(finite.max())
+    if unit in _PREFIXABLE:
+        factor, prefix = _PREFIXES[0]
+        for f, p in _PREFIXES:
+            if magnitude >= f * 0.9995:
+                factor, prefix = f, p
+        return factor, f"{prefix}{unit}"
+    exponent = 3 * int(math.floor(math.log10(magnitude) / 3))
+    return (1.0, unit) if exponent == 0 else (10.0 ** exponent, f"1e{exponent} {unit}".strip())
 
 
 def format_value(value: Any, unit: str = "") -> str:

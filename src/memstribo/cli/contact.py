@@ -102,7 +102,7 @@ def contact_problem(args, params):
         raise InputError(
             f"the grid is too coarse for this contact: the element width {dx * 1e9:.4g} nm gives only "
             f"{elements:.3g} elements across the Hertz width 2a = {2 * half_width * 1e9:.4g} nm (R = "
-            f"{radius * 1e6:.4g} um, w = {load:.4g} N/m, E* = {modulus / 1e9:.4g} GPa); at least "
+            f"{radius * 1e6:.4g} µm, w = {load:.4g} N/m, E* = {modulus / 1e9:.4g} GPa); at least "
             f"{MIN_ELEMENTS_ACROSS} are needed: use a finer profile or more --points")
     if length < 4.0 * half_width:
         raise InputError(f"the domain ({length * 1e9:.4g} nm) is shorter than twice the Hertz width 2a = "
@@ -146,7 +146,7 @@ def run(args, params):
     p0 = float(hertz_line_peak_pressure(load, radius, modulus))
     notes = [
         f"  {label}; {'periodic' if args.periodic else 'free-boundary'} half-plane, E* = {modulus / 1e9:.4g} GPa, "
-        f"R = {radius * 1e6:.4g} um.",
+        f"R = {radius * 1e6:.4g} µm.",
         f"  smooth Hertz reference: contact length 2a = {2 * a * 1e9:.4g} nm, peak pressure p0 = {p0 / 1e9:.4g} GPa.",
         f"  approach relative to the far-field datum at the domain length {separation.size * dx * 1e9:.4g} nm "
         "(docs/contact.md)." if not args.periodic else "  approach relative to a zero mean elastic displacement.",
@@ -211,7 +211,7 @@ def run_adhesion(args, params):
     law = {"cohesive_stress": sigma0, "cohesive_range": h0, "work_of_adhesion": w, "maugis_parameter": lam}
     law_note = (f"  Maugis-Dugdale law: sigma0 = {sigma0 / 1e9:.4g} GPa over h0 = {h0 * 1e9:.4g} nm "
                 f"(w = {w:.4g} J/m^2); "
-                f"Maugis parameter lambda = 2 sigma0 (R/(pi w E*^2))^(1/3) = {lam:.3g} (R = {radius * 1e6:.4g} um, "
+                f"Maugis parameter lambda = 2 sigma0 (R/(pi w E*^2))^(1/3) = {lam:.3g} (R = {radius * 1e6:.4g} µm, "
                 f"E* = {modulus / 1e9:.4g} GPa).")
 
     if args.pull_off:
@@ -376,7 +376,7 @@ def surface_problem(args):
     dx, dy = size[0] / nx, size[1] / ny
     heights = heights - heights.mean()
     label = (f"surface '{name}' ({source}), {nx} x {ny} elements of {dx * 1e9:.4g} nm x {dy * 1e9:.4g} nm "
-             f"({size[0] * 1e6:.4g} um x {size[1] * 1e6:.4g} um)")
+             f"({size[0] * 1e6:.4g} µm x {size[1] * 1e6:.4g} µm)")
     return heights, dx, dy, label
 
 
@@ -440,7 +440,7 @@ def write_surface_outputs(solution, folder):
                    vmin=0.0, vmax=1.0)
     axes[1].set_title(f"contact (black), A/A0 = {solution.contact_fraction:.3g}")
     for axis in axes:
-        axis.set_xlabel("x [um]")
-        axis.set_ylabel("y [um]")
+        axis.set_xlabel("x [µm]")
+        axis.set_ylabel("y [µm]")
     written += save_figure(figure, folder, "surface_contact", formats=("png",))
     return written

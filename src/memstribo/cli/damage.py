@@ -205,7 +205,7 @@ def _stress_figures(params, outcome, folder):
             continue
         load = float(loads[top][mask].max())
         ax1.plot(x * 1e9, power_law_pressure(np.abs(x), load, d, b, modulus) / 1e9, style,
-                 label=f"{position} ({load * 1e6:.3g} uN)")
+                 label=f"{position} ({load * 1e6:.3g} µN)")
         tau = principal_shear_profile(x, load, d, b, modulus, params["asperity_friction_coefficient"],
                                       params["poisson_ratio"])
         ax2.plot(x * 1e9, tau / 1e9, style, label=position)
@@ -223,7 +223,7 @@ def _stress_figures(params, outcome, folder):
     for load, style in zip(picks, ("r-", "g-", "b-")):
         tau = principal_shear_profile(x, float(load), d, b, modulus, params["asperity_friction_coefficient"],
                                       params["poisson_ratio"])
-        ax.plot(x * 1e9, tau / 1e9, style, label=f"{load * 1e6:.3g} uN")
+        ax.plot(x * 1e9, tau / 1e9, style, label=f"{load * 1e6:.3g} µN")
     ax.set_xlabel("x along sliding through the asperity centre [nm]")
     ax.set_ylabel("tau_1 [GPa]")
     ax.set_title("corner asperity at several loads (thesis Figure 5-21)")

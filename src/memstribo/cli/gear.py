@@ -46,7 +46,7 @@ def run(args, params):
     notes = [
         f"  pressure angle {math.degrees(values['pressure_angle']):.4g} deg; radii as [pinion, gear]; positions c on "
         "the line of action, 0 at the pitch point.",
-        f"  Hertz line contact at the pitch point under normal_load = {params['normal_load'] * 1e6:.4g} uN "
+        f"  Hertz line contact at the pitch point under normal_load = {params['normal_load'] * 1e6:.4g} µN "
         "(Eqs. 4-22..4-26); the thesis prints a = 58.9 nm, which does not follow from its inputs.",
         "  design checks (ISO 21771:2007): pointed teeth (tip thickness s_a <= 0), undercut, interference and a "
         "contact ratio below 1 are refused; s_a < 0.25 m and a contact ratio below 1.2 are warned about.",

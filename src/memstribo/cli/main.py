@@ -108,6 +108,9 @@ def main(argv: list[str] | None = None) -> int:
     # peak memory grew from 12 to 16 GB with it (memstribo damage --json, 2026-11-23); opt-in for benchmarks.
     parser = build_parser()
     args = parser.parse_args(argv)
+    from memstribo.output import set_command_line  # provenance: the command line in every file written
+
+    set_command_line(["memstribo", *(sys.argv[1:] if argv is None else argv)])
     if not getattr(args, "handler", None):
         parser.print_help()
         return EXIT_USAGE

@@ -28,7 +28,7 @@ def register(subparsers, parents):
         description=HELP + ". The rough contact is solved at every step along the whole path of contact with the "
         "load-sharing function; nanoblocks tile both flanks, every row with its own roughness. The default load case "
         "'torque' loads the teeth with F_n = F_t / cos(alpha) from the drive torque; '--load-case thesis' uses "
-        "normal_load (25 uN). The verdict compares F_t with R(c), the friction of all pairs in mesh.")
+        "normal_load (25 µN). The verdict compares F_t with R(c), the friction of all pairs in mesh.")
     add_common_arguments(parser)
     parser.add_argument("--realisations", type=int, metavar="N",
                         help="independent roughness realisations: the verdict as a stiction probability with "
@@ -57,7 +57,7 @@ def add_common_arguments(parser):
                              "(default), y = the map's columns")
     parser.add_argument("--load-case", choices=("torque", "thesis"),
                         help="normal load: 'torque' (F_t / cos alpha from the drive torque, default) or 'thesis' "
-                             "(normal_load as given, 25 uN); sets the parameter load_case")
+                             "(normal_load as given, 25 µN); sets the parameter load_case")
     parser.add_argument("--wear", type=float, default=1.0, metavar="OMEGA",
                         help="worn fraction of the gear's coating, 0..1 (with --coating; default 1 = bare)")
     add_progress_argument(parser)
@@ -192,13 +192,13 @@ def plot_cycle(dataset, folder) -> list:
 
     def axes(title, ylabel):
         figure, ax = new_figure(figsize=(6.4, 3.6))
-        ax.set_xlabel("position on the line of action c [um] (0: pitch point)")
+        ax.set_xlabel("position on the line of action c [µm] (0: pitch point)")
         ax.set_ylabel(ylabel)
         ax.set_title(title, fontsize=10)
         ax.axvline(0.0, color="0.6", lw=0.8, ls=":")
         return figure, ax
 
-    figure, ax = axes("Resisting force and drive over the meshing cycle", "force [uN]")
+    figure, ax = axes("Resisting force and drive over the meshing cycle", "force [µN]")
     ax.plot(c, dataset["friction_force_instantaneous"] * 1e6, lw=0.5, color="0.7", label="F_f of the pair, per step")
     ax.plot(c, dataset["friction_force"] * 1e6, lw=0.9, label="F_f of the pair (averaged over one atomic pitch)")
     ax.plot(c, dataset["resisting_force"] * 1e6, lw=1.2, color="C3", label="R(c): friction of all pairs in mesh")
@@ -206,7 +206,7 @@ def plot_cycle(dataset, folder) -> list:
     ax.legend(fontsize=7)
     written += save_figure(figure, folder, "mesh_friction_force")
 
-    figure, ax = axes("Adhesion force over the meshing cycle", "force [uN]")
+    figure, ax = axes("Adhesion force over the meshing cycle", "force [µN]")
     ax.plot(c, dataset["adhesion_force"] * 1e6, lw=0.9, label="adhesion force F_adh")
     ax.plot(c, dataset["normal_force"] * 1e6, lw=0.9, ls="--", label="normal force F_N")
     ax.legend(fontsize=8)

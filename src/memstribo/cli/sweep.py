@@ -106,7 +106,7 @@ def run(args, params):
              f"{'F_adh mean':>11} {'energy':>10} {'margin':>10} {'efficiency':>10}"
              + (f" {'P(stiction)':>11}" if args.realisations > 1 else "")]
     for p in points:
-        swept = (f"{p['normal_load'] * 1e6:.4g} uN" if args.parameter == "load" else
+        swept = (f"{p['normal_load'] * 1e6:.4g} µN" if args.parameter == "load" else
                  f"RH {p['relative_humidity']:.2f}" if args.parameter == "humidity" else
                  f"{p['drive_torque']:.3g} N m" if args.parameter == "torque" else f"{p['area_multiple']} A_adh")
         lines.append(f"  {swept:>13} {p['cof_mean']:9.4g} {p['cof_chemical']:9.4g} {p['cof_vdw']:9.4g} "
@@ -153,7 +153,7 @@ def _write(parameter, points, folder, provenance=None, critical=None) -> list[st
                 dataset.attrs[key] = np.nan if value is None else value
     written = write_dataset(dataset, folder, f"sweep_{parameter}", provenance=provenance)
     x = coordinate * (1e6 if parameter == "load" else 1.0)
-    xlabel = {"load": "external load [uN]", "torque": "drive torque [N m]", "humidity": "relative humidity [-]",
+    xlabel = {"load": "external load [µN]", "torque": "drive torque [N m]", "humidity": "relative humidity [-]",
               "area": "nominal contact area [A_adh]"}[parameter]
     figure, ax = new_figure(figsize=(5.6, 3.6))
     ax.plot(x, dataset["cof_mean"], "o-", label="COF (cycle mean)")

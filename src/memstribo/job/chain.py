@@ -38,7 +38,8 @@ from typing import Any
 import numpy as np
 
 from memstribo.errors import InputError, MemstriboError
-from memstribo.output import atomic_write_text, dumps_json, ensure_directory, save_figure, to_jsonable, write_dataset
+from memstribo.output import (atomic_write_text, dumps_json, ensure_directory, format_quantity, save_figure,
+                              software_provenance, to_jsonable, write_dataset)
 
 from memstribo.job.figures import (plot_block_loads, plot_cycle, plot_energy, plot_ensemble, plot_gear, plot_humidity,
                                    plot_map, plot_profiles, plot_sliding, plot_sweep)
@@ -131,6 +132,25 @@ def _sweep_dataset(dimension, values, unit, long_name, summaries):
             if all(key in s and isinstance(s[key], (int, float, np.number)) for s in summaries)}
     return xr.Dataset(data, coords={dimension: (dimension, np.asarray(values, dtype=float),
                                                 {"units": unit, "long_name": long_name})})
+
+
+def _cof_above_one(dataset, x, x_text) -> str:
+    """A caption's sentence saying why a sweep's mean COF exceeds 1 (e.g. 2.41 at 25 µN), or ""."""
+    if "cof_mean" not in dataset:
+        return ""
+    cof = np.asarray(dataset["cof_mean"].values, dtype=float)
+    if not np.any(np.isfinite(cof)) or np.nanmax(cof) <= 1.0:
+        return ""
+    i = int(np.nanargmax(cof))
+    parts = [(name, float(dataset[name].values[i])) for name in ("cof_chemical", "cof_vdw", "cof_elastic")
+             if name in dataset]
+    largest = max(parts, key=lambda p: p[1]) if parts else None
+    share = (f"; {largest[0].replace('cof_', '').replace('vdw', 'van der Waals')} bonds give {largest[1]:.3g} of it"
+             if largest else "")
+    return (f" The mean COF reaches {cof[i]:.3g} at {x_text(float(dataset[x].values[i]))}{share}. A COF above 1 is "
+            "no error: the apparent COF is the energy of the bonds broken per sliding distance divided by the load "
+            "F_N + F_adh (Eq. 3-7), and the number of bonds (set by the contact area) falls more slowly than the load, "
+            "so at light loads the ratio exceeds 1 (the thesis's COF also falls with load, 4.9.3).")
 
 
 def _columns(dataset) -> dict[str, list]:
@@ -493,7 +513,8 @@ class RunChain:
         self._figure(plot_cycle(dataset, self._tangential_force(), "bare silicon"), "mesh_bare_forces_cof",
                      "Bare silicon meshing cycle (first roughness realisation): the resisting force R(c) of all pairs "
                      "in mesh against F_t, the friction of one pair, adhesion and normal force (top), COF and its "
-                     "chemical / vdW / elastic split (bottom).")
+                     "chemical / vdW / elastic split (" + ("middle), and the instantaneous mesh efficiency with its "
+                     "mean over a mesh period (bottom)." if "mesh_efficiency" in dataset else "bottom)."))
         if "ensemble" in self.results:
             self._figure(plot_ensemble(self.results["ensemble"], summary["tangential_force"]), "mesh_bare_ensemble",
                          f"Stiction margin and mean COF of {count} independent roughness realisations (5-95 % band "
@@ -510,8 +531,10 @@ class RunChain:
         self._dataset(dataset, "load_sweep")
         self.summaries["load_sweep"] = _columns(dataset)
         self._figure(plot_sweep(dataset, "normal_load", "external load [µN]", 1e6, title="bare silicon"),
-                     "load_sweep", "Time-mean COF, its energy split, and energy dissipated per meshing cycle versus "
-                     "external load (thesis 4.9.3, Figures 4-48 and 4-49).")
+                     "load_sweep", "Time-mean COF and its split into chemical, van der Waals and elastic parts "
+                     "(left), and the energy dissipated per meshing cycle (right) versus external load (thesis 4.9.3, "
+                     "Figures 4-48 and 4-49)." + _cof_above_one(dataset, "normal_load",
+                                                               lambda v: format_quantity(v, "N")))
 
     def area_sweep(self):
         """COF and energy versus nominal contact area, in multiples of A_adh = w_adh^2 (4.9.4).
@@ -526,8 +549,10 @@ class RunChain:
         self._dataset(dataset, "area_sweep")
         self.summaries["area_sweep"] = _columns(dataset)
         self._figure(plot_sweep(dataset, "area_multiple", "nominal area [A_adh]", title="bare silicon"),
-                     "area_sweep", "Time-mean COF, its energy split, and energy dissipated per meshing cycle versus "
-                     "nominal contact area (face width = k w_adh; thesis 4.9.4, Figures 4-49 and 4-50).")
+                     "area_sweep", "Time-mean COF and its split into chemical, van der Waals and elastic parts "
+                     "(left), and the energy dissipated per meshing cycle (right) versus nominal contact area (face "
+                     "width = k w_adh; thesis 4.9.4, Figures 4-49 and 4-50)."
+                     + _cof_above_one(dataset, "area_multiple", lambda v: f"k = {v:g}"))
 
     def coated(self):
         """The coated pair, fully functionalised (Omega = 0; thesis 5.4)."""
@@ -537,7 +562,10 @@ class RunChain:
         self.summaries["coated"] = cycle_summary(dataset)
         self._figure(plot_cycle(dataset, self._tangential_force(), f"{self.options.coating}-coated, Omega = 0"),
                      "mesh_coated_forces_cof", f"Meshing cycle of the {self.options.coating}-coated pair "
-                     "(no chemical bonds): forces against F_t and the COF split.")
+                     "(no chemical bonds, Omega = 0): the resisting force R(c) of all pairs in mesh against F_t, the "
+                     "friction of one pair, adhesion and normal force (top), COF and its vdW / elastic split ("
+                     + ("middle), and the instantaneous mesh efficiency with its mean over a mesh period (bottom)."
+                        if "mesh_efficiency" in dataset else "bottom)."))
         if "block_load" in dataset:
             self._figure(plot_block_loads(dataset, f"{self.options.coating}-coated pair, Omega = 0"),
                          "mesh_coated_block_loads", "Normal load of every nanoblock of both flanks over the meshing "
@@ -556,7 +584,8 @@ class RunChain:
         self._figure(plot_sweep(dataset, "wear", "worn fraction Omega [%]", 100.0, self._tangential_force(),
                                 title=self.options.coating), "wear_sweep",
                      "COF and its split (left), and the largest resisting force R over the cycle against F_t (right) "
-                     "versus the worn fraction Omega of the gear's coating (thesis 5.5.3, Figure 5-28).")
+                     "versus the worn fraction Omega of the gear's coating (thesis 5.5.3, Figure 5-28)."
+                     + _cof_above_one(dataset, "wear", lambda v: f"Omega = {v * 100:.0f} %"))
 
     def damage(self):
         """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
@@ -714,7 +743,7 @@ class RunChain:
         log = logging.getLogger("memstribo.run")
         rerun: set[str] = set()
         if self.previous is None:
-            self._write_text("parameters.toml", self.params.to_toml())
+            self._write_text("parameters.toml", _toml_with_provenance(self.params.to_toml()))
         else:  # the kept stages' references stay in references.txt
             earlier = [key for key in self.previous.get("references", []) if key in REFERENCES]
             if earlier:
@@ -780,9 +809,23 @@ class RunChain:
             "elapsed": elapsed, "options": to_jsonable(self.options.__dict__),
             "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
             "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
-            "references": [key for key, _ in references], "kept": list(self.kept)}))
+            "references": [key for key, _ in references], "kept": list(self.kept),
+            "provenance": software_provenance()}))
         write_report(result, self.folder / "report.html", validation)
         return result
+
+
+def _toml_with_provenance(text: str) -> str:
+    """``parameters.toml`` with ``[meta.provenance]``: what ran (:func:`memstribo.output.software_provenance`).
+
+    ``[meta]`` is ignored when the file is read back as a ``--config`` file."""
+    import tomllib
+
+    import tomli_w
+
+    data = tomllib.loads(text)
+    data.setdefault("meta", {})["provenance"] = to_jsonable(software_provenance())
+    return tomli_w.dumps(data)
 
 
 def _map_captions(spec, dataset) -> dict[str, str]:

@@ -8,6 +8,12 @@ import math
 import numpy as np
 
 
+def _legend(ax, **kwargs):
+    """A legend outside the axes, to their right: it hides no curve (the saved figure grows to hold it)."""
+    ax.legend(fontsize=kwargs.pop("fontsize", 8), loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0,
+              **kwargs)
+
+
 def plot_profiles(profiles):
     """Heights of each roughness profile along the scan (thesis Figures 3-18, 4-21)."""
     from memstribo.output import new_figure
@@ -24,7 +30,7 @@ def plot_profiles(profiles):
 
 
 def plot_map(surface):
-    """A measured 2D map as an image (heights [nm] over x, y [um]), with the scan lines along x."""
+    """A measured 2D map as an image (heights [nm] over x, y [µm]), with the scan lines along x."""
     from memstribo.output import new_figure
 
     heights = np.asarray(surface.heights) * 1e9
@@ -53,22 +59,27 @@ def plot_cycle(dataset, tangential_force=None, title=""):
         axes_[2].axhline(float(dataset.attrs["mesh_efficiency_mean"]), color="k", lw=0.8, ls="--",
                          label="mean over a mesh period")
         axes_[2].set_ylabel("efficiency [-]")
-        axes_[2].legend(fontsize=8)
+        _legend(axes_[2])
+    from memstribo.output import engineering_scale
+
+    forces = [name for name in ("resisting_force", "friction_force", "adhesion_force", "normal_force") if name in dataset]
+    factor, unit = engineering_scale([np.nanmax(np.abs(dataset[n].values)) for n in forces]
+                                     + ([tangential_force] if tangential_force is not None else []), "N")
     if "resisting_force" in dataset:
-        top.plot(c, np.asarray(dataset["resisting_force"].values) * 1e6, "-", lw=1.3, color="C3",
-                 label="resisting force R(c), all pairs in mesh")
+        top.plot(c, np.asarray(dataset["resisting_force"].values) / factor, "-", lw=1.3, color="C3",
+                 label="resisting force R(c),\nall pairs in mesh")
     for name, style in (("friction_force", "-"), ("adhesion_force", "--"), ("normal_force", ":")):
-        top.plot(c, np.asarray(dataset[name].values) * 1e6, style, label=name.replace("_", " "))
+        top.plot(c, np.asarray(dataset[name].values) / factor, style, label=name.replace("_", " "))
     if tangential_force is not None:
-        top.axhline(tangential_force * 1e6, color="k", lw=0.8, label="tangential force F_t (stiction where R > F_t)")
-    top.set_ylabel("force [µN]")
-    top.legend(fontsize=8)
+        top.axhline(tangential_force / factor, color="k", lw=0.8, label="tangential force F_t\n(stiction where R > F_t)")
+    top.set_ylabel(f"force [{unit}]")
+    _legend(top)
     top.set_title(title, fontsize=10)
     for name in ("cof", "cof_chemical", "cof_vdw", "cof_elastic"):
         bottom.plot(c, dataset[name].values, label=name.replace("_", " "))
     bottom.set_ylabel("COF [-]")
     axes_[-1].set_xlabel("position on the line of action c [µm]")
-    bottom.legend(fontsize=8)
+    _legend(bottom)
     figure.tight_layout()
     return figure
 
@@ -90,7 +101,7 @@ def plot_ensemble(ensemble, tangential_force):
         ax.set_xlabel("roughness realisation")
         ax.set_ylabel(label)
     left.axhline(0.0, color="C3", lw=0.9, label="stiction below")
-    left.legend(fontsize=7)
+    left.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=3)
     left.set_title(f"stiction probability {ensemble['stiction_probability'] * 100:.0f} %", fontsize=10)
     figure.tight_layout()
     return figure
@@ -110,13 +121,13 @@ def plot_sliding(dataset, title="", max_points=4000):
     for name, style in (("friction_force", "-"), ("adhesion_force", "--"), ("normal_force", ":")):
         top.plot(distance, np.asarray(data[name].values) * 1e6, style, lw=0.8, label=name.replace("_", " "))
     top.set_ylabel("force [µN]")
-    top.legend(fontsize=8)
+    _legend(top)
     top.set_title(title + (f" (every {stride}th step drawn)" if stride > 1 else ""), fontsize=10)
     for name in ("cof", "cof_chemical", "cof_vdw", "cof_elastic"):
         bottom.plot(distance, data[name].values, lw=0.8, label=name.replace("_", " "))
     bottom.set_ylabel("COF [-]")
     bottom.set_xlabel("sliding distance [nm]")
-    bottom.legend(fontsize=8)
+    _legend(bottom)
     figure.tight_layout()
     return figure
 
@@ -131,7 +142,7 @@ def plot_gear(pair, load, contact_modulus, points=401):
     for kind, style in (("dry", "-"), ("lubricated", "--")):
         share.plot(c * 1e6, pair.load_share(c, kind), style, label=kind)
     share.set_ylabel("load share of one pair [-]")
-    share.legend(fontsize=8)
+    share.legend(fontsize=8, loc="lower center")
     radius.plot(c * 1e6, np.asarray(pair.effective_radius(c)) * 1e6)
     radius.set_ylabel("R_ef [µm]")
     sliding.plot(c * 1e6, pair.sliding_velocity(c))
@@ -177,7 +188,7 @@ def plot_energy(dataset, title=""):
     ax.set_xlabel("position on the line of action c [µm]")
     ax.set_ylabel("energy per step [J]")
     ax.set_title(title, fontsize=10)
-    ax.legend(fontsize=8)
+    _legend(ax)
     figure.tight_layout()
     return figure
 
@@ -192,16 +203,25 @@ def plot_sweep(dataset, x, x_label, x_scale=1.0, tangential_force=None, title=""
         left.plot(xs, dataset[name].values, "o-", ms=3, label=name.replace("_mean", " (time mean)").replace("_", " "))
     left.set_xlabel(x_label)
     left.set_ylabel("mean COF over the cycle [-]")
-    left.legend(fontsize=8)
+    left.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)
     if tangential_force is None:
-        right.plot(xs, dataset["energy_dissipated"].values, "o-", ms=3)
-        right.set_ylabel("energy dissipated per cycle [J]")
+        from memstribo.output import engineering_scale
+
+        energy = np.asarray(dataset["energy_dissipated"].values, dtype=float)
+        factor, unit = engineering_scale(energy, "J")  # nJ or pJ, never a "1e-10" offset
+        right.plot(xs, energy / factor, "o-", ms=3)
+        right.set_ylabel(f"energy dissipated per cycle [{unit}]")
     else:
-        right.plot(xs, np.asarray(dataset["resisting_force_max"].values) * 1e6, "o-", ms=3,
-                   label="largest resisting force R")
-        right.axhline(tangential_force * 1e6, color="k", lw=0.8, label="F_t")
-        right.set_ylabel("force [µN]")
-        right.legend(fontsize=8)
+        from memstribo.output import engineering_scale
+
+        force = np.asarray(dataset["resisting_force_max"].values, dtype=float)
+        factor, unit = engineering_scale(np.append(force, tangential_force), "N")
+        right.plot(xs, force / factor, "o-", ms=3, label="largest resisting force R")
+        right.plot(xs, np.full_like(xs, tangential_force / factor, dtype=float), "k-", lw=0.8,
+                   label="F_t (stiction where R > F_t)")  # a line that autoscaling keeps inside the axes
+        right.margins(y=0.08)
+        right.set_ylabel(f"force [{unit}]")
+        right.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)
     right.set_xlabel(x_label)
     figure.suptitle(title, fontsize=10)
     figure.tight_layout()
@@ -237,10 +257,10 @@ def plot_humidity(humidity, title=""):
     right.axhline(0.0, color="k", lw=0.8)
     left.set_xlabel("relative humidity [-]")
     left.set_ylabel("mean COF over the cycle [-]")
-    left.legend(fontsize=7)
+    left.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)
     right.set_xlabel("relative humidity [-]")
     right.set_ylabel("stiction margin F_t - max R [µN]")
-    right.legend(fontsize=7)
+    right.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)
     figure.suptitle(title, fontsize=10)
     figure.tight_layout()
     return figure

@@ -1,11 +1,14 @@
-"""report.html: one self-contained page of a ``memstribo run`` that a tribologist can read.
+"""report.html: one self-contained page of a ``memstribo run`` that a tribologist reads in a minute.
 
-The page holds the question, the inputs with their provenance, the verdict (stiction of the
-bare and of the coated pair, margin, coating life), every figure (embedded as base64 PNG,
-with its caption), the stages with their status, the validation table (thesis against
-memstribo, with tolerances and reasons) and the references used. Nothing is loaded from
-outside the file. Every text that comes from input files or the user (file names,
-metadata, parameter sources) is escaped with :func:`html.escape`.
+The verdict comes first (one headline sentence, then stiction of the bare and of the coated pair,
+margin, coating life), then the verdict's uncertainty and what it hangs on when the run has it
+(:func:`_uncertainty_html`, fed by ``summaries["uncertainty"]``), then the figures the verdict is read
+from (the others folded), the inputs with their provenance, and, folded (``<details>``), the
+question, the stages, the validation table (thesis against memstribo, with tolerances and reasons)
+and the references used. The page fits a phone's width: images scale down, wide tables scroll
+inside their own box. Figures are embedded as base64 PNG; nothing is loaded from outside the file.
+Every text that comes from input files or the user (file names, metadata, parameter sources) is
+escaped with :func:`html.escape`.
 
 A small inline script sets ``data-figures`` on ``<body>`` to ``"ok N"`` once all N images
 have loaded with a non-zero natural width (or ``"broken K of N"``); the browser test reads it.
@@ -32,16 +35,28 @@ QUESTION = (
 )
 
 _CSS = """
-body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;max-width:62rem;margin:2rem auto;padding:0 1rem;
-color:#1b1b1b;line-height:1.45}
-h1{font-size:1.6rem}h2{font-size:1.25rem;border-bottom:1px solid #ccc;padding-bottom:.2rem;margin-top:2rem}
-table{border-collapse:collapse;font-size:.85rem;margin:.5rem 0}th,td{border:1px solid #ccc;padding:.2rem .45rem;
-vertical-align:top}th{background:#f2f2f2;text-align:left}td.num{text-align:right;font-variant-numeric:tabular-nums}
+*,*::before,*::after{box-sizing:border-box}
+html{-webkit-text-size-adjust:100%;text-size-adjust:100%}
+body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;max-width:62rem;margin:1.5rem auto;padding:0 1rem;
+color:#1b1b1b;line-height:1.45;overflow-wrap:break-word}
+h1{font-size:1.5rem;line-height:1.25}h2{font-size:1.25rem;border-bottom:1px solid #ccc;padding-bottom:.2rem;
+margin-top:1.8rem}h3{font-size:1.05rem}
+table{border-collapse:collapse;font-size:.85rem;margin:0}th,td{border:1px solid #ccc;padding:.2rem .45rem;
+vertical-align:top;overflow-wrap:anywhere}th{background:#f2f2f2;text-align:left}
+td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+.wide{overflow-x:auto;max-width:100%;margin:.5rem 0;-webkit-overflow-scrolling:touch}
+.wide table{font-size:.8rem;min-width:100%}
 .verdict{border:2px solid #555;border-radius:6px;padding:.6rem 1rem;background:#fafafa}
-.bad{color:#a00;font-weight:bold}.good{color:#060;font-weight:bold}.note{color:#555;font-size:.85rem}
-figure{margin:1.2rem 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.9rem;color:#333}
-code{background:#f4f4f4;padding:0 .2rem;overflow-wrap:anywhere}details{margin:.5rem 0}
-.wide{overflow-x:auto}.wide table{font-size:.75rem;width:100%}td{overflow-wrap:break-word}
+.verdict ul{padding-left:1.2rem;margin:.3rem 0}.headline{font-size:1.1rem;margin:.2rem 0 .5rem}
+.bad{color:#a00;font-weight:bold}.good{color:#060;font-weight:bold}.warn{color:#a60;font-weight:bold}
+.note{color:#555;font-size:.85rem}
+figure{margin:1.2rem 0}img{max-width:100%;height:auto}figure img{border:1px solid #ddd;display:block}
+figcaption{font-size:.9rem;color:#333}
+code{background:#f4f4f4;padding:0 .2rem;overflow-wrap:anywhere;word-break:break-word}
+details{margin:.6rem 0;border:1px solid #ddd;border-radius:4px;padding:.3rem .6rem}
+details>summary{cursor:pointer;font-weight:600}details[open]>summary{margin-bottom:.4rem}
+@media (max-width:40rem){body{margin:.8rem auto;padding:0 .6rem;font-size:15px}h1{font-size:1.25rem}
+.verdict{padding:.4rem .6rem}th,td{padding:.15rem .3rem}}
 """
 
 _SCRIPT = """
@@ -85,8 +100,9 @@ def validation_rows() -> tuple[list, str | None]:
     except Exception as exc:  # a topic's rows broke: say so in the page, keep the rest of the report
         return [], f"{type(exc).__name__}: {exc}"
     if not measured_files_available():
-        return rows, ("the rows that read the measured AFM files of data/afm/ are not here: this installation "
-                      "has no checkout of the repository (see docs/validation.md for them)")
+        return rows, ("the rows that read the measured AFM files of data/afm/ are left out: memstribo is installed "
+                      "outside a checkout of the repository and did not run inside one (run it from the checkout's "
+                      "root to include them; docs/validation.md lists them)")
     return rows, None
 
 
@@ -162,6 +178,64 @@ def _verdict_html(result) -> str:
     return "<div class='verdict'><ul>" + "".join(items) + "</ul></div>"
 
 
+def _headline_html(result) -> str:
+    """One sentence above the verdict's details: will the bare teeth stick, and the coated ones."""
+    v = result.verdict
+    parts = []
+    if "bare_stiction_probability" in v:
+        p = v["bare_stiction_probability"]
+        cls = "bad" if p >= 0.5 else ("warn" if p > 0 else "good")
+        parts.append(f"bare silicon: <span class='{cls}'>stiction in {p * 100:.0f} % of the roughness "
+                     "realisations</span>")
+    elif "bare_stiction" in v:
+        cls = "bad" if v["bare_stiction"] else "good"
+        parts.append(f"bare silicon: <span class='{cls}'>{'STICTION' if v['bare_stiction'] else 'no stiction'}"
+                     "</span>")
+    if "coated_stiction" in v:
+        cls = "bad" if v["coated_stiction"] else "good"
+        parts.append(f"{_e(result.options.coating)}-coated: <span class='{cls}'>"
+                     f"{'STICTION' if v['coated_stiction'] else 'no stiction'}</span> while the coating is intact")
+    if v.get("cycles_to_stiction") is not None:
+        parts.append(f"stiction returns after about {_quantity(v['cycles_to_stiction'])} meshing cycles")
+    if not parts:
+        return ""
+    text = "; ".join(parts)
+    return f"<p class='headline'><b>{text[0].upper() + text[1:]}.</b></p>"
+
+
+def _uncertainty_html(result) -> str:
+    """The verdict's uncertainty and what it hangs on, right under the verdict; "" when the run has none.
+
+    Hook for an uncertainty stage: put ``summaries["uncertainty"]`` (or ``verdict["uncertainty"]``) into the
+    run's results as a dict with any of ``summary`` (text: the verdict's uncertainty in one or two sentences),
+    ``interval`` (text, e.g. "stiction margin -1.2 to -0.8 mN (90 %)") and ``drivers`` (a list, largest first,
+    of texts or of dicts ``{"name": ..., "effect": ..., "note": ...}``: the inputs the verdict hangs on). Every
+    text is escaped. A plain string is shown as the summary.
+    """
+    data = result.summaries.get("uncertainty") or result.verdict.get("uncertainty")
+    if not data:
+        return ""
+    if isinstance(data, str):
+        data = {"summary": data}
+    parts = ["<div class='uncertainty' id='uncertainty'><h3>Uncertainty and what the verdict hangs on</h3>"]
+    if data.get("summary"):
+        parts.append(f"<p>{_e(data['summary'])}</p>")
+    if data.get("interval"):
+        parts.append(f"<p>Range: {_e(data['interval'])}</p>")
+    drivers = data.get("drivers") or []
+    if drivers:
+        items = []
+        for driver in drivers:
+            if isinstance(driver, dict):
+                text = " &mdash; ".join(_e(driver[k]) for k in ("name", "effect", "note") if driver.get(k) is not None)
+            else:
+                text = _e(driver)
+            items.append(f"<li>{text}</li>")
+        parts.append("<p>It hangs on, largest first:</p><ul>" + "".join(items) + "</ul>")
+    parts.append("</div>")
+    return "".join(parts)
+
+
 def _inputs_html(result) -> str:
     rows = []
     for item in result.inputs:
@@ -171,8 +245,9 @@ def _inputs_html(result) -> str:
                     f"<td class='num'>{_quantity(item.get('rms_slope'))}</td>"
                     f"<td class='num'>{_quantity(item.get('n_points'))}</td>"
                     f"<td>{'yes' if item.get('meshing') else ''}</td></tr>")
-    roughness = ("<table><tr><th>profile</th><th>kind</th><th>provenance</th><th>Rq</th><th>rms slope</th>"
-                 "<th>points</th><th>used by the meshing stages</th></tr>" + "".join(rows) + "</table>") if rows else "<p>No roughness input was read.</p>"
+    roughness = ("<div class='wide'><table><tr><th>profile</th><th>kind</th><th>provenance</th><th>Rq</th>"
+                 "<th>rms slope</th><th>points</th><th>used by the meshing stages</th></tr>" + "".join(rows) +
+                 "</table></div>") if rows else "<p>No roughness input was read.</p>"
     from memstribo.parameters import SPECS
 
     params = result.params
@@ -192,8 +267,8 @@ def _inputs_html(result) -> str:
         "<h3>Roughness</h3>" + roughness +
         f"<h3>Parameters</h3><p>Parameter set <code>{_e(params.name)}</code>; every value with its unit and source "
         f"is in <code>parameters.toml</code>. Changed from that set: {changed_text}.</p>"
-        "<details><summary>All parameters with sources</summary><table><tr><th>name</th><th>value</th>"
-        "<th>meaning</th><th>source</th></tr>" + "".join(param_rows) + "</table></details>"
+        "<details><summary>All parameters with sources</summary><div class='wide'><table><tr><th>name</th>"
+        "<th>value</th><th>meaning</th><th>source</th></tr>" + "".join(param_rows) + "</table></div></details>"
         f"<p class='note'>Run options: steps per cycle {_e(options.steps or 'model default')}, coating "
         f"{_e(options.coating)}, {len(options.loads)} loads, {len(options.areas)} areas, {len(options.wear)} worn "
         "fractions.</p>"
@@ -236,11 +311,31 @@ def _figure_html(folder, number, figure) -> str:
             f"<span class='note'>(figures/{_e(figure.stem)}.png and .svg)</span></figcaption></figure>")
 
 
+#: figures shown open, under the verdict (the others are folded): those the verdict is read from
+KEY_FIGURES = ("mesh_bare_ensemble", "mesh_bare_forces_cof", "wear_sweep")
+
+
+def _figure_numbers(result) -> dict[str, int]:
+    """Figure stem -> its number in the page's order: the key figures, the other figures, the design map's."""
+    key = [f for f in result.figures if f.stage != _MAP_STAGE and f.stem in KEY_FIGURES]
+    key.sort(key=lambda f: KEY_FIGURES.index(f.stem))
+    other = [f for f in result.figures if f.stage != _MAP_STAGE and f.stem not in KEY_FIGURES]
+    maps = [f for f in result.figures if f.stage == _MAP_STAGE]
+    return {f.stem: number for number, f in enumerate(key + other + maps, start=1)}
+
+
 def _figures_html(result) -> str:
-    # the design map's figures are in its own section (_design_map_html); numbers count every figure
-    parts = [_figure_html(result.folder, number, figure)
-             for number, figure in enumerate(result.figures, start=1) if figure.stage != _MAP_STAGE]
-    return "".join(parts) or "<p>No figures: the stages that draw them did not run.</p>"
+    # the design map's figures are in its own section (_design_map_html); numbers follow the page
+    numbers = _figure_numbers(result)
+    numbered = sorted(((numbers[f.stem], f) for f in result.figures if f.stage != _MAP_STAGE), key=lambda p: p[0])
+    if not numbered:
+        return "<p>No figures: the stages that draw them did not run.</p>"
+    key = [_figure_html(result.folder, n, f) for n, f in numbered if f.stem in KEY_FIGURES]
+    other = [_figure_html(result.folder, n, f) for n, f in numbered if f.stem not in KEY_FIGURES]
+    if other:
+        key.append(f"<details><summary>{'All' if not key else 'The other'} {len(other)} figure(s): roughness, gear, "
+                   "sliding, sweeps, energy, coating and damage</summary>" + "".join(other) + "</details>")
+    return "".join(key)
 
 
 _MAP_STAGE = "design_map"  # memstribo.job.chain.MAP_STAGE's name (the report does not import the chain)
@@ -283,8 +378,9 @@ def _design_map_html(result) -> str:
                      "map.nc says why).</li>")
     items += [f"<li class='note'>{_e(note)}</li>" for note in summary.get("notes", [])]
     parts.append("<ul>" + "".join(items) + "</ul>")
-    parts += [_figure_html(result.folder, number, figure)
-              for number, figure in enumerate(result.figures, start=1) if figure.stage == _MAP_STAGE]
+    numbers = _figure_numbers(result)
+    parts += [_figure_html(result.folder, numbers[figure.stem], figure)
+              for figure in result.figures if figure.stage == _MAP_STAGE]
     return "".join(parts)
 
 
@@ -319,7 +415,7 @@ def _humidity_html(result) -> str:
             f"({_share(humidity[label]['cof_capillary'][i], humidity[label]['cof_mean'][i])})</td>"
             f"<td>{humidity[label]['stiction_margin'][i] * 1e6:.4g}</td>" for label in labels)
         rows.append(f"<tr><td>{rh:.2f}</td>{cells}</tr>")
-    parts.append(f"<table><tr><th>RH</th>{head}</tr>{''.join(rows)}</table>")
+    parts.append(f"<div class='wide'><table><tr><th>RH</th>{head}</tr>{''.join(rows)}</table></div>")
     items = []
     for label in labels:
         part = humidity[label]
@@ -329,7 +425,7 @@ def _humidity_html(result) -> str:
         items.append(f"<li><b>{_e(part['name'])}</b>: {_e(verdict)} ({_e(part.get('critical_humidity_note', ''))})"
                      "</li>")
     parts.append(f"<ul>{''.join(items)}</ul>")
-    figure = next((i for i, f in enumerate(result.figures, start=1) if f.stem == "humidity_cof_margin"), None)
+    figure = _figure_numbers(result).get("humidity_cof_margin")
     if figure is not None:
         parts.append(f"<p>Figure {figure} draws these curves; the numbers are in <code>data/humidity_sweep.json"
                      "</code>.</p>")
@@ -351,6 +447,10 @@ def _validation_html(validation) -> str:
         counts = summary(rows)
         parts.append(f"<p><b>{counts['rows']} comparisons: {counts['agree']} agree, {counts['differ']} differ</b> "
                      "(on purpose where the tolerance says 'differs'; the note says why).</p>")
+        differ = [r for r in rows if not r.agrees]
+        if differ:
+            parts.append("<p>Those that differ: " + "; ".join(f"{_e(r.topic)}: {_e(r.quantity)}" for r in differ)
+                         + ".</p>")
 
         body = "".join(
             f"<tr><td>{_e(r.topic)}</td><td>{_e(r.quantity)}</td><td>{_e(r.reference)}</td>"
@@ -358,9 +458,10 @@ def _validation_html(validation) -> str:
             f"<td>{_e(r.unit)}</td><td>{_e(r.tolerance)}</td>"
             f"<td class='{'good' if r.agrees else 'bad'}'>{'yes' if r.agrees else 'no'}</td>"
             f"<td><code>{_e(r.command)}</code></td><td>{_e(r.note)}</td></tr>" for r in rows)
-        parts.append("<div class='wide'><table><tr><th>topic</th><th>quantity</th><th>reference</th><th>reference value</th>"
-                     "<th>memstribo</th><th>unit</th><th>tolerance</th><th>agrees</th><th>command</th><th>note</th></tr>"
-                     + body + "</table></div>")
+        parts.append(f"<details id='validation-table'><summary>The table: {counts['rows']} rows with reference, "
+                     "tolerance, command and note</summary><div class='wide'><table><tr><th>topic</th><th>quantity</th>"
+                     "<th>reference</th><th>reference value</th><th>memstribo</th><th>unit</th><th>tolerance</th>"
+                     "<th>agrees</th><th>command</th><th>note</th></tr>" + body + "</table></div></details>")
     return "".join(parts)
 
 
@@ -383,26 +484,33 @@ def render_report(result, validation=None) -> str:
     """
     from memstribo import __version__
 
+    from memstribo.output import git_commit
+
     stamp = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     done = sum(1 for s in result.stages if s.status == "done")
+    commit = git_commit()
+    commit_text = f"git commit <code>{_e(commit[:12])}</code>{_e(commit[40:])}" if not commit.startswith("none") \
+        else _e(commit.replace("none: ", ""))
     return "".join([
         "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>",
         "<meta name='viewport' content='width=device-width, initial-scale=1'>",
         "<title>memstribo run: friction, stiction and coating wear of silicon microgear teeth</title>",
         f"<style>{_CSS}</style></head><body data-figures='pending'>",
         "<h1>memstribo: friction, stiction and coating wear of silicon MEMS microgear teeth</h1>",
-        f"<p class='note'>memstribo {_e(__version__)}, {stamp}, {result.elapsed:.0f} s; {done} of "
+        "<h2 id='verdict'>Verdict</h2>", _headline_html(result), _verdict_html(result), _uncertainty_html(result),
+        f"<p class='note'>memstribo {_e(__version__)} ({commit_text}), {stamp}, {result.elapsed:.0f} s; {done} of "
         f"{len(result.stages)} stages done; output folder <code>{_e(os.path.basename(str(result.folder)) or result.folder)}"
         "</code>.</p>",
-        f"<h2>The question</h2><p>{_e(QUESTION)}</p>",
-        "<h2>Verdict</h2>", _verdict_html(result),
+        f"<details><summary>The question this run answers</summary><p>{_e(QUESTION)}</p></details>",
+        "<h2>Figures</h2>", _figures_html(result),
         "<h2>Inputs and their provenance</h2>", _inputs_html(result),
         _humidity_html(result),
-        "<h2>Figures</h2>", _figures_html(result),
         _design_map_html(result),
-        "<h2>Stages</h2>", _stages_html(result),
+        "<h2>Stages</h2><details><summary>The stages with their status, time and files</summary>",
+        _stages_html(result), "</details>",
         "<h2>Validation: thesis against memstribo</h2>", _validation_html(validation),
-        "<h2>References used by this run</h2>", _references_html(),
+        "<h2>References used by this run</h2><details><summary>The papers the models of this run cite</summary>",
+        _references_html(), "</details>",
         _SCRIPT, "</body></html>\n",
     ])
 

@@ -75,7 +75,14 @@ class ParameterSpec:
             parts.append(f"{'<' if self.exclusive_maximum else '<='} {self.maximum:g}")
         what = "an integer" if self.kind == "int" else "a number"
         text = what + (" " + " and ".join(parts) if parts else "")
-        if self.unit:
+        if self.unit == "rad" and parts:  # angles: the bounds in degrees too (the unit users give)
+            degrees = []
+            if self.minimum is not None:
+                degrees.append(f"{'>' if self.exclusive_minimum else '>='} {math.degrees(self.minimum):.4g} deg")
+            if self.maximum is not None:
+                degrees.append(f"{'<' if self.exclusive_maximum else '<='} {math.degrees(self.maximum):.4g} deg")
+            text += f", i.e. {' and '.join(degrees)} (SI unit rad, or a value with a unit such as '20 deg')"
+        elif self.unit:
             text += f" (SI unit {self.unit}, or a value with a unit)"
         if self.optional:
             text += ", or unset to derive it"

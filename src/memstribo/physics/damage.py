@@ -644,9 +644,17 @@ def _figures(result: DamageResult, datasets) -> dict:
         key = f"omega_over_c1_{position}"
         if key in profile:
             ax.plot(profile["x"].values * 1e9, profile[key].values, style, label=position)
+    from memstribo.output import engineering_scale
+
     ax.set_xlabel("x along sliding [nm]")
     power = "" if result.damage_exponent == 1 else f"^{result.damage_exponent:g}"
-    ax.set_ylabel(f"omega / c1 per cycle [Pa{power}]")
+    keys = [f"omega_over_c1_{position}" for position in POSITIONS if f"omega_over_c1_{position}" in profile]
+    factor, unit = engineering_scale([np.nanmax(np.abs(profile[k].values)) for k in keys] or [1.0], f"Pa{power}")
+    for line in ax.get_lines():  # drawn in SI above; scaled so that the axis carries no offset
+        line.set_ydata(np.asarray(line.get_ydata(), dtype=float) / factor)
+    ax.relim()
+    ax.autoscale_view()
+    ax.set_ylabel(f"omega / c1 per cycle [{unit}]")
     ax.legend()
     figures["damage_profile"] = (fig, f"Damage per meshing cycle omega/c1 along the sliding direction through the "
                                       f"corner, side and central asperities, m = {result.damage_exponent:g} "
@@ -654,8 +662,10 @@ def _figures(result: DamageResult, datasets) -> dict:
     per_side = int(math.isqrt(result.classes.size))
     worst = int(np.argmax(result.per_asperity.max(axis=1)))
     fig, ax = new_figure(figsize=(4, 3.5))
-    image = ax.imshow(result.per_asperity[worst].reshape(per_side, per_side), cmap="magma", origin="lower")
-    fig.colorbar(image, ax=ax, label=f"max omega/c1 per cycle [Pa{power}]")
+    worst_map = result.per_asperity[worst].reshape(per_side, per_side)
+    factor, unit = engineering_scale(worst_map, f"Pa{power}")  # no "1e9" offset over the colour bar
+    image = ax.imshow(worst_map / factor, cmap="magma", origin="lower")
+    fig.colorbar(image, ax=ax, label=f"max omega/c1 per cycle [{unit}]")
     ax.set_xticks(range(per_side))
     ax.set_yticks(range(per_side))
     ax.set_title("damage map of a nanoblock")

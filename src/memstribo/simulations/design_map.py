@@ -598,11 +598,11 @@ _FIGURES = (
 )
 
 
-_PREFIXES = ((1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "u"), (1e-3, "m"), (1.0, ""))
+_PREFIXES = ((1e-15, "f"), (1e-12, "p"), (1e-9, "n"), (1e-6, "µ"), (1e-3, "m"), (1.0, ""))
 
 
 def _display(dataset, key: str) -> tuple[float, str]:
-    """(factor from SI, axis label): ``face_width`` in um, ``drive_torque`` in nN*m, ..."""
+    """(factor from SI, axis label): ``face_width`` in µm, ``drive_torque`` in nN*m, ..."""
     unit = dataset[key].attrs.get("units", "")
     name = key.replace("_", " ")
     if not unit or unit == "1":

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from memstribo.validation.rows import ValidationRow, compare
 
-AFM = Path(__file__).resolve().parents[3] / "data" / "afm"
+AFM = Path(__file__).resolve().parents[3] / "data" / "afm"  # in a source tree; see afm_folder()
 README = "data/afm/README.md (SurfaceTopography 1.25, height detrend)"
 
 # file, channel, statistic, README value [nm], note
@@ -30,8 +30,9 @@ def _file_rows() -> list[ValidationRow]:
     from memstribo.surfaces.roughness import areal_statistics, profile_statistics
 
     rows = []
+    afm = afm_folder() or AFM
     for name, channel, key, printed, note in _FILES:
-        surface = read_topography(AFM / name, channel=channel)
+        surface = read_topography(afm / name, channel=channel)
         if isinstance(surface, SurfaceMap):
             value = getattr(areal_statistics(surface.heights, surface.dx, surface.dy), key)
         else:
@@ -41,7 +42,7 @@ def _file_rows() -> list[ValidationRow]:
         rows.append(compare("roughness", f"{key} of {name}" + (f" ({channel})" if channel else ""), README, printed,
                             value * 1e9, "nm", atol=0.5 * 10 ** -decimals,
                             command=f"memstribo roughness data/afm/{name}{option} --json", note=note))
-    tem = read_topography(AFM / "container-2.zip", channel="80_Scale")
+    tem = read_topography(afm / "container-2.zip", channel="80_Scale")
     rows.append(compare(
         "roughness", "Rq of the TEM profile (76 non-uniform points)", README + ", point-wise", 3.51,
         profile_statistics(tem).Rq * 1e9, "nm", atol=0.005,
@@ -88,9 +89,19 @@ def _thesis_rows() -> list[ValidationRow]:
     ]
 
 
+def afm_folder() -> Path | None:
+    """The repository's data/afm/ folder: of the source tree memstribo runs from or, for an installed wheel
+    (which does not carry it), of the checkout the command runs in (:func:`memstribo.output.checkout_root`)."""
+    from memstribo.output import checkout_root
+
+    root = checkout_root()
+    folder = root / "data" / "afm" if root is not None else AFM
+    return folder if folder.is_dir() else None
+
+
 def measured_files_available() -> bool:
-    """Whether the repository's data/afm/ folder is here (an installed wheel does not carry it)."""
-    return AFM.is_dir()
+    """Whether the repository's data/afm/ folder is here (see :func:`afm_folder`)."""
+    return afm_folder() is not None
 
 
 def rows() -> list[ValidationRow]:

@@ -1,10 +1,12 @@
-"""Sphinx configuration of memstribo's documentation: the API reference from the docstrings
-(numpydoc style, through napoleon) and the Markdown pages of ``docs/`` (through myst-parser).
+"""Sphinx configuration of memstribo's documentation, one site: the guides (the Markdown pages of
+``docs/``, through myst-parser), the API reference from the docstrings (``docs/api/``, numpydoc style
+through napoleon) and the worked example notebook (``docs/examples/`` links to
+``examples/worked_example.ipynb``; myst-nb executes it during the build, as it is committed without
+outputs).
 
-Build from the repository root (the source folder is ``docs/``, this file's folder holds the
-configuration)::
+Build from the repository root::
 
-    python -m sphinx -W --keep-going -c docs/api -b html docs docs/_build/html
+    python -m sphinx -W --keep-going -b html docs docs/_build/html
 
 ``tests/test_docs_build.py`` runs the same build with warnings as errors.
 """
@@ -14,7 +16,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))  # a source checkout that is not installed still builds
 
 from memstribo import __version__  # noqa: E402
@@ -24,9 +26,9 @@ author = "memstribo developers"
 copyright = "2026, memstribo developers (MIT licence)"
 version = release = __version__
 
-root_doc = "api/index"
+root_doc = "index"
 extensions = [
-    "myst_parser",
+    "myst_nb",  # myst-parser's Markdown, and notebooks
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.extlinks",
@@ -34,8 +36,15 @@ extensions = [
     "sphinx.ext.napoleon",
     "sphinx.ext.viewcode",
 ]
-source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
-exclude_patterns = ["_build", "**/.ipynb_checkpoints"]
+exclude_patterns = ["_build", "**/.ipynb_checkpoints", "jupyter_execute"]
+
+# the worked example: executed during the build (it is committed without outputs; about 20-40 s),
+# a failing cell fails the build
+nb_execution_mode = "auto"
+nb_execution_timeout = 180
+nb_execution_raise_on_error = True
+nb_execution_show_tb = True
+nb_execution_in_temp = False  # the notebook finds data/afm/ from its folder, like a reader's Jupyter
 
 # numpydoc-style docstrings ("Parameters\n----------")
 napoleon_google_docstring = False
