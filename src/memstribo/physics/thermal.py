@@ -28,6 +28,7 @@ References: Jaeger 1942; Blok 1937; Carslaw and Jaeger 1959 (memstribo.reference
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -43,6 +44,15 @@ __all__ = ["peclet_number", "band_temperature", "band_mean_factor", "band_mean_f
 _EULER_GAMMA = 0.5772156649015329
 #: Péclet numbers beyond which :func:`band_mean_factor` uses the limits (2) and (3) instead of integrating (1)
 HIGH_PECLET, LOW_PECLET = 50.0, 1e-3
+
+
+@functools.lru_cache(maxsize=8)
+def _gauss(points):
+    """Gauss-Legendre nodes and weights on [-1, 1] (cached: computing 400 of them costs an eigenvalue solve)."""
+    nodes, weights = np.polynomial.legendre.leggauss(int(points))
+    nodes.flags.writeable = False
+    weights.flags.writeable = False
+    return nodes, weights
 
 
 def peclet_number(speed, half_width, diffusivity):
@@ -86,23 +96,18 @@ def band_temperature(x, peclet, points=400):
     L = float(peclet)
     if not (math.isfinite(L) and L > 0):
         raise InputError(f"the Péclet number must be a positive finite number, got {peclet!r}.")
-    xs = np.atleast_1d(np.asarray(x, dtype=float))
-    nodes, weights = np.polynomial.legendre.leggauss(int(points))
-    out = np.empty(xs.size)
-    for i, xi in enumerate(np.clip(xs, -1.0, 1.0)):
-        total = 0.0
-        # sources behind (x' < x, factor exp(-L d) K0(L d)) and ahead (x' > x, factor exp(+L d) K0(L d))
-        for span, sign in ((xi + 1.0, -1.0), (1.0 - xi, 1.0)):
-            if span <= 0:
-                continue
-            t_hi = math.sqrt(span)
-            t = 0.5 * t_hi * (nodes + 1.0)
-            d = t * t
-            z = L * d
-            # exp(sign L d) K0(L d) = k0e(L d) exp(L d (sign - 1)) (K0 = k0e exp(-z)): no overflow
-            f = k0e(np.maximum(z, 1e-300)) * np.exp(z * (sign - 1.0)) * 2.0 * t
-            total += 0.5 * t_hi * float(np.sum(weights * f))
-        out[i] = total / math.pi
+    xs = np.clip(np.atleast_1d(np.asarray(x, dtype=float)), -1.0, 1.0)
+    nodes, weights = _gauss(int(points))
+    out = np.zeros(xs.size)
+    # sources behind (x' < x, factor exp(-L d) K0(L d)) and ahead (x' > x, factor exp(+L d) K0(L d))
+    for span, sign in ((xs + 1.0, -1.0), (1.0 - xs, 1.0)):
+        t_hi = np.sqrt(np.maximum(span, 0.0))[:, None]
+        t = 0.5 * t_hi * (nodes + 1.0)[None, :]
+        z = L * t * t
+        # exp(sign L d) K0(L d) = k0e(L d) exp(L d (sign - 1)) (K0 = k0e exp(-z)): no overflow
+        f = k0e(np.maximum(z, 1e-300)) * np.exp(z * (sign - 1.0)) * 2.0 * t
+        out += 0.5 * t_hi[:, 0] * np.sum(weights[None, :] * f, axis=1)
+    out /= math.pi
     return out if np.ndim(x) else float(out[0])
 
 
@@ -132,7 +137,7 @@ def band_mean_factor(peclet):
     if np.any(~np.isfinite(L)) or np.any(L <= 0):
         raise InputError("the Péclet number must be positive and finite.")
     out = np.empty(L.size)
-    nodes, weights = np.polynomial.legendre.leggauss(24)
+    nodes, weights = _gauss(24)
     for i, li in enumerate(L):
         if li >= HIGH_PECLET:
             out[i] = band_mean_factor_high_peclet(li)
