@@ -301,9 +301,9 @@ _ENTRIES = [
     ("mesh_contact", _TEXT, "mesh contact", "line or surface"),
     ("environment", _TEXT, "environment", "vacuum or air"),
     # --- tooth strength and temperature (MODEL §10, issue #30; docs/strength.md, docs/thermal.md) ---------
-    ("root_stress", "Pa", "tooth root stress", "tensile stress in the loaded root fillet at the step: ISO 6336-3 "
-     "method B (30 deg tangent section, Y_S) with the moment of the normal and the friction force"),
-    ("root_stress_max", "Pa", "largest tooth root stress", "largest tensile root stress over the cycle, [pinion, gear]"),
+    ("root_stress", "Pa", "tooth root stress", "tensile stress in the loaded root fillet: ISO 6336-3 method B "
+     "(30 deg tangent section, Y_S) with the moment and the direct stress of the normal and the friction force; "
+     "as root_stress_max of a cycle [pinion, gear]"),
     ("root_stress_compressive_min", "Pa", "most compressive root stress",
      "most compressive stress in the unloaded root fillet over the cycle, [pinion, gear]"),
     ("root_effective_area", "m^2", "effective stressed area of the root",
@@ -319,8 +319,6 @@ _ENTRIES = [
      "polysilicon in air, strength falling as N^(-1/n)); null without tensile stress"),
     ("flash_temperature", "K", "flash temperature rise", "mean contact temperature rise over the band at the step "
      "(Jaeger's moving band source, Blok's partition)"),
-    ("flash_temperature_max", "K", "largest flash temperature rise", "largest flash temperature rise of the contact "
-     "over the cycle above the bulk temperature"),
     ("bulk_temperature_rise", "K", "bulk temperature rise", "rise of the hotter gear's temperature from the mean "
      "friction power over the heat conductance to its surroundings"),
     ("contact_temperature_max", "K", "largest contact temperature",
