@@ -284,8 +284,17 @@ def flank_load_point(shape: ToothShape, radius):
     return point, normal, tangent
 
 
+def design_lever_arm(shape: ToothShape, radius) -> float:
+    """ISO's bending lever arm h_Fe [m] of the normal force at ``radius``: from the critical section to where the
+    force's line of action crosses the tooth centreline (ISO 6336-3, 6.3)."""
+    section = critical_section(shape)
+    point, normal, _ = flank_load_point(shape, float(radius))
+    return float(abs(point[1] - section["height"] - point[0] * normal[1] / normal[0]))
+
+
 @cites("iso_6336_3", "buckingham_1949")
-def root_stress(shape: ToothShape, radius, normal_force, friction_force, face_width, friction_sign=None):
+def root_stress(shape: ToothShape, radius, normal_force, friction_force, face_width, friction_sign=None,
+                design_radius=None):
     """Tooth root stresses for a contact force on the right flank at ``radius`` (ISO 6336-3 method B, adapted).
 
     Parameters
@@ -303,6 +312,11 @@ def root_stress(shape: ToothShape, radius, normal_force, friction_force, face_wi
     friction_sign : array_like, optional
         +1: friction toward the tip, -1: toward the root (default -1 below the pitch circle, +1 above;
         :func:`cycle_root_stress` gives it from the position on the line of action).
+    design_radius : float, optional
+        Radius [m] of ISO method B's load point, the outer point of single tooth contact
+        (:func:`cycle_root_stress` passes it): for contacts below it the stress correction factor Y_S
+        keeps that point's value, since Eq. (37) was fitted to lever arms of loads on the upper flank;
+        default: each contact's own lever arm.
 
     Returns
     -------
@@ -327,9 +341,13 @@ def root_stress(shape: ToothShape, radius, normal_force, friction_force, face_wi
     s, y_s = section["thickness"], section["height"]
     arm_x, arm_y = point[..., 0], point[..., 1] - y_s
     moment = arm_x * force[..., 1] - arm_y * force[..., 0]  # > 0 bends the tooth away from the loaded flank
-    across = np.abs(force[..., 0])
-    lever = np.divide(np.abs(moment), across, out=np.full_like(across, np.inf), where=across > 0)
-    lever = np.where(np.isfinite(lever) & (lever > 0), lever, point[..., 1] - y_s)
+    # ISO's lever arm h_Fe: where the line of action of the normal force crosses the centreline (the tooth's
+    # geometry and the contact point, independent of the friction, whose moment adds to M)
+    lever = np.abs(arm_y - arm_x * normal[..., 1] / normal[..., 0])
+    if design_radius is not None:
+        # below ISO's load point (the outer point of single contact) Eq. (37) leaves the lever arms it was fitted
+        # on (L = s_Fn / h_Fe grows without bound as the load nears the root): hold Y_S at the load point's value
+        lever = np.maximum(lever, design_lever_arm(shape, design_radius))
     y_s_factor = stress_correction_factor(s, lever, section["fillet_radius"])
     bending = y_s_factor * 6.0 * np.abs(moment) / (b * s * s)
     axial = force[..., 1]
@@ -368,13 +386,19 @@ def cycle_root_stress(pair, positions, normal_force, friction_force, dedendum_co
     rb = pair.base_radii
     tan_a = math.tan(pair.pressure_angle)
     sign = np.where(c >= 0.0, 1.0, -1.0)  # toward the root before the pitch point, toward the tip after it
+    # outer points of single tooth contact (ISO 6336-3 method B's load point): c_f + p_b on the pinion,
+    # c_l - p_b on the gear; the tips when two pairs are always in mesh
+    zone = pair.single_tooth_zone
+    c_design = (zone[1], zone[0]) if zone is not None else (pair.last_contact, pair.first_contact)
     out = {}
-    for i, (name, teeth, roll) in enumerate((("pinion", pair.teeth_pinion, rb[0] * tan_a + c),
-                                             ("gear", pair.teeth_gear, rb[1] * tan_a - c))):
+    for i, (name, teeth, roll, roll_design) in enumerate((
+            ("pinion", pair.teeth_pinion, rb[0] * tan_a + c, rb[0] * tan_a + c_design[0]),
+            ("gear", pair.teeth_gear, rb[1] * tan_a - c, rb[1] * tan_a - c_design[1]))):
         shape = tooth_shape(teeth, pair.module, pair.pressure_angle, pair.addendum_coefficient,
                             dedendum_coefficient, fillet_coefficient)
         radius = np.sqrt(rb[i] ** 2 + roll ** 2)
         radius = np.clip(radius, shape.flank_tangent_radius, shape.tip_radius)
-        result = root_stress(shape, radius, normal_force, friction_force, b, friction_sign=sign)
+        design = float(np.clip(math.hypot(rb[i], roll_design), shape.flank_tangent_radius, shape.tip_radius))
+        result = root_stress(shape, radius, normal_force, friction_force, b, friction_sign=sign, design_radius=design)
         out[name] = {**result, "radius": radius, "shape": shape}
     return out
