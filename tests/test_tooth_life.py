@@ -97,3 +97,12 @@ def test_missing_dataset_variable_is_a_clear_error(params):
     del cycle["hertz_half_width"]
     with pytest.raises(InputError, match="hertz_half_width"):
         tooth_life(cycle, params)
+
+
+@pytest.mark.parametrize("name", ["DDMS", "W"])
+def test_new_coatings_run_through_the_coating_command(cli, name):
+    """``memstribo coating --coating DDMS --wear 0 --json`` (issue #30), on a short cycle; the set is listed too."""
+    out = cli.json("coating", "--coating", name, "--wear", "0", "--steps", "5")
+    assert out["coating"] == name and out["wear"] == 0.0 and out["cof_mean"] > 0
+    listed = cli.json("parameters", "--coating", name)
+    assert listed["degradation_temperature"] == pytest.approx(673.15)
