@@ -144,19 +144,19 @@ REFERENCES: dict[str, str] = {
     "lavan_2001": (
         "D. A. LaVan, T. Tsuchiya, G. Coles, W. G. Knauss, I. Chasiotis, D. Read, 'Cross comparison of direct "
         "strength testing techniques on polysilicon films', in Mechanical Properties of Structural Films, ASTM STP "
-        "1413, 2001, pp. 16-27. doi:10.1520/STP10980S"
+        "1413, C. L. Muhlstein and S. B. Brown (eds.), ASTM, West Conshohocken, 2001."
     ),
     "muhlstein_2001": (
-        "C. L. Muhlstein, S. B. Brown, R. O. Ritchie, 'High-cycle fatigue and durability of polycrystalline silicon "
-        "thin films in ambient air', Sens. Actuators A 94 (2001) 177-188 (lives 5e5 to 1e11 cycles in laboratory "
-        "air, 25 degC, 30-50 % RH; stress amplitude falling to about 50 % of the low-cycle strength beyond 1e9 "
-        "cycles). doi:10.1016/S0924-4247(01)00709-9"
+        "C. L. Muhlstein, S. B. Brown, R. O. Ritchie, 'High-cycle fatigue of polycrystalline silicon thin films in "
+        "laboratory air', Mater. Res. Soc. Symp. Proc. (2001), Materials Science of Microelectromechanical "
+        "Systems (MEMS) Devices III: 13 notched 2 um-thick cantilevers cycled to failure in laboratory air "
+        "(about 25 degC, 30-50 % RH), lives 5e5 to 1e11 cycles, the stress amplitude at failure falling to about "
+        "50 % of the low-cycle strength beyond 1e9 cycles."
     ),
-    "alsem_2007": (
-        "D. H. Alsem, R. Timmerman, B. L. Boyce, E. A. Stach, J. Th. M. De Hosson, R. O. Ritchie, 'Very high-cycle "
-        "fatigue failure in micron-scale polycrystalline silicon films: effects of environment and surface oxide "
-        "thickness', J. Appl. Phys. 101 (2007) 013515 (fatigue also in vacuum, with longer lives than in "
-        "air). doi:10.1063/1.2403841"
+    "alsem_2005": (
+        "D. H. Alsem, E. A. Stach, C. L. Muhlstein, R. O. Ritchie, 'Fatigue failure in thin-film polycrystalline "
+        "silicon is due to subcritical cracking within the oxide layer', Appl. Phys. Lett. 86 (2005) 041914 (no "
+        "fatigue in high vacuum, where oxidation and moisture are suppressed)."
     ),
     "theillet_pierron_2009": (
         "P.-O. Theillet, O. N. Pierron, 'Fatigue rates of monocrystalline silicon thin films in harsh environments: "
@@ -173,8 +173,12 @@ REFERENCES: dict[str, str] = {
     ),
     "carslaw_jaeger_1959": "H. S. Carslaw, J. C. Jaeger, Conduction of Heat in Solids, 2nd ed., Oxford, 1959.",
     "mcconnell_2001": (
-        "A. D. McConnell, S. Uma, K. E. Goodson, 'Thermal conductivity of doped polysilicon layers', "
-        "J. Microelectromech. Syst. 10 (2001) 360-369. doi:10.1109/84.946782"
+        "A. D. McConnell, U. Srinivasan, M. Asheghi, K. E. Goodson, 'Thermal conductivity of doped polysilicon "
+        "layers', J. Microelectromech. Syst. 10 (2001) 360-369 (LPCVD layers near 1 um thick, B and P doped)."
+    ),
+    "tai_1987": (
+        "Y. C. Tai, C. H. Mastrangelo, R. S. Muller, 'Thermal conductivity of heavily doped LPCVD polysilicon', "
+        "IEEE International Electron Devices Meeting, Technical Digest 33 (1987) 278-281 (0.30-0.35 W/(cm K))."
     ),
     "incropera_2007": (
         "F. P. Incropera, D. P. DeWitt, T. L. Bergman, A. S. Lavine, Fundamentals of Heat and Mass Transfer, 6th "
@@ -186,7 +190,7 @@ REFERENCES: dict[str, str] = {
     ),
     "kluth_1997": (
         "G. J. Kluth, M. M. Sung, R. Maboudian, 'Thermal behavior of alkylsiloxane self-assembled monolayers on the "
-        "oxidized Si(100) surface', Langmuir 13 (1997) 3775-3780. doi:10.1021/la970135r"
+        "oxidized Si(100) surface', Langmuir 13 (1997) 3775-3780."
     ),
     "zhuang_2006": (
         "Y. X. Zhuang, O. Hansen, T. Knieling, C. Wang, P. Rombach, W. Lang, W. Benecke, M. Kehlenbeck, J. Koblitz, "
@@ -194,13 +198,13 @@ REFERENCES: dict[str, str] = {
         "J. Micromech. Microeng. 16 (2006) 2259-2264. doi:10.1088/0960-1317/16/11/002"
     ),
     "mani_2000": (
-        "S. S. Mani, J. G. Fleming, J. J. Sniegowski, M. P. de Boer, L. W. Irwin, J. A. Walraven, D. M. Tanner, "
-        "D. A. LaVan, 'Effect of W coating on microengine performance', Proc. IEEE Int. Reliability Physics "
-        "Symposium (2000) 146-151. doi:10.1109/RELPHY.2000.843906"
+        "S. S. Mani et al. (Sandia National Laboratories), 'Effect of W coating on microengine performance', "
+        "Proc. IEEE Int. Reliability Physics Symposium (2000) 146-151 (selective CVD of tungsten on polysilicon "
+        "MEMS; improved wear resistance of microengines)."
     ),
     "lassner_schubert_1999": (
         "E. Lassner, W.-D. Schubert, Tungsten: Properties, Chemistry, Technology of the Element, Alloys, and "
-        "Chemical Compounds, Kluwer/Plenum, 1999. doi:10.1007/978-1-4615-4907-9"
+        "Chemical Compounds, Kluwer Academic/Plenum Publishers, New York, 1999."
     ),
 }
 

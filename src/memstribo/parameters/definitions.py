@@ -291,7 +291,7 @@ _SPECS = [
            "material at the reference area (polysilicon)", 1e7, 2e10,
            "a strength must be positive; 10 MPa (a cracked ceramic) to 20 GPa (the ideal strength of silicon)",
            prior={"distribution": "uniform", "bounds": (1.5e9, 3.5e9),
-                  "source": "LaVan et al. 2001 (ASTM STP 1413, doi:10.1520/STP10980S); Jadaan et al. 2003 "
+                  "source": "LaVan et al. 2001 (ASTM STP 1413); Jadaan et al. 2003 "
                             "(doi:10.1023/A:1026317303377); Boyce 2010 (doi:10.1007/s11340-009-9286-x)",
                   "reason": "mean tensile strengths of surface-micromachined polysilicon from different labs and "
                             "foundries span 1.2-3.4 GPa; Boyce's threshold 1.45 GPa bounds it below"}),
@@ -309,7 +309,7 @@ _SPECS = [
     _range("fatigue_exponent", "", "Exponent n of the strength's fall with load cycles, sigma(N) = sigma N^(-1/n)",
            1.0, 1000.0, "n = 1 is a strength gone in ten cycles; above 1000 there is no fatigue",
            prior={"distribution": "uniform", "bounds": (20.0, 45.0),
-                  "source": "Muhlstein, Brown and Ritchie 2001 (doi:10.1016/S0924-4247(01)00709-9)",
+                  "source": "Muhlstein, Brown and Ritchie 2001 (Mater. Res. Soc. Symp. Proc.)",
                   "reason": "stress amplitude at failure about 50 % of the low-cycle strength at 1e9-1e11 cycles: "
                             "n = log(N)/log(2) = 30-37; their scatter widens it"}),
     _range("fatigue_humidity_sensitivity", "", "Decades of fatigue life lost per unit of relative humidity above "
@@ -317,9 +317,9 @@ _SPECS = [
            "0 (no humidity effect) to 20 decades per unit RH (any reported effect is smaller)",
            exclusive_minimum=False,
            prior={"distribution": "uniform", "bounds": (0.0, 8.0),
-                  "source": "Alsem et al. 2007 (doi:10.1063/1.2403841); Theillet and Pierron 2009 "
+                  "source": "Alsem et al. 2005 (Appl. Phys. Lett. 86 041914); Theillet and Pierron 2009 "
                             "(doi:10.1063/1.3133357)",
-                  "reason": "fatigue goes on in vacuum with longer lives and runs faster in humid air; no study "
+                  "reason": "fatigue stops in high vacuum (Alsem 2005) and runs faster in humid air; no study "
                             "gives one number per unit RH, so the prior spans none to a strong effect"}),
     # --- temperature (MODEL §10, issue #30; docs/thermal.md) ---------------------------------------
     _range("ambient_temperature", "K", "Temperature of the surroundings and of the teeth away from the contact",
@@ -329,7 +329,7 @@ _SPECS = [
     _range("thermal_conductivity", "W/(m*K)", "Thermal conductivity k of the tooth material (polysilicon)", 0.1,
            3000.0, "from a porous insulator to diamond",
            prior={"distribution": "uniform", "bounds": (15.0, 80.0),
-                  "source": "McConnell, Uma and Goodson 2001 (doi:10.1109/84.946782)",
+                  "source": "Tai, Mastrangelo and Muller 1987 (IEDM); McConnell et al. 2001 (J. Microelectromech. Syst. 10 360)",
                   "reason": "doped and undoped LPCVD polysilicon layers at room temperature, set by grain size "
                             "and doping; single-crystal silicon's 148 W/(m K) bounds it above"}),
     _range("thermal_diffusivity", "m^2/s", "Thermal diffusivity kappa = k / (rho c) of the tooth material", 1e-8,

@@ -13,7 +13,7 @@ a non-uniformly stressed surface is ``A_eff = integral (sigma(s) / sigma_max)^m 
 
 Delayed failure under cyclic load in air (Muhlstein, Brown and Ritchie 2001: lives of 5e5 to
 1e11 cycles at stress amplitudes falling to about half the low-cycle strength; faster in
-humid air, slower in vacuum, Alsem et al. 2007): the characteristic strength falls with the
+humid air, slower or absent in high vacuum, Alsem et al. 2005): the characteristic strength falls with the
 number of load cycles as a power law (the stress-life form of subcritical crack growth),
 
     sigma_theta(N) = sigma_theta N_eff^(-1 / n),    N_eff = N 10^(k_RH (RH - RH_ref))    (2)
@@ -25,7 +25,7 @@ fracture within N cycles and, inverted, the cycles to a given probability
 parameter specs' ``prior``) for the uncertainty analysis.
 
 References: Weibull 1951; Jadaan et al. 2003; Boyce 2010; LaVan et al. 2001; Muhlstein et al. 2001;
-Alsem et al. 2007; Theillet and Pierron 2009 (memstribo.references).
+Alsem et al. 2005; Theillet and Pierron 2009 (memstribo.references).
 """
 
 from __future__ import annotations
@@ -118,7 +118,7 @@ def _cycles(cycles):
     return n
 
 
-@cites("muhlstein_2001", "alsem_2007", "theillet_pierron_2009")
+@cites("muhlstein_2001", "alsem_2005", "theillet_pierron_2009")
 def fatigue_strength_factor(cycles, fatigue_exponent, relative_humidity=FATIGUE_REFERENCE_HUMIDITY,
                             humidity_sensitivity=0.0):
     """sigma_theta(N) / sigma_theta = N_eff^(-1/n), Eq. (2), 1 for N_eff <= 1 [-].
