@@ -329,7 +329,8 @@ _SPECS = [
     _range("thermal_conductivity", "W/(m*K)", "Thermal conductivity k of the tooth material (polysilicon)", 0.1,
            3000.0, "from a porous insulator to diamond",
            prior={"distribution": "uniform", "bounds": (15.0, 80.0),
-                  "source": "Tai, Mastrangelo and Muller 1987 (IEDM); McConnell et al. 2001 (J. Microelectromech. Syst. 10 360)",
+                  "source": "Tai, Mastrangelo and Muller 1987 (IEDM); McConnell et al. 2001 (J. Microelectromech. "
+                            "Syst. 10 360)",
                   "reason": "doped and undoped LPCVD polysilicon layers at room temperature, set by grain size "
                             "and doping; single-crystal silicon's 148 W/(m K) bounds it above"}),
     _range("thermal_diffusivity", "m^2/s", "Thermal diffusivity kappa = k / (rho c) of the tooth material", 1e-8,

@@ -35,7 +35,8 @@ from memstribo.checks import as_array
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["GAS_CONSTANT", "WATER", "REFERENCE_TEMPERATURE", "water_surface_tension", "kelvin_radius", "condensation_height", "laplace_pressure",
+__all__ = ["GAS_CONSTANT", "WATER", "REFERENCE_TEMPERATURE", "water_surface_tension", "kelvin_radius",
+           "condensation_height", "laplace_pressure",
            "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap"]
 
 #: Molar gas constant R [J/(mol K)] (CODATA 2018, exact).

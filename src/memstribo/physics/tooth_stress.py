@@ -19,15 +19,17 @@ component along the centreline (negative: pushing the tooth onto its root). For 
 line of action alone ``M = F_n cos(alpha_Fen) h_Fe`` and the bending term is ISO's
 ``F_t / (b m) Y_F Y_S`` (Eqs. (5), (30)); ISO leaves out the direct stress ``N / (b s_Fn)``,
 memstribo keeps it because friction along the flank changes it (toward the root it presses the
-tooth onto its root, toward the tip it pulls): with it the FE reference agrees within 10 % over
-the cycle for COF up to 0.3 (tests/test_tooth_stress.py; docs/strength.md gives the numbers and
-the one place it does not: a load within about 0.3 m of the fillet, where the beam picture fails
-and FE gives up to twice the formula's stress, a stress below half the cycle's largest). The friction force on both teeth points toward the
-root before the pitch point and toward the tip after it (on the driver away from the pitch
-line, on the driven gear toward it; Buckingham 1949).
+tooth onto its root, toward the tip it pulls). ``h_Fe`` is ISO's lever arm of the normal force;
+below ISO's load point (the outer point of single tooth contact) Y_S keeps its value there
+(:func:`cycle_root_stress`). The friction force on both teeth points toward the root before the
+pitch point and toward the tip after it (on the driver away from the pitch line, on the driven
+gear toward it; Buckingham 1949).
 
 Checked against an independent plane-stress finite-element solve of one tooth with its rim
-(scikit-fem, tests/test_tooth_stress.py): within 10 % (docs/strength.md gives the numbers).
+(scikit-fem, tests/test_tooth_stress.py): the cycle's largest root stress is 6-10 % below the
+FE's for COF 0 to 0.6, beyond 10 % for COF near 1; per contact within 10 % on the upper flank,
+while a load within about 0.3 m of the fillet gets up to half the FE's stress, a stress below
+half the cycle's largest (docs/strength.md gives the numbers).
 
 References
 ----------
@@ -322,7 +324,8 @@ def root_stress(shape: ToothShape, radius, normal_force, friction_force, face_wi
     -------
     dict of numpy.ndarray
         ``tensile`` sigma_F [Pa] (the loaded side's fillet), ``compressive`` sigma_C [Pa] (the other fillet,
-        negative), ``bending`` Y_S 6 M / (b s_Fn^2) [Pa] (ISO's sigma_F0 for a load on the line of action), ``moment`` M [N m], ``axial_force`` N [N], ``lever_arm`` h_Fe [m],
+        negative), ``bending`` Y_S 6 M / (b s_Fn^2) [Pa] (ISO's sigma_F0 for a load on the line of action),
+        ``moment`` M [N m], ``axial_force`` N [N], ``lever_arm`` h_Fe [m],
         ``stress_correction`` Y_S [-], ``section_thickness`` s_Fn [m].
     """
     r = as_array(radius, "radius", "m", positive=True)
@@ -352,8 +355,8 @@ def root_stress(shape: ToothShape, radius, normal_force, friction_force, face_wi
     bending = y_s_factor * 6.0 * np.abs(moment) / (b * s * s)
     axial = force[..., 1]
     direct = axial / (b * s)
-    return {"tensile": bending + direct, "compressive": -bending + direct, "bending": bending, "moment": moment, "axial_force": axial,
-            "lever_arm": lever, "stress_correction": np.broadcast_to(y_s_factor, bending.shape),
+    return {"tensile": bending + direct, "compressive": -bending + direct, "bending": bending, "moment": moment,
+            "axial_force": axial, "lever_arm": lever, "stress_correction": np.broadcast_to(y_s_factor, bending.shape),
             "section_thickness": s}
 
 
