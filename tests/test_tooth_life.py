@@ -10,7 +10,7 @@ from memstribo.errors import InputError
 from memstribo.parameters import get_parameter_values
 from memstribo.physics.coating import available_coatings, get_coating
 from memstribo.quantities import known
-from memstribo.simulations.tooth_life import TOOTH_LIFE_KEYS, synthetic_cycle, tooth_life
+from memstribo.simulations.tooth_life import TOOTH_LIFE_KEYS, fracture_probability_within, synthetic_cycle, tooth_life
 
 
 @pytest.fixture(scope="module")
@@ -106,3 +106,12 @@ def test_new_coatings_run_through_the_coating_command(cli, name):
     assert out["coating"] == name and out["wear"] == 0.0 and out["cof_mean"] > 0
     listed = cli.json("parameters", "--coating", name)
     assert listed["degradation_temperature"] == pytest.approx(673.15)
+
+
+def test_probability_within_n_cycles_starts_at_the_first_load_and_reaches_one_percent_at_the_life(params):
+    light = params.updated({"drive_torque": 0.6e-7})
+    result = tooth_life(synthetic_cycle(light), light)
+    assert fracture_probability_within(result, 1.0) == pytest.approx(result["fracture_probability"], rel=1e-12)
+    assert fracture_probability_within(result, result["cycles_to_fracture_p01"]) == pytest.approx(0.01, rel=1e-9)
+    curve = fracture_probability_within(result, np.logspace(0, 20, 21))
+    assert np.all(np.diff(curve) >= 0) and curve[-1] > 0.01

@@ -19,7 +19,7 @@ from memstribo.errors import InputError
 from memstribo.physics import strength, thermal, tooth_stress
 from memstribo.references import cites
 
-__all__ = ["TOOTH_LIFE_KEYS", "tooth_life", "root_effective_area", "synthetic_cycle"]
+__all__ = ["TOOTH_LIFE_KEYS", "tooth_life", "fracture_probability_within", "root_effective_area", "synthetic_cycle"]
 
 #: keys of :func:`tooth_life` that are numbers (the mesh summary / JSON names; registered in memstribo.quantities)
 TOOTH_LIFE_KEYS = ("root_stress_max", "root_stress_compressive_min", "fracture_probability",
@@ -95,7 +95,8 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
         ``flash_temperature_max`` largest flash temperature rise of the contact over the cycle [K];
         ``bulk_temperature_rise`` of the hotter of the two gears [K]; ``contact_temperature_max`` =
         ambient + bulk + flash [K]; ``root_stress`` per step ``{"pinion": array, "gear": array}`` [Pa];
-        ``flash_temperature`` per step [K]; ``warnings`` (list of str).
+        ``flash_temperature`` per step [K]; ``fatigue`` (the constants of :func:`fracture_probability_within`);
+        ``warnings`` (list of str).
     """
     from memstribo.physics.gear import GearPair
 
@@ -131,9 +132,10 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
         p_tooth[name] = float(-math.expm1(-risk[name]))
     z1, z2 = pair.teeth_pinion, pair.teeth_gear
     p_pair = float(-math.expm1(-(z1 * risk["pinion"] + z2 * risk["gear"])))
-    # a gear tooth sees z1/z2 load cycles per pinion revolution: R(N) = N^(m/n) [z1 R_p + z2 R_g (z1/z2)^(m/n)]
-    risk_cycles = z1 * risk["pinion"] + z2 * risk["gear"] * (z1 / z2) ** (m_w / n_f)
-    n01 = strength.cycles_to_probability(0.01, risk_cycles, m_w, n_f, rh, k_rh)
+    fatigue = {"risk_pinion": z1 * risk["pinion"], "risk_gear": z2 * risk["gear"],
+               "gear_cycles_per_revolution": z1 / z2,
+               "weibull_modulus": m_w, "fatigue_exponent": n_f, "relative_humidity": rh, "humidity_sensitivity": k_rh}
+    n01 = _cycles_to(0.01, fatigue)
     if p_pair >= 0.01:
         warnings.append(f"the probability that a tooth breaks on the first load is {p_pair:.3g} (largest root stress "
                         f"{max(s_max.values()) / 1e9:.3g} GPa against a characteristic strength of "
@@ -171,14 +173,72 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
         "fracture_probability": p_pair,
         "fracture_probability_pinion_tooth": p_tooth["pinion"],
         "fracture_probability_gear_tooth": p_tooth["gear"],
-        "cycles_to_fracture_p01": None if math.isinf(n01) else n01,
+        "cycles_to_fracture_p01": n01,
         "flash_temperature_max": float(np.max(flash)),
         "bulk_temperature_rise": bulk,
         "contact_temperature_max": contact,
         "root_stress": {"pinion": stresses["pinion"]["tensile"], "gear": stresses["gear"]["tensile"]},
         "flash_temperature": flash,
+        "fatigue": fatigue,
         "warnings": warnings,
     }
+
+
+def _risk(fatigue, cycles):
+    """The pair's risk of rupture after N pinion revolutions: each tooth's first-load risk times N_eff^(m/n)."""
+    shift = 10.0 ** (fatigue["humidity_sensitivity"] * (fatigue["relative_humidity"]
+                                                       - strength.FATIGUE_REFERENCE_HUMIDITY))
+    power = fatigue["weibull_modulus"] / fatigue["fatigue_exponent"]
+    n = np.asarray(cycles, dtype=float)
+    gear_cycles = n * fatigue["gear_cycles_per_revolution"]
+    return (fatigue["risk_pinion"] * np.maximum(n * shift, 1.0) ** power
+            + fatigue["risk_gear"] * np.maximum(gear_cycles * shift, 1.0) ** power)
+
+
+def _cycles_to(probability, fatigue):
+    """Pinion revolutions at which the pair's fracture probability reaches ``probability`` (None: never)."""
+    target = -math.log1p(-probability)
+    if fatigue["risk_pinion"] + fatigue["risk_gear"] <= 0:
+        return None
+    if float(_risk(fatigue, 1.0)) >= target:
+        return 1.0
+    log_hi = 1.0
+    while float(_risk(fatigue, 10.0**log_hi)) < target:
+        log_hi += 10.0
+        if log_hi > 300:
+            return None
+    lo, hi = 0.0, log_hi  # bisection on log10 N: the risk rises monotonically with N
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if float(_risk(fatigue, 10.0**mid)) < target:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo < 1e-13:
+            break
+    return 10.0 ** (0.5 * (lo + hi))
+
+
+def fracture_probability_within(result, cycles):
+    """Probability that a tooth of the pair has broken within ``cycles`` pinion revolutions [-].
+
+    ``P(N) = 1 - exp(-sum_teeth R_tooth N_eff^(m/n))`` with each tooth's first-load risk of :func:`tooth_life`
+    (``result["fatigue"]``), a gear tooth seeing z1/z2 load cycles per pinion revolution, and
+    ``N_eff = N 10^(k_RH (RH - 0.4))`` (:mod:`memstribo.physics.strength`, Eq. (2)), at least 1 (the first
+    load). For the damage and lifetime figure, beside the coating's Omega(N).
+
+    Parameters
+    ----------
+    result : dict
+        The return of :func:`tooth_life`.
+    cycles : array_like
+        Pinion revolutions N [-] (>= 0).
+    """
+    from memstribo.checks import as_array
+
+    n = as_array(cycles, "cycles", "", nonnegative=True)
+    out = -np.expm1(-_risk(result["fatigue"], n))
+    return float(out) if np.ndim(out) == 0 else out
 
 
 def synthetic_cycle(params, cof=0.3, steps=41):
