@@ -295,3 +295,20 @@ def test_a_humidity_sweep_reuses_the_previous_points_contacts_without_changing_t
     simulate_mesh(params.updated({"environment": "air", "relative_humidity": 0.6}), steps=11, warm_start=store)
     pressure, stress = store[0]
     assert pressure.shape[0] == 11 and stress > 0 and pressure.min() >= -stress * (1 + 1e-9)
+
+
+def test_water_surface_tension_and_kelvin_radius_follow_the_temperature():
+    """IAPWS R1-76(2014) scaled to 0.072 N/m at 25 degC: exactly today's values at 298.15 K, the measured
+    slope elsewhere (72.0 -> 58.9 mN/m at 100 degC in the IAPWS table: 71.97 and 58.91 mN/m)."""
+    from memstribo.physics.capillary import water_surface_tension
+
+    assert water_surface_tension(298.15) == 0.072
+    assert kelvin_radius(0.4, 298.15) == 0.072 * 18.07e-6 / (8.314462618 * 298.15) / math.log(1 / 0.4)
+    assert water_surface_tension(373.15) == pytest.approx(0.072 * 58.91 / 71.97, rel=1e-3)
+    hot = kelvin_radius(0.4, 350.0)
+    assert hot == pytest.approx(water_surface_tension(350.0) * 18.07e-6 / (8.314462618 * 350.0) / math.log(1 / 0.4),
+                                rel=1e-12)
+    assert hot < kelvin_radius(0.4)  # warmer: weaker surface tension, more thermal energy
+    for bad in (200.0, 700.0):
+        with pytest.raises(InputError, match="liquid range of water"):
+            kelvin_radius(0.4, bad)

@@ -20,7 +20,7 @@ from memstribo.errors import InputError
 
 
 def test_available_coatings():
-    assert available_coatings() == ["FDTS", "OTS"]
+    assert available_coatings() == ["DDMS", "FDTS", "OTS", "W"]
 
 
 def test_ots_values_and_sources():
@@ -50,7 +50,7 @@ def test_coating_weaker_than_bare_silicon(params):
 
 
 def test_unknown_coating_lists_available():
-    with pytest.raises(InputError, match="available: FDTS, OTS"):
+    with pytest.raises(InputError, match="available: DDMS, FDTS, OTS, W"):
         get_coating("teflon")
 
 

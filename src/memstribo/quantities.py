@@ -303,6 +303,29 @@ _ENTRIES = [
     ("contact_adhesion", _TEXT, "contact adhesion", "none or maugis (MODEL 7c)"),
     ("mesh_contact", _TEXT, "mesh contact", "line or surface"),
     ("environment", _TEXT, "environment", "vacuum or air"),
+    # --- tooth strength and temperature (MODEL §10, issue #30; docs/strength.md, docs/thermal.md) ---------
+    ("root_stress", "Pa", "tooth root stress", "tensile stress in the loaded root fillet: ISO 6336-3 method B "
+     "(30 deg tangent section, Y_S) with the moment and the direct stress of the normal and the friction force; "
+     "as root_stress_max of a cycle [pinion, gear]"),
+    ("root_stress_compressive_min", "Pa", "most compressive root stress",
+     "most compressive stress in the unloaded root fillet over the cycle, [pinion, gear]"),
+    ("root_effective_area", "m^2", "effective stressed area of the root",
+     "Weibull effective area b integral (sigma/sigma_max)^m ds of the loaded root and flank, [pinion, gear]"),
+    ("fracture_probability", "1", "fracture probability on the first load",
+     "probability that any tooth of the pair breaks on the first load (Weibull, size effect by area)"),
+    ("fracture_probability_pinion_tooth", "1", "fracture probability of a pinion tooth",
+     "probability that one pinion tooth breaks on the first load"),
+    ("fracture_probability_gear_tooth", "1", "fracture probability of a gear tooth",
+     "probability that one gear tooth breaks on the first load"),
+    ("cycles_to_fracture_p01", "1", "cycles to 1 % fracture probability",
+     "pinion revolutions until a tooth of the pair has broken with probability 1 % (delayed failure of "
+     "polysilicon in air, strength falling as N^(-1/n)); null without tensile stress"),
+    ("flash_temperature", "K", "flash temperature rise", "mean contact temperature rise over the band at the step "
+     "(Jaeger's moving band source, Blok's partition)"),
+    ("bulk_temperature_rise", "K", "bulk temperature rise", "rise of the hotter gear's temperature from the mean "
+     "friction power over the heat conductance to its surroundings"),
+    ("contact_temperature_max", "K", "largest contact temperature",
+     "ambient temperature + bulk temperature rise + largest flash temperature rise"),
 ]
 
 QUANTITIES: dict[str, Quantity] = {name: Quantity(name, unit, long, text) for name, unit, long, text in _ENTRIES}

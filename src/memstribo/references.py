@@ -119,6 +119,93 @@ REFERENCES: dict[str, str] = {
         "G. M. Hamilton, L. E. Goodman, 'The stress field created by a circular sliding contact', "
         "J. Appl. Mech. 33 (1966) 371-376. doi:10.1115/1.3625051"
     ),
+    "iso_6336_3": (
+        "ISO 6336-3:2019, Calculation of load capacity of spur and helical gears - Part 3: Calculation of tooth "
+        "bending strength (method B: 30 deg tangent critical section, form factor Y_F, stress correction factor Y_S)."
+    ),
+    "iso_53": (
+        "ISO 53:1998, Cylindrical gears for general and heavy engineering - Standard basic rack tooth profile "
+        "(dedendum 1.25 m, root fillet radius 0.38 m)."
+    ),
+    "buckingham_1949": "E. Buckingham, Analytical Mechanics of Gears, McGraw-Hill, 1949 (Dover reprint 1988).",
+    "weibull_1951": (
+        "W. Weibull, 'A statistical distribution function of wide applicability', J. Appl. Mech. 18 (1951) "
+        "293-297. doi:10.1115/1.4010337"
+    ),
+    "jadaan_2003": (
+        "O. M. Jadaan, N. N. Nemeth, J. Bagdahn, W. N. Sharpe Jr., 'Probabilistic Weibull behavior and mechanical "
+        "properties of MEMS brittle materials', J. Mater. Sci. 38 (2003) 4087-4113. doi:10.1023/A:1026317303377"
+    ),
+    "boyce_2010": (
+        "B. L. Boyce, 'A sequential tensile method for rapid characterization of extreme-value behavior in "
+        "microfabricated materials', Exp. Mech. 50 (2010) 993-997 (over 1000 polysilicon tensile tests; "
+        "threshold strength 1.446 GPa). doi:10.1007/s11340-009-9286-x"
+    ),
+    "lavan_2001": (
+        "D. A. LaVan, T. Tsuchiya, G. Coles, W. G. Knauss, I. Chasiotis, D. Read, 'Cross comparison of direct "
+        "strength testing techniques on polysilicon films', in Mechanical Properties of Structural Films, ASTM STP "
+        "1413, C. L. Muhlstein and S. B. Brown (eds.), ASTM, West Conshohocken, 2001."
+    ),
+    "muhlstein_2001": (
+        "C. L. Muhlstein, S. B. Brown, R. O. Ritchie, 'High-cycle fatigue of polycrystalline silicon thin films in "
+        "laboratory air', Mater. Res. Soc. Symp. Proc. (2001), Materials Science of Microelectromechanical "
+        "Systems (MEMS) Devices III: 13 notched 2 um-thick cantilevers cycled to failure in laboratory air "
+        "(about 25 degC, 30-50 % RH), lives 5e5 to 1e11 cycles, the stress amplitude at failure falling to about "
+        "50 % of the low-cycle strength beyond 1e9 cycles."
+    ),
+    "alsem_2005": (
+        "D. H. Alsem, E. A. Stach, C. L. Muhlstein, R. O. Ritchie, 'Fatigue failure in thin-film polycrystalline "
+        "silicon is due to subcritical cracking within the oxide layer', Appl. Phys. Lett. 86 (2005) 041914 (no "
+        "fatigue in high vacuum, where oxidation and moisture are suppressed)."
+    ),
+    "theillet_pierron_2009": (
+        "P.-O. Theillet, O. N. Pierron, 'Fatigue rates of monocrystalline silicon thin films in harsh environments: "
+        "influence of stress amplitude, relative humidity, and temperature', Appl. Phys. Lett. 94 (2009) 181915. "
+        "doi:10.1063/1.3133357"
+    ),
+    "jaeger_1942": (
+        "J. C. Jaeger, 'Moving sources of heat and the temperature at sliding contacts', Proc. R. Soc. N.S.W. 76 "
+        "(1942) 203-224."
+    ),
+    "blok_1937": (
+        "H. Blok, 'Theoretical study of temperature rise at surfaces of actual contact under oiliness lubricating "
+        "conditions', Proc. General Discussion on Lubrication, IMechE, London, 1937, vol. 2, pp. 222-235."
+    ),
+    "carslaw_jaeger_1959": "H. S. Carslaw, J. C. Jaeger, Conduction of Heat in Solids, 2nd ed., Oxford, 1959.",
+    "mcconnell_2001": (
+        "A. D. McConnell, U. Srinivasan, M. Asheghi, K. E. Goodson, 'Thermal conductivity of doped polysilicon "
+        "layers', J. Microelectromech. Syst. 10 (2001) 360-369 (LPCVD layers near 1 um thick, B and P doped)."
+    ),
+    "tai_1987": (
+        "Y. C. Tai, C. H. Mastrangelo, R. S. Muller, 'Thermal conductivity of heavily doped LPCVD polysilicon', "
+        "IEEE International Electron Devices Meeting, Technical Digest 33 (1987) 278-281 (0.30-0.35 W/(cm K))."
+    ),
+    "incropera_2007": (
+        "F. P. Incropera, D. P. DeWitt, T. L. Bergman, A. S. Lavine, Fundamentals of Heat and Mass Transfer, 6th "
+        "ed., Wiley, 2007 (silicon and air property tables A.1, A.4)."
+    ),
+    "iapws_2014": (
+        "IAPWS R1-76(2014), Revised Release on Surface Tension of Ordinary Water Substance, International "
+        "Association for the Properties of Water and Steam, 2014."
+    ),
+    "kluth_1997": (
+        "G. J. Kluth, M. M. Sung, R. Maboudian, 'Thermal behavior of alkylsiloxane self-assembled monolayers on the "
+        "oxidized Si(100) surface', Langmuir 13 (1997) 3775-3780."
+    ),
+    "zhuang_2006": (
+        "Y. X. Zhuang, O. Hansen, T. Knieling, C. Wang, P. Rombach, W. Lang, W. Benecke, M. Kehlenbeck, J. Koblitz, "
+        "'Thermal stability of vapor phase deposited self-assembled monolayers for MEMS anti-stiction', "
+        "J. Micromech. Microeng. 16 (2006) 2259-2264. doi:10.1088/0960-1317/16/11/002"
+    ),
+    "mani_2000": (
+        "S. S. Mani et al. (Sandia National Laboratories), 'Effect of W coating on microengine performance', "
+        "Proc. IEEE Int. Reliability Physics Symposium (2000) 146-151 (selective CVD of tungsten on polysilicon "
+        "MEMS; improved wear resistance of microengines)."
+    ),
+    "lassner_schubert_1999": (
+        "E. Lassner, W.-D. Schubert, Tungsten: Properties, Chemistry, Technology of the Element, Alloys, and "
+        "Chemical Compounds, Kluwer Academic/Plenum Publishers, New York, 1999."
+    ),
 }
 
 _used: dict[str, None] = {}

@@ -15,7 +15,8 @@ def register(subparsers, parents):
     parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=HELP + (
         ". The pinion's coating is fully worn and a fraction Omega of the gear's (thesis 5.5.3): "
         "Omega = 0 is the fully coated pair, Omega = 1 bare silicon (equal to 'memstribo mesh')."))
-    parser.add_argument("--coating", default="OTS", help="coating name: OTS (default) or FDTS")
+    parser.add_argument("--coating", default="OTS", help="coating name: OTS (default), FDTS, DDMS or W (parameter sets in "
+                        "parameters/coatings; 'memstribo parameters --coating NAME' shows one)")
     parser.add_argument("--wear", default=None, metavar="W",
                         help="worn fraction Omega from 0 to 1, or a comma-separated list '0,0.2,0.4' for a table "
                              "(default: the parameter coating_wear)")

@@ -13,7 +13,7 @@ def register(subparsers, parents):
     parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=HELP)
     parser.add_argument("--toml", action="store_true", help="print the parameters as TOML (a valid --config file)")
     parser.add_argument("--coating", metavar="NAME",
-                        help="list a coating's parameter set instead (OTS, FDTS), with the values that --set "
+                        help="list a coating's parameter set instead (OTS, FDTS, DDMS, W), with the values that --set "
                              "coating_<property>=... or a config file replace")
     parser.set_defaults(handler=run)
 
@@ -44,7 +44,10 @@ def _coating(args, params):
     from memstribo.physics.coating import _UNITS, coating_config, get_coating
 
     coating = get_coating(args.coating, params)
-    names = ("vdw_bond_energy", "hamaker_constant", "cutoff_distance", "work_of_adhesion", "water_contact_angle_deg")
+    names = ("vdw_bond_energy", "hamaker_constant", "cutoff_distance", "work_of_adhesion", "water_contact_angle_deg",
+             "degradation_temperature")
+    notes = {"water_contact_angle_deg": "(informative)", "degradation_temperature": "(a contact temperature past it "
+             "is a warning)"}
     if args.toml:
         print(coating_config(coating, "as listed by 'memstribo parameters --coating'"), end="")
         return None
@@ -56,6 +59,6 @@ def _coating(args, params):
     for name in names:
         unit = _UNITS[name]
         lines.append(f"  {name:<24} {format_quantity(getattr(coating, name), unit):<16} "
-                     + ("(--set coating_" + name + "=...)" if name != "water_contact_angle_deg" else "(informative)"))
+                     + notes.get(name, "(--set coating_" + name + "=...)"))
         lines.append(f"  {'':<24} source: {coating.sources.get(name, '')}")
     return CommandResult(values={}, title=f"coating '{coating.name}': {coating.description}", notes=lines)

@@ -36,6 +36,10 @@ class ParameterSpec:
         Whether the value may be ``None`` ("derive it", see the description).
     choices : tuple of str or None
         Allowed values of a string parameter.
+    prior : dict or None
+        Uncertainty of the value for the uncertainty analysis (MODEL 7d): ``distribution``
+        (``"uniform"``, ``"loguniform"``, ``"normal"``, ``"lognormal"``), ``bounds`` (low, high) in the
+        SI unit (for normal/lognormal: the 2.5 % and 97.5 % quantiles), ``source`` and ``reason``.
     why : str
         Why the range is what it is (shown with the range in ``memstribo parameters`` and in
         the message of a value outside it). Every number has both bounds: a value far outside
@@ -54,6 +58,7 @@ class ParameterSpec:
     optional: bool = False
     choices: tuple[str, ...] | None = None
     why: str = ""
+    prior: dict | None = None
 
     @property
     def description_with_bounds(self) -> str:
@@ -279,6 +284,75 @@ _SPECS = [
     _range("ideal_shear_strength", "Pa", "Ideal shear strength of the tooth material: a friction stress above it is "
            "flagged as a warning (silicon: about 6.8 GPa, Roundy and Cohen 2001)", 1e6, 1e12,
            "1 MPa to 1 TPa (above the strength of any solid)"),
+    # --- tooth strength and fatigue (MODEL §10, issue #30; docs/strength.md) -----------------------
+    _range("dedendum_coefficient", "", "Dedendum h_f of the teeth in modules (root circle r - h_f m)", 1.0, 2.0,
+           "the root must lie below the mating tip (1 m) with clearance; beyond 2 m the tooth is a post",
+           prior={"distribution": "uniform", "bounds": (1.2, 1.35), "source": "ISO 53:1998 basic rack (1.25 m)",
+                  "reason": "mask layouts use 1.2-1.35 m; the etch moves the root by a fraction of a micron"}),
+    _range("root_fillet_coefficient", "", "Root fillet radius rho_f of the teeth in modules (circular fillet "
+           "tangent to the flank and the root circle)", 0.05, 0.6,
+           "a sharp etched corner (0.05 m) to the largest fillet a standard tooth space holds",
+           prior={"distribution": "uniform", "bounds": (0.25, 0.45), "source": "ISO 53:1998 profile A (0.38 m)",
+                  "reason": "lithography rounds corners by about the resolution (0.3-1 um at m = 3.9 um)"}),
+    _range("strength_characteristic", "Pa", "Weibull characteristic tensile strength sigma_theta of the tooth "
+           "material at the reference area (polysilicon)", 1e7, 2e10,
+           "a strength must be positive; 10 MPa (a cracked ceramic) to 20 GPa (the ideal strength of silicon)",
+           prior={"distribution": "uniform", "bounds": (1.5e9, 3.5e9),
+                  "source": "LaVan et al. 2001 (ASTM STP 1413); Jadaan et al. 2003 "
+                            "(doi:10.1023/A:1026317303377); Boyce 2010 (doi:10.1007/s11340-009-9286-x)",
+                  "reason": "mean tensile strengths of surface-micromachined polysilicon from different labs and "
+                            "foundries span 1.2-3.4 GPa; Boyce's threshold 1.45 GPa bounds it below"}),
+    _range("weibull_modulus", "", "Weibull modulus m of the tensile strength", 0.0, 100.0,
+           "m > 0 (m <= 0 is no distribution); above 100 the scatter is below any measurement's",
+           prior={"distribution": "uniform", "bounds": (5.0, 20.0),
+                  "source": "Jadaan et al. 2003 (doi:10.1023/A:1026317303377), review of polysilicon MEMS data",
+                  "reason": "reported polysilicon Weibull moduli lie between about 5 and 20"}),
+    _range("strength_reference_area", "m^2", "Effective stressed (sidewall) area A_0 of the specimens that "
+           "measured strength_characteristic", 1e-14, 1e-4, "from a 100 nm square to a square centimetre",
+           prior={"distribution": "loguniform", "bounds": (1e-10, 3e-9),
+                  "source": "tensile bars of LaVan et al. 2001 and Boyce 2010 (gauge sections of a few um by tens "
+                            "to hundreds of um)",
+                  "reason": "the sidewall area of the specimens' gauge sections; their lengths differ by a decade"}),
+    _range("fatigue_exponent", "", "Exponent n of the strength's fall with load cycles, sigma(N) = sigma N^(-1/n)",
+           1.0, 1000.0, "n = 1 is a strength gone in ten cycles; above 1000 there is no fatigue",
+           prior={"distribution": "uniform", "bounds": (20.0, 45.0),
+                  "source": "Muhlstein, Brown and Ritchie 2001 (Mater. Res. Soc. Symp. Proc.)",
+                  "reason": "stress amplitude at failure about 50 % of the low-cycle strength at 1e9-1e11 cycles: "
+                            "n = log(N)/log(2) = 30-37; their scatter widens it"}),
+    _range("fatigue_humidity_sensitivity", "", "Decades of fatigue life lost per unit of relative humidity above "
+           "0.4 (the humidity of the stress-life data)", 0.0, 20.0,
+           "0 (no humidity effect) to 20 decades per unit RH (any reported effect is smaller)",
+           exclusive_minimum=False,
+           prior={"distribution": "uniform", "bounds": (0.0, 8.0),
+                  "source": "Alsem et al. 2005 (Appl. Phys. Lett. 86 041914); Theillet and Pierron 2009 "
+                            "(doi:10.1063/1.3133357)",
+                  "reason": "fatigue stops in high vacuum (Alsem 2005) and runs faster in humid air; no study "
+                            "gives one number per unit RH, so the prior spans none to a strong effect"}),
+    # --- temperature (MODEL §10, issue #30; docs/thermal.md) ---------------------------------------
+    _range("ambient_temperature", "K", "Temperature of the surroundings and of the teeth away from the contact",
+           0.0, 1687.0, "above 0 K and below the melting point of silicon (1687 K)", exclusive_maximum=True,
+           prior={"distribution": "uniform", "bounds": (288.15, 308.15), "source": "laboratory conditions",
+                  "reason": "a packaged MEMS at room temperature, 15-35 degC"}),
+    _range("thermal_conductivity", "W/(m*K)", "Thermal conductivity k of the tooth material (polysilicon)", 0.1,
+           3000.0, "from a porous insulator to diamond",
+           prior={"distribution": "uniform", "bounds": (15.0, 80.0),
+                  "source": "Tai, Mastrangelo and Muller 1987 (IEDM); McConnell et al. 2001 (J. Microelectromech. "
+                            "Syst. 10 360)",
+                  "reason": "doped and undoped LPCVD polysilicon layers at room temperature, set by grain size "
+                            "and doping; single-crystal silicon's 148 W/(m K) bounds it above"}),
+    _range("thermal_diffusivity", "m^2/s", "Thermal diffusivity kappa = k / (rho c) of the tooth material", 1e-8,
+           1e-3, "from polymers to diamond",
+           prior={"distribution": "uniform", "bounds": (9.2e-6, 4.9e-5),
+                  "source": "thermal_conductivity's range over rho c = 2330 kg/m^3 x 703 J/(kg K) (silicon, "
+                            "Incropera et al. 2007, Table A.1)",
+                  "reason": "the conductivity's uncertainty; rho c of silicon is known to 1 %"}),
+    _range("heat_transfer_coefficient", "W/(m^2*K)", "Heat conductance per unit area from a gear's face to its "
+           "surroundings (the bulk temperature rise is the mean friction power over h times the face area)", 1.0,
+           1e7, "from still air to a bonded metal contact",
+           prior={"distribution": "loguniform", "bounds": (1e3, 1e5),
+                  "source": "conduction across the air gap to the substrate, k_air / g with k_air = 0.026 W/(m K) "
+                            "(Incropera et al. 2007, Table A.4)",
+                  "reason": "gaps of 0.3 to 20 um between a released gear and its substrate"}),
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}

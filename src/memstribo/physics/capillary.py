@@ -35,7 +35,8 @@ from memstribo.checks import as_array
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["GAS_CONSTANT", "WATER", "kelvin_radius", "condensation_height", "laplace_pressure",
+__all__ = ["GAS_CONSTANT", "WATER", "REFERENCE_TEMPERATURE", "water_surface_tension", "kelvin_radius",
+           "condensation_height", "laplace_pressure",
            "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap"]
 
 #: Molar gas constant R [J/(mol K)] (CODATA 2018, exact).
@@ -43,6 +44,49 @@ GAS_CONSTANT = 8.314462618
 
 #: Water at 25 degC: surface tension [N/m] and molar volume [m^3/mol] (Israelachvili 2011, Table 17.1).
 WATER = {"surface_tension": 0.072, "molar_volume": 18.07e-6}
+
+#: temperature of the values in :data:`WATER` [K]
+REFERENCE_TEMPERATURE = 298.15
+#: IAPWS R1-76(2014) surface tension of water: critical temperature [K], B [N/m], b [-], mu [-]
+_IAPWS = (647.096, 0.2358, -0.625, 1.256)
+#: lowest temperature of the IAPWS correlation (supercooled water) [K]
+WATER_MIN_TEMPERATURE = 248.15
+
+
+def _iapws_surface_tension(temperature):
+    t_c, big_b, small_b, mu = _IAPWS
+    tau = 1.0 - temperature / t_c
+    return big_b * tau**mu * (1.0 + small_b * tau)
+
+
+@cites("iapws_2014", "israelachvili_2011")
+def water_surface_tension(temperature=REFERENCE_TEMPERATURE):
+    """Surface tension of water at ``temperature`` [N/m]: 0.072 N/m at 25 degC scaled by the IAPWS correlation.
+
+    ``gamma(T) = 0.072 gamma_IAPWS(T) / gamma_IAPWS(298.15 K)`` with ``gamma_IAPWS = B tau^mu (1 + b tau)``,
+    ``tau = 1 - T / 647.096 K`` (IAPWS R1-76(2014)): exactly :data:`WATER`'s 0.072 N/m at 298.15 K, and
+    the measured temperature dependence (-0.16 mN/(m K) near room temperature) elsewhere.
+
+    Parameters
+    ----------
+    temperature : numeric
+        T [K], from 248.15 K (supercooled water, the correlation's lower end) to below the critical
+        point 647.096 K (no liquid water, so no meniscus, above it).
+
+    Raises
+    ------
+    InputError
+        A temperature outside that range: no liquid water, so no capillary meniscus.
+    """
+    t = as_array(temperature, "temperature", "K", positive=True)
+    if np.any(t < WATER_MIN_TEMPERATURE) or np.any(t >= _IAPWS[0]):
+        raise InputError(f"temperature {temperature!r} K is outside the liquid range of water that the capillary "
+                         f"model needs ({WATER_MIN_TEMPERATURE:g} K to below the critical point {_IAPWS[0]:g} K): "
+                         "no menisci can form there.")
+    if np.ndim(t) == 0 and float(t) == REFERENCE_TEMPERATURE:
+        return WATER["surface_tension"]
+    result = WATER["surface_tension"] * (_iapws_surface_tension(t) / _iapws_surface_tension(REFERENCE_TEMPERATURE))
+    return float(result) if np.ndim(result) == 0 else result
 
 
 def _humidity(relative_humidity):
@@ -62,7 +106,7 @@ def _angles(*theta):
 
 
 @cites("israelachvili_2011")
-def kelvin_radius(relative_humidity, temperature=298.15, surface_tension=WATER["surface_tension"],
+def kelvin_radius(relative_humidity, temperature=REFERENCE_TEMPERATURE, surface_tension=None,
                   molar_volume=WATER["molar_volume"]):
     """Kelvin radius of a water meniscus, ``r_K = gamma V_m / (R T ln(1/RH))``, Eq. (17.21) in [3]_.
 
@@ -72,10 +116,11 @@ def kelvin_radius(relative_humidity, temperature=298.15, surface_tension=WATER["
         RH = p / p_sat [-], in [0, 1).
     temperature : numeric
         T [K], > 0.
-    surface_tension : numeric
-        gamma of the liquid [N/m].
+    surface_tension : numeric, optional
+        gamma of the liquid [N/m]; default water's at ``temperature`` (:func:`water_surface_tension`,
+        0.072 N/m at 298.15 K).
     molar_volume : numeric
-        V_m of the liquid [m^3/mol].
+        V_m of the liquid [m^3/mol] (water's at 25 degC; it changes by under 4 % from 0 to 100 degC).
 
     Returns
     -------
@@ -89,6 +134,8 @@ def kelvin_radius(relative_humidity, temperature=298.15, surface_tension=WATER["
     """
     rh = _humidity(relative_humidity)
     t = as_array(temperature, "temperature", "K", positive=True)
+    if surface_tension is None:
+        surface_tension = water_surface_tension(temperature)
     gamma = as_array(surface_tension, "surface_tension", "N/m", positive=True)
     volume = as_array(molar_volume, "molar_volume", "m^3/mol", positive=True)
     scale = gamma * volume / (GAS_CONSTANT * t)

@@ -43,6 +43,9 @@ class Coating:
         Work of adhesion of the coated pair w [J/m^2].
     water_contact_angle_deg : float
         Static water contact angle [deg] (informative).
+    degradation_temperature : float
+        Temperature above which the coating degrades in air [K] (published; a contact temperature
+        past it is a warning, :func:`memstribo.simulations.tooth_life.tooth_life`).
     description : str
         Chemistry in words.
     sources : dict
@@ -55,6 +58,7 @@ class Coating:
     cutoff_distance: float
     work_of_adhesion: float
     water_contact_angle_deg: float = math.nan
+    degradation_temperature: float = math.nan
     description: str = ""
     sources: dict = field(default_factory=dict, compare=False, hash=False)
 
@@ -72,7 +76,7 @@ class Coating:
 
 
 _UNITS = {"vdw_bond_energy": "J", "hamaker_constant": "J", "cutoff_distance": "m", "work_of_adhesion": "J/m^2",
-          "water_contact_angle_deg": "deg"}
+          "water_contact_angle_deg": "deg", "degradation_temperature": "K"}
 
 
 @functools.lru_cache(maxsize=None)
@@ -98,7 +102,8 @@ def get_coating(name: str = "OTS", params=None) -> Coating:
     Parameters
     ----------
     name : str
-        ``"OTS"`` (octadecyltrichlorosilane, the thesis's coating, default) or ``"FDTS"``.
+        ``"OTS"`` (octadecyltrichlorosilane, the thesis's coating, default), ``"FDTS"``, ``"DDMS"`` or
+        ``"W"`` (a tungsten coating); :func:`available_coatings` lists them.
     params : memstribo.parameters.Parameters, optional
         Its ``coating_*`` parameters that are set (``--set coating_vdw_bond_energy=...``, a
         config file from ``memstribo coating --calibrate --out``) replace the coating's values;
@@ -111,7 +116,8 @@ def get_coating(name: str = "OTS", params=None) -> Coating:
     Raises
     ------
     InputError
-        For an unknown name; the message lists the available coatings.
+        For an unknown name (the message lists the available coatings), or a coating file without a
+        degradation temperature.
     """
     files = _coating_files()
     key = str(name).strip().upper()
@@ -127,6 +133,10 @@ def get_coating(name: str = "OTS", params=None) -> Coating:
             raise InputError(f"coating file {key}: {prop} must be given in {_UNITS[prop]}, not {entry.get('unit')!r}.")
         values[prop] = float(entry["value"])
         sources[prop] = entry["source"]
+    if not (math.isfinite(values.get("degradation_temperature", math.nan)) and values["degradation_temperature"] > 0):
+        raise InputError(f"coating file {key} has no degradation temperature: every coating needs "
+                         "[properties.degradation_temperature] (value in K and a published source), the "
+                         "temperature above which it degrades in air.")
     if params is not None:
         for prop in _OVERRIDABLE:
             value = params[f"coating_{prop}"] if f"coating_{prop}" in params else None
