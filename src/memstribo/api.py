@@ -104,6 +104,8 @@ def parameter_set(name: str = "silicon_thesis", overrides: dict | None = None, *
     memstribo.parameters.Parameters
         Every value validated and in SI, with its source (``"Python API"`` for the changes).
     """
+    from memstribo.checks import check_parameter_set_arguments
+    check_parameter_set_arguments(name, overrides)
     from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values(name)
@@ -179,6 +181,10 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     -------
     MeshCycle
     """
+    from memstribo.checks import check_coating_wear, check_mesh_arguments, check_unused_values
+    check_mesh_arguments(params, steps, realisations, wear)
+    check_unused_values(params or parameter_set())
+    check_coating_wear(params or parameter_set(), coating)
     from memstribo.physics.coating import get_coating
     from memstribo.simulations.mesh import simulate_ensemble, simulate_mesh, summarize
 
@@ -214,6 +220,8 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
         One dimension named after the swept quantity (``normal_load``, ``drive_torque`` or
         ``area_multiple``), a variable per numeric summary key, each with ``units``.
     """
+    from memstribo.checks import check_mesh_arguments
+    check_mesh_arguments(params, steps, 1, wear)
     import numpy as np
     import xarray as xr
 

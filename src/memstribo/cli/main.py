@@ -100,6 +100,9 @@ def load_parameters(args: argparse.Namespace):
     if args.overrides:
         overrides = dict(parse_assignment(text) for text in args.overrides)
         params = params.updated(overrides, origin="--set")
+    from memstribo.checks import check_unused_values
+
+    check_unused_values(params)
     return params
 
 
