@@ -268,3 +268,76 @@ def test_version_option_prints_it(capsys):
     with pytest.raises(SystemExit) as stop:
         main(["--version"])
     assert stop.value.code == 0 and capsys.readouterr().out.strip() == f"memstribo {memstribo.__version__}"
+
+
+# --- the command line: JSON errors, parameters with bounds, quiet and verbose, completion -----------------
+
+def _json_error(out):
+    import json
+
+    value = json.loads(out)
+    assert set(value) >= {"error", "parameter"}
+    return value
+
+
+def test_gear_json_error_in_degrees(cli):
+    code, out, err = cli("gear", "--json", "--set", "pressure_angle=95 deg")
+    assert code == 2
+    value = _json_error(out)
+    assert value["parameter"] == "pressure_angle" and "10 to 35 deg" in value["error"] and value["error"] in err
+
+
+@pytest.mark.parametrize("argv,parameter", [
+    (("mesh", "--json", "--steps", "x"), "--steps"),  # a usage error (argparse)
+    (("mesh", "--json", "--realisations", "0", "--steps", "5"), "--realisations"),
+    (("constants", "--json", "--set", "normal_load=5 kg"), "normal_load"),
+    (("roughness", "--json", "/dev/zero"), None),
+])
+def test_json_errors_are_one_object_on_stdout(cli, capsys, argv, parameter):
+    try:
+        code, out, err = cli(*argv)
+    except SystemExit as stop:  # argparse exits from inside main
+        code, (out, err) = stop.code, capsys.readouterr()
+    assert code == 2 and err.strip()
+    assert _json_error(out)["parameter"] == parameter
+
+
+def test_errors_without_json_leave_stdout_empty(cli):
+    code, out, err = cli("gear", "--set", "pressure_angle=95 deg")
+    assert code == 2 and out == "" and "pressure_angle" in err
+
+
+def test_parameters_json_gives_units_bounds_and_sources(cli):
+    values = cli.json("parameters", "--set", "normal_load=50 uN")
+    assert values["normal_load"] == 50e-6  # the flat values stay
+    entry = values["parameters"]["normal_load"]
+    assert entry["unit"] == "N" and entry["source"] == "--set" and entry["value"] == 50e-6
+    assert entry["minimum"] < entry["value"] < entry["maximum"]
+    from memstribo.parameters.definitions import SPECS
+
+    assert set(values["parameters"]) == set(SPECS)
+    assert values["parameters"]["load_case"]["choices"] == ["torque", "thesis"]
+
+
+@pytest.mark.parametrize("command", ["mesh", "sweep", "run", "map", "study", "slide", "coating", "damage"])
+def test_long_commands_take_quiet_and_verbose(capsys, command):
+    from memstribo.cli.main import main
+
+    with pytest.raises(SystemExit):
+        main([command, "--help"])
+    text = capsys.readouterr().out
+    assert "--quiet" in text and "--verbose" in text
+
+
+def test_quiet_prints_the_values_only(cli):
+    code, out, err = cli("slide", "--model", "estimate", "--quiet")
+    assert code == 0 and err == ""
+    code_loud, loud, _ = cli("slide", "--model", "estimate")
+    assert len(out.splitlines()) < len(loud.splitlines())
+
+
+def test_completion_is_declared_and_hooked():
+    pyproject = (REPO / "pyproject.toml").read_text(encoding="utf-8")
+    assert "argcomplete" in pyproject
+    main_source = (REPO / "src" / "memstribo" / "cli" / "main.py").read_text(encoding="utf-8")
+    assert "PYTHON_ARGCOMPLETE_OK" in main_source and "argcomplete.autocomplete(parser)" in main_source

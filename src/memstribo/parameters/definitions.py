@@ -75,7 +75,11 @@ class ParameterSpec:
             parts.append(f"{'<' if self.exclusive_maximum else '<='} {self.maximum:g}")
         what = "an integer" if self.kind == "int" else "a number"
         text = what + (" " + " and ".join(parts) if parts else "")
-        if self.unit:
+        if self.unit == "rad" and self.minimum is not None and self.maximum is not None:
+            # angles are read and written in degrees: the range in degrees too
+            text += (f" (SI unit rad, i.e. {math.degrees(self.minimum):.4g} to {math.degrees(self.maximum):.4g} deg; "
+                     "or a value with a unit, '20 deg')")
+        elif self.unit:
             text += f" (SI unit {self.unit}, or a value with a unit)"
         if self.optional:
             text += ", or unset to derive it"
