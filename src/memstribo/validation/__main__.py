@@ -64,6 +64,13 @@ def format_value(row: ValidationRow) -> str:
     return format_number(row.value)
 
 
+def _verdict(row: ValidationRow) -> str:
+    """The "agrees" cell: yes, or **no** with "known" where the source fixes the row as a known difference."""
+    if row.agrees:
+        return "yes"
+    return "**no** (known: differs)" if row.expected == "differs" else "**no**"
+
+
 def _cell(text: str) -> str:
     return str(text).replace("|", "\\|").replace("\n", " ").strip()
 
@@ -78,7 +85,7 @@ def render_markdown(rows: list[ValidationRow]) -> str:
     """docs/validation.md as text: a summary, then one table per topic (in first-seen order)."""
     counts = summary(rows)
     lines = [HEADER, f"**{counts['rows']} comparisons: {counts['agree']} agree, {counts['differ']} differ "
-             "(on purpose where the tolerance says 'differs'; see the notes).**", ""]
+             "(known differences, each fixed in its row's source with the reason in the note).**", ""]
     topics = list(dict.fromkeys(row.topic for row in rows))
     if not topics:
         lines += ["No validation rows yet.", ""]
@@ -90,7 +97,7 @@ def render_markdown(rows: list[ValidationRow]) -> str:
             lines.append("| " + " | ".join([
                 _cell(row.quantity), _cell(row.reference), format_number(row.reference_value),
                 format_value(row), _cell(row.unit), _cell(row.tolerance),
-                "yes" if row.agrees else "**no**", f"`{_cell(row.command)}`" if row.command else "",
+                _verdict(row), f"`{_cell(row.command)}`" if row.command else "",
                 _cell(row.note)]) + " |")
         lines.append("")
     return "\n".join(lines)
