@@ -341,3 +341,21 @@ def test_completion_is_declared_and_hooked():
     assert "argcomplete" in pyproject
     main_source = (REPO / "src" / "memstribo" / "cli" / "main.py").read_text(encoding="utf-8")
     assert "PYTHON_ARGCOMPLETE_OK" in main_source and "argcomplete.autocomplete(parser)" in main_source
+
+
+# --- results folders: two runs into one --out, --overwrite, a damaged partial result resumed ---------------
+
+def test_two_runs_into_one_out_overwrite_and_a_damaged_run_json(cli, tmp_path):
+    config = tmp_path / "small.toml"
+    config.write_text('[run]\nstages = ["gear"]\nvalidation = false\n')
+    out = tmp_path / "out"
+    code, _, err = cli("run", config, "--out", out, "--progress", "off")
+    assert code == 0, err
+    first = (out / "run.json").read_text()
+    code, _, err = cli("run", config, "--out", out, "--progress", "off")  # the second run into the same --out
+    assert code == 2 and "not empty" in err and (out / "run.json").read_text() == first
+    code, _, err = cli("run", config, "--out", out, "--overwrite", "--progress", "off")
+    assert code == 0, err
+    (out / "run.json").write_text(first[: len(first) // 2])  # cut short
+    code, _, err = cli("run", config, "--out", out, "--resume", "--progress", "off")
+    assert code == 2 and "not a run.json of memstribo" in err and "Traceback" not in err
