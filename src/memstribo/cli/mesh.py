@@ -126,6 +126,9 @@ def run(args, params):
     if realisations > 1:
         client = None
         if args.scheduler:
+            from memstribo.simulations.study import require_dask
+
+            require_dask("--scheduler")
             from distributed import Client
 
             client = Client(args.scheduler)
