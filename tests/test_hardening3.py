@@ -359,3 +359,10 @@ def test_two_runs_into_one_out_overwrite_and_a_damaged_run_json(cli, tmp_path):
     (out / "run.json").write_text(first[: len(first) // 2])  # cut short
     code, _, err = cli("run", config, "--out", out, "--resume", "--progress", "off")
     assert code == 2 and "not a run.json of memstribo" in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("argv", [("run", "--steps", "1000000000"), ("coating", "--steps", "1000000000"),
+                                  ("damage", "--steps", "1000000000")])
+def test_huge_steps_are_refused_before_any_stage(cli, tmp_path, argv):
+    code, out, err = cli(*argv, *(("--out", tmp_path / "out") if argv[0] == "run" else ()))
+    assert code == 2 and ("100,000" in err or "100 000" in err), err

@@ -118,6 +118,8 @@ class RunOptions:
                                  f"{self.sliding_distance / step:.3g} sliding steps of {step:.3g} m; the sliding stage "
                                  "takes at most 1e6 (use a shorter distance, e.g. '0.5 um', or a larger sliding_step).")
         if self.steps is not None:
+            if self.steps > 100_000:  # the bound of mesh_steps, before anything is sized from it
+                raise InputError(f"[run] steps / --steps = {self.steps:,}: at most 100,000 positions per meshing cycle.")
             check_mesh_size(self.steps, params["mesh_window"], params["mesh_grid_spacing"], what="[run] steps")
 
     @classmethod
