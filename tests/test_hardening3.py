@@ -366,3 +366,11 @@ def test_two_runs_into_one_out_overwrite_and_a_damaged_run_json(cli, tmp_path):
 def test_huge_steps_are_refused_before_any_stage(cli, tmp_path, argv):
     code, out, err = cli(*argv, *(("--out", tmp_path / "out") if argv[0] == "run" else ()))
     assert code == 2 and ("100,000" in err or "100 000" in err), err
+
+
+def test_a_map_refuses_heights_that_are_not_metres():
+    from memstribo.surfaces.readers import SurfaceMap
+
+    with pytest.raises(InputError, match="more than 0.1 m"):
+        SurfaceMap(_rough_map() * 1e12, 1e-8, 1e-8, name="scaled")
+    assert SurfaceMap(_rough_map(), 1e-8, 1e-8).shape == (32, 32)

@@ -71,6 +71,10 @@ class SurfaceMap:
         if bad:
             raise DataFileError(f"map '{self.name}' has {bad} of {h.size} undefined (NaN/masked) pixels; memstribo does "
                                 "not fill them silently: fill or crop them in your AFM software first.")
+        peak = float(np.max(np.abs(h)))
+        if peak > _Z_MAX:  # as a Profile refuses: heights that are not in metres
+            raise InputError(f"map '{self.name}': heights reach {peak:.3g} m, more than {_Z_MAX:g} m: not a measured "
+                             "surface, or the heights are not in metres.")
         for label, value in (("dx", self.dx), ("dy", self.dy)):
             if not (np.isfinite(value) and value > 0):
                 raise InputError(f"map '{self.name}': {label} must be a positive length in m (got {value!r}).")
