@@ -9,7 +9,8 @@ from ``memstribo constants``: Maugis parameter 3.55) as a smooth cylinder on a f
 * right: the net pressure at zero load (compressive in the contact, -sigma0 in the cohesive
   zone) against the Hertz pressure at the same contact width.
 
-Writes docs/figures/adhesive_line_contact.png. Run:  python examples/adhesive_line_contact.py
+Writes ``examples/output/adhesive_line_contact/adhesive_line_contact.png`` (the documentation's copy in
+docs/figures/ with ``--out docs/figures``). Run:  python examples/adhesive_line_contact.py [--out FOLDER]
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from memstribo.parameters import get_parameter_values  # noqa: E402
 from memstribo.physics.closed_form import (hertz_line_pressure, jkr_line_load, jkr_line_pull_off_load,  # noqa: E402
                                  maugis_dugdale_line_load, maugis_dugdale_line_pull_off, maugis_line_parameter)
 
-OUTPUT = Path(__file__).resolve().parent.parent / "docs" / "figures" / "adhesive_line_contact.png"
+OUTPUT = Path(__file__).resolve().parent / "output" / "adhesive_line_contact" / "adhesive_line_contact.png"
 
 
 def main(output=OUTPUT, points=2048):
@@ -101,4 +102,9 @@ def main(output=OUTPUT, points=2048):
 
 
 if __name__ == "__main__":
-    main()
+    import sys
+
+    if len(sys.argv) == 3 and sys.argv[1] == "--out":  # a folder, e.g. docs/figures for the documentation
+        main(Path(sys.argv[2]) / OUTPUT.name)
+    else:
+        main()

@@ -1,10 +1,11 @@
 """Worked example of a design map: drive torque x face width of the thesis pair, bare and OTS.
 
-Writes the map to a working folder (default: a temporary one) and the figures
-``docs/figures/design_map_stiction.png``, ``design_map_efficiency.png`` (and SVG) used by
-docs/design-maps.md::
+Writes the map to a working folder (a temporary one) and the figures ``design_map_stiction.png``,
+``design_map_efficiency.png`` (and SVG) into ``OUT/figures`` (default OUT: ``examples/output/design_map_example``;
+``--out docs`` makes the copies that docs/design-maps.md shows)::
 
     python examples/design_map_example.py            # the documented map (about 20 s on 2 cores)
+    python examples/design_map_example.py --out docs # the same, into docs/figures/
     python examples/design_map_example.py --tiny --out /tmp/x   # 2 x 2 x 2 points, seconds
 """
 
@@ -38,10 +39,11 @@ def spec(tiny: bool):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--tiny", action="store_true", help="2 x 2 x 2 points, 2 realisations, 11 steps")
-    parser.add_argument("--out", default=None, help="folder of figures/ (default: docs/)")
+    parser.add_argument("--out", default=None,
+                        help="folder of figures/ (default: examples/output/design_map_example; 'docs' for the docs)")
     parser.add_argument("--workers", type=int, default=2, help="local Dask worker processes (default 2)")
     args = parser.parse_args(argv)
-    out = Path(args.out) if args.out else ROOT / "docs"
+    out = Path(args.out) if args.out else ROOT / "examples" / "output" / "design_map_example"
     with tempfile.TemporaryDirectory() as work:
         result = design_map(spec(args.tiny), Path(work) / "map", workers=args.workers, figures=False)
         written, notes = map_figures(result.dataset, out / "figures", ["drive_torque", "face_width"])

@@ -1,8 +1,10 @@
 """Figure of docs/interface.md: vdW energy and attraction per area versus the local gap (MODEL 7c).
 
-Writes docs/figures/interface_vdw.png (or the folder given as the first argument)::
+Writes ``interface_vdw.png`` into ``examples/output/interface_figure/`` (or the folder given as the first
+argument; the documentation's copy is made with ``docs/figures``)::
 
     python examples/interface_figure.py [OUT_DIR]
+    python examples/interface_figure.py docs/figures      # the figure of docs/interface.md
 """
 
 from __future__ import annotations
@@ -49,7 +51,7 @@ def main(out_dir: str | None = None) -> Path:
     right.set_ylim(1e-1, 2e4)
     right.legend(fontsize=7)
     figure.tight_layout()
-    folder = Path(out_dir) if out_dir else Path(__file__).resolve().parent.parent / "docs" / "figures"
+    folder = Path(out_dir) if out_dir else Path(__file__).resolve().parent / "output" / "interface_figure"
     folder.mkdir(parents=True, exist_ok=True)
     path = folder / "interface_vdw.png"
     figure.savefig(path, dpi=120)

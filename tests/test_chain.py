@@ -118,7 +118,8 @@ def test_verdict_from_stage_summaries():
 
 
 def test_run_options_from_a_config_table(tmp_path):
-    (tmp_path / "scan.txt").write_text("0 0\n")
+    # a readable profile: [run] roughness_files are read before the first stage (#29)
+    (tmp_path / "scan.txt").write_text("".join(f"{i * 1e-8!r} {1e-9 * ((i * 7) % 5 - 2)!r}\n" for i in range(40)))
     options = RunOptions.from_table({"steps": 10, "loads": ["25 uN", "0.1 mN"], "wear": [0, 0.5],
                                      "roughness_files": ["scan.txt"], "stages": ["mesh", "roughness"]}, tmp_path)
     assert options.steps == 10 and options.loads == pytest.approx((25e-6, 1e-4))

@@ -161,6 +161,19 @@ def test_resume_loses_nothing_and_reruns_failed(tiny_map, client, tmp_path):
         design_map(other, folder, client=client, resume=True)
 
 
+def test_a_corrupted_point_file_is_computed_again_on_resume(tiny_map, client, tmp_path):
+    """#29: a finished point file later damaged is computed again on resume; the others are reused."""
+    spec, result = tiny_map
+    folder = tmp_path / "out"
+    shutil.copytree(result.folder, folder)
+    (folder / "map.nc").unlink()
+    files = sorted((folder / "points").glob("*.json"))
+    files[0].write_bytes(b"\x00garbage{")
+    again = design_map(spec, folder, client=client, resume=True, figures=False)
+    assert (again.n_computed, again.n_reused, again.n_failed) == (1, len(files) - 1, 0)
+    assert again.dataset.equals(result.dataset)
+
+
 def test_coated_points_get_a_coating_life(client, tmp_path):
     spec = map_spec({"realisations": 1, "steps": 11, "cycles_observed": 1e6, "wear_sweep": [0.0, 1.0],
                      "grid": {"coating": ["none", "OTS"]}})

@@ -547,3 +547,24 @@ def test_surface_contact_of_the_strip_couples_the_rows(params):
     assert float(per_row.std() / per_row.mean()) > float(line_rows.std() / line_rows.mean())
     with pytest.raises(InputError, match="surface"):
         simulate_mesh(params.updated({"mesh_contact": "surface", "contact_adhesion": "maugis"}), steps=11)
+
+
+def test_flat_profile_energies_follow_from_the_bond_counts(params):
+    """#29: the size of the vdW and chemical friction from the bond counts, numbers written in. Every bond breaks
+    once per bond length of sliding (thesis 3.5, (3-1)): E_vdW = sum bonds_vdW U_vdW s / D_chem and E_chem = sum
+    bonds_chem U_chem s / D_chem, with U_vdW = 5.43e-21 J, U_chem = 5.43e-19 J, D_chem = 2.35 A (thesis 3.5; the
+    default set). Using U_chem for the vdW bonds (100 x) or the wrong bond length fails here directly."""
+    from memstribo.surfaces.roughness import Profile
+
+    x = np.arange(4096) * 10e-9
+    ds = simulate_mesh(params, Profile(x=x, z=np.zeros_like(x), name="flat"), steps=11)
+    s = ds["sliding_distance"].values  # sliding per step [m]
+    bonds_vdw, bonds_chem = ds["bonds_vdw"].values, ds["bonds_chemical"].values
+    assert bonds_vdw.sum() > 0 and bonds_chem.sum() > 0 and s.sum() > 0
+    np.testing.assert_allclose(ds["energy_vdw"].values, bonds_vdw * 5.43e-21 * s / 2.35e-10, rtol=1e-12, atol=0)
+    np.testing.assert_allclose(ds["energy_chemical"].values, bonds_chem * 5.43e-19 * s / 2.35e-10, rtol=1e-12,
+                               atol=0)
+    summary = summarize(ds)
+    assert summary["energy_vdw"] == pytest.approx(float((bonds_vdw * s).sum()) * 5.43e-21 / 2.35e-10, rel=1e-12)
+    assert summary["energy_chemical"] == pytest.approx(float((bonds_chem * s).sum()) * 5.43e-19 / 2.35e-10,
+                                                       rel=1e-12)

@@ -335,3 +335,17 @@ def test_study_results_carry_provenance(tmp_path):
     with xr.open_dataset(tmp_path / "study" / "results.nc") as data:
         assert data.attrs["memstribo_version"] and "face_width" in data.attrs["parameter_overrides"]
         assert data.attrs["study_function"] == "gear"
+
+
+def test_a_corrupted_point_result_is_computed_again_on_resume(params, tmp_path):
+    """#29: a point file cut short or damaged (not a .tmp: a finished write later corrupted) is not trusted: resume
+    computes that point again and reuses the others unchanged."""
+    spec = load_study_spec(write_spec(tmp_path / "s.toml", SPEC))
+    first = run_study(spec, tmp_path / "out", params, workers=1)
+    files = sorted((tmp_path / "out" / "points").glob("*.json"))
+    kept = {p.name: p.read_text() for p in files[1:]}
+    files[0].write_text(files[0].read_text()[:20])  # truncated JSON
+    again = run_study(spec, tmp_path / "out", params, workers=1, resume=True)
+    assert (again.n_computed, again.n_reused) == (1, len(files) - 1)
+    assert all((tmp_path / "out" / "points" / name).read_text() == text for name, text in kept.items())
+    assert again.dataset.equals(first.dataset)

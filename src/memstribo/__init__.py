@@ -20,12 +20,8 @@ sweep(params, parameter, values) meshing cycles over loads, torques or areas, as
 run(config, out)                 the whole chain, roughness to damage, with report.html
 """
 
-from importlib.metadata import PackageNotFoundError, version
-
-try:
-    __version__ = version("memstribo")
-except PackageNotFoundError:  # running from a source tree that is not installed
-    __version__ = "0+unknown"
+#: the version: the top entry of CHANGELOG.md (pyproject.toml reads it; a test checks they agree)
+__version__ = "3.0.0.dev0"
 
 from memstribo.errors import ConvergenceError, DataFileError, InputError, MemstriboError  # noqa: E402
 from memstribo.parameters import get_parameter_values  # noqa: E402

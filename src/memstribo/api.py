@@ -122,6 +122,8 @@ def parameter_set(name: str = "silicon_thesis", overrides: dict | None = None, *
     >>> round(params["normal_load"], 12)  # N
     5e-05
     """
+    from memstribo.checks import check_parameter_set_arguments
+    check_parameter_set_arguments(name, overrides)
     from memstribo.parameters import get_parameter_values
 
     params = get_parameter_values(name)
@@ -260,6 +262,10 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     >>> sorted(k for k in cycle.summary if k.startswith("cof_m"))
     ['cof_max', 'cof_mean']
     """
+    from memstribo.checks import check_coating_wear, check_mesh_arguments, check_unused_values
+    check_mesh_arguments(params, steps, realisations, wear)
+    check_unused_values(params or parameter_set())
+    check_coating_wear(params or parameter_set(), coating)
     from memstribo.physics.coating import get_coating
     from memstribo.simulations.mesh import simulate_ensemble, simulate_mesh, summarize
 
@@ -303,6 +309,8 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     >>> points["normal_load"].values.tolist(), points["cof_mean"].attrs["units"]
     ([2.5e-05, 5e-05], '1')
     """
+    from memstribo.checks import check_mesh_arguments
+    check_mesh_arguments(params, steps, 1, wear)
     import numpy as np
     import xarray as xr
 

@@ -17,7 +17,8 @@ import numpy as np
 
 from memstribo.errors import InputError
 
-__all__ = ["as_array", "as_positive_scalar"]
+__all__ = ["as_array", "as_positive_scalar", "as_count", "check_mesh_arguments", "check_parameter_set_arguments",
+           "user_set", "check_unused_values", "check_coating_wear"]
 
 
 def _unit(unit: str) -> str:
@@ -122,3 +123,116 @@ def as_positive_scalar(value, name: str, unit: str = "") -> float:
     if array.ndim != 0 or not np.isfinite(array) or array <= 0.0:
         raise InputError(message)
     return float(array)
+
+
+def as_count(value, name: str, minimum: int, maximum: int) -> int:
+    """``value`` as a whole number within ``minimum..maximum``; InputError for anything else.
+
+    Parameters
+    ----------
+    value : int
+        A count (steps, realisations); a float with an integral value (``4.0``) is accepted, a bool,
+        a string, a fraction or a value outside the bounds is not.
+    name : str
+        The argument's name, used in the message.
+    minimum, maximum : int
+        The allowed range (inclusive).
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> as_count(4, "realisations", 1, 10_000)
+    4
+    """
+    allowed = f"a whole number from {minimum:,} to {maximum:,}"
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise InputError(f"{name} must be {allowed}, got {value!r} ({type(value).__name__}).")
+    if not np.isfinite(value) or float(value) != int(value):
+        raise InputError(f"{name} must be {allowed}, got {value!r}.")
+    if not minimum <= int(value) <= maximum:
+        raise InputError(f"{name} must be {allowed}, got {value!r}.")
+    return int(value)
+
+
+def check_mesh_arguments(params, steps=None, realisations=1, wear=1.0) -> None:
+    """The checks the command line applies to a meshing cycle, before anything is allocated.
+
+    ``steps`` and ``realisations`` obey the bounds of the parameters ``mesh_steps`` (3..100 000)
+    and ``realisations`` (1..10 000); ``steps`` with a given ``mesh_window`` and
+    ``mesh_grid_spacing`` obeys the memory estimate (``parameters.check_mesh_size``); ``wear``
+    is a fraction. Used by :func:`memstribo.api.mesh_cycle` and ``sweep``.
+
+    Raises
+    ------
+    InputError
+        A wrong type, a fraction where a count is needed, a value outside its bounds, a cycle
+        too large for memory; ``params`` that is not a parameter set.
+    """
+    from memstribo.parameters import Parameters, check_mesh_size
+    from memstribo.parameters.definitions import SPECS
+
+    if params is not None and not isinstance(params, Parameters):
+        raise InputError(f"params must be a parameter set (memstribo.parameter_set(...)), got "
+                         f"{type(params).__name__}.")
+    if steps is not None:
+        spec = SPECS["mesh_steps"]
+        steps = as_count(steps, "steps", int(spec.minimum), int(spec.maximum))
+        if params is not None:
+            check_mesh_size(steps, params["mesh_window"], params["mesh_grid_spacing"], what="steps")
+    spec = SPECS["realisations"]
+    as_count(realisations, "realisations", int(spec.minimum), int(spec.maximum))
+    if isinstance(wear, bool) or not isinstance(wear, (int, float, np.integer, np.floating)) \
+            or not 0.0 <= float(wear) <= 1.0:
+        raise InputError(f"wear (the worn fraction Omega of the gear's coating) must be a number within 0..1, "
+                         f"got {wear!r}.")
+
+
+def check_parameter_set_arguments(name, overrides) -> None:
+    """``memstribo.parameter_set``'s arguments: a set name (str) and a mapping of parameter names (str)."""
+    from collections.abc import Mapping
+
+    if not isinstance(name, str):
+        raise InputError(f"the parameter set name must be a string (e.g. 'silicon_thesis'), got {name!r} "
+                         f"({type(name).__name__}).")
+    if overrides is None:
+        return
+    if not isinstance(overrides, Mapping):
+        raise InputError(f"overrides must be a mapping of parameter names to values (a dict), got "
+                         f"{type(overrides).__name__}.")
+    for key in overrides:
+        if not isinstance(key, str):
+            raise InputError(f"overrides: parameter names are strings (e.g. 'normal_load'), got {key!r} "
+                             f"({type(key).__name__}).")
+
+
+def user_set(params, name: str) -> bool:
+    """Whether ``name`` in ``params`` was changed from its parameter set (``--set``, a config file, the API)."""
+    from memstribo.parameters import get_parameter_values
+
+    try:
+        base = get_parameter_values(params.name)
+    except Exception:  # a custom set: every source that is not a set file counts as the user's
+        return not params.source(name).startswith("thesis")
+    return params.source(name) != base.source(name) or params[name] != base[name]
+
+
+def check_unused_values(params) -> None:
+    """Refuse values the user set that the model would ignore without a word.
+
+    ``relative_humidity`` and ``temperature`` act only in air (``environment = 'air'``);
+    as ``--wear`` without ``--coating`` is refused, a humidity in vacuum is too.
+    """
+    if params["environment"] == "vacuum":
+        for name in ("relative_humidity", "temperature"):
+            if user_set(params, name):
+                raise InputError(f"{name} is used only in air, but environment is 'vacuum' (the default): add "
+                                 f"--set environment=air, or leave {name} out.")
+
+
+def check_coating_wear(params, coating) -> None:
+    """Refuse ``coating_wear`` set by the user for bare silicon (as ``--wear`` without ``--coating``)."""
+    if not coating and user_set(params, "coating_wear"):
+        raise InputError("coating_wear needs a coating (--coating NAME): bare silicon has no coating to wear.")

@@ -205,6 +205,8 @@ _ENTRIES = [
     ("bulk_compression", "m", "bulk compression", "compression of the bulk segment under each nanoblock"),
     ("shrink", "m", "nanoblock shrink", "total shrink of each nanoblock (bulk + adhesive + most compressed atomic block)"),
     ("rules", _TEXT, "rules", "which rule produced each nanoblock size"),
+    ("parameters", _TEXT, "parameters", "every model parameter (memstribo parameters --json): value [SI], unit, kind, "
+     "bounds, choices, allowed values, why, source"),
     # --- gear ---------------------------------------------------------------------------------------------------
     ("pitch_radii", "m", "pitch radii", "pitch radii of pinion and gear (4-1)"),
     ("base_radii", "m", "base radii", "base radii of pinion and gear (4-2)"),

@@ -104,6 +104,11 @@ def _parse_quantity(text: str, unit: str, name: str) -> float:
                          f"Give a number in SI ({unit or 'dimensionless'}) or a number with a unit, {example}.")
     number, unit_text = match.group(1), (match.group(2) or "")
     unit_text = unit_text.replace("µ", "u").replace("μ", "u").replace("°", "deg").strip()
+    # a number left in the unit once its exponents are gone is arithmetic ("GPa/1000", "uN*2"), not a unit
+    if unit_text.isprintable() and re.search(r"\d", re.sub(r"(\^|\*\*)\s*\(?[-+]?\d+(\.\d+)?\)?", "", unit_text)):
+        raise InputError(f"{name}: cannot read '{shown}': expected one number and one unit (e.g. '1 TPa', "
+                         f"'195.5 nm'); arithmetic such as '{printable(unit_text)}' is not evaluated. Give the "
+                         f"value in SI ({unit or 'dimensionless'}) or as one number with a unit.")
     if not _UNIT_TEXT.match(unit_text):
         raise InputError(f"{name}: cannot read '{shown}' as a quantity: '{printable(unit_text)}' is not a unit. "
                          f"Give a number in SI ({unit or 'dimensionless'}) or a number with a unit, {example}.")

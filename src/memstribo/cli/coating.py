@@ -61,8 +61,8 @@ def run(args, params):
     if args.calibrate is not None:
         return _calibrate(args, params, coating)
     wears = parse_wear_list(params["coating_wear"] if args.wear is None else args.wear)
-    if args.steps is not None and args.steps < 2:
-        raise InputError(f"--steps must be an integer >= 2, got {args.steps}.")
+    if args.steps is not None and not 2 <= args.steps <= 100_000:
+        raise InputError(f"--steps must be an integer from 2 to 100 000, got {args.steps}.")
     sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=progress_enabled(args))
     points = []
     for i, w in enumerate(wears):

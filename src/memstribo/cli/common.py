@@ -7,7 +7,7 @@ from typing import Any
 
 from memstribo.output import format_quantity, format_value
 
-__all__ = ["CommandResult", "format_quantity", "format_value", "add_progress_argument", "progress_enabled",
+__all__ = ["CommandResult", "error_object", "add_verbosity_arguments", "format_quantity", "format_value", "add_progress_argument", "progress_enabled",
            "PROGRESS_CHOICES"]
 
 #: The values of every long command's ``--progress`` option.
@@ -24,12 +24,15 @@ def add_progress_argument(parser) -> None:
                         metavar="auto|on|off",
                         help="progress bar on stderr: auto (default: when stderr is a terminal), on, off; "
                              "--progress alone means on")
+    add_verbosity_arguments(parser)
 
 
 def progress_enabled(args, stream=None) -> bool:
     """Whether to show a progress bar: ``--progress on``, or ``auto`` and ``stream`` (stderr) is a terminal."""
     import sys
 
+    if getattr(args, "quiet", False):
+        return False
     choice = getattr(args, "progress", "auto")
     if choice is True:  # a namespace built by hand with the old store_true flag
         choice = "on"
@@ -97,3 +100,41 @@ class CommandResult:
         shown = set(self.values.get("warnings") or [])
         lines.extend(f"  WARNING: {w}." for w in self.warnings if w not in shown)
         return "\n".join(lines)
+
+
+def _parameter_of(message: str) -> str | None:
+    """The parameter or option a message is about, or None: "parameter 'X'", a leading --option, a leading name."""
+    import re
+
+    from memstribo.parameters.definitions import SPECS
+
+    found = re.search(r"parameter '([A-Za-z_][\w]*)'", message)
+    if found:
+        return found.group(1)
+    found = re.match(r"\s*argument (--[a-z][\w-]*)", message) or re.match(r"\s*(?:config file '[^']*': )?(--[a-z][\w-]*|\[run\] [a-z_]+)", message)
+    if found:
+        return found.group(1)
+    found = re.match(r"\s*(?:config file '[^']*': )?([a-z_][a-z0-9_]*)\b", message)
+    if found and found.group(1) in SPECS:
+        return found.group(1)
+    names = [n for n in re.findall(r"\b[a-z][a-z0-9]*(?:_[a-z0-9]+)+\b", message) if n in SPECS]
+    return names[0] if names else None
+
+
+def error_object(message: str, command: str | None = None, kind: str = "input") -> dict:
+    """The JSON object an error prints on stdout under ``--json``.
+
+    Keys: ``error`` (the message, as on stderr), ``parameter`` (the parameter or option it is about, or
+    None), ``command`` and ``kind`` (``"input"``: exit 2; ``"usage"``: a command-line syntax error, exit 2;
+    ``"memory"``; ``"internal"``: a bug, exit 1).
+    """
+    return {"error": str(message), "parameter": _parameter_of(str(message)), "command": command, "kind": kind}
+
+
+def add_verbosity_arguments(parser) -> None:
+    """``--quiet`` (only errors and the result) and ``--verbose`` (progress notes on stderr) of a long command."""
+    group = parser.add_mutually_exclusive_group()
+    group.add_argument("-q", "--quiet", action="store_true",
+                       help="print only the result (and errors): no progress bar, no log lines or warnings on stderr")
+    group.add_argument("-v", "--verbose", action="store_true",
+                       help="more notes on stderr (the logger 'memstribo'; for 'run', each stage's files)")

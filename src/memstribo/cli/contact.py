@@ -343,18 +343,9 @@ def surface_problem(args):
     path = Path(args.surface)
     size = _physical_size(args.physical_size) if args.physical_size is not None else None
     if path.suffix.lower() == ".npy":
-        if not path.is_file():
-            raise InputError(f"--surface {path}: no such file")
-        try:
-            heights = np.load(path, allow_pickle=False)
-        except ValueError as error:
-            raise InputError(f"--surface {path}: not a plain NumPy array file ({error})") from None
-        if heights.ndim != 2 or min(heights.shape) < 2 or not np.issubdtype(heights.dtype, np.number):
-            raise InputError(f"--surface {path}: a .npy file must hold a 2D numeric array of heights [m] with at "
-                             f"least 2 x 2 points, got shape {heights.shape} ({heights.dtype})")
-        heights = np.asarray(heights, dtype=float)
-        if not np.all(np.isfinite(heights)):
-            raise InputError(f"--surface {path}: the heights [m] contain NaN or infinite values")
+        from memstribo.surfaces.readers import read_height_array
+
+        heights = read_height_array(path)  # header checked first: size, float dtype; heights in m (<= 0.1 m)
         if size is None:
             raise InputError(f"--surface {path}: a .npy array has no lateral size: give --physical-size, e.g. "
                              "'1um' (square) or '2umx1um' (LX x LY)")

@@ -1,3 +1,4 @@
+# PYTHON_ARGCOMPLETE_OK
 """Entry point of the ``memstribo`` command: option parsing, parameters, errors, output."""
 
 from __future__ import annotations
@@ -58,7 +59,14 @@ class _Parser(argparse.ArgumentParser):
         # argparse takes "-5uN" for an option; memstribo has no option that starts with a digit
         self._negative_number_matcher = _NEGATIVE_VALUE
 
+    #: the command line being parsed (set by main), so that a usage error under --json is a JSON object too
+    argv: list[str] = []
+
     def error(self, message):
+        if "--json" in _Parser.argv:
+            from memstribo.cli.common import error_object
+
+            print(dumps_json(error_object(_printable(message), self.prog.partition(" ")[2] or None, "usage")))
         self.exit(EXIT_USAGE, f"{self.prog}: error: {_printable(message)}\nRun '{self.prog} --help' for the "
                               "options.\n")
 
@@ -100,13 +108,59 @@ def load_parameters(args: argparse.Namespace):
     if args.overrides:
         overrides = dict(parse_assignment(text) for text in args.overrides)
         params = params.updated(overrides, origin="--set")
+    from memstribo.checks import check_unused_values
+
+    check_unused_values(params)
     return params
+
+
+def _json_error(args, message: str, kind: str) -> None:
+    """Under --json: the error as one JSON object on stdout (the message goes to stderr as well)."""
+    if getattr(args, "json", False):
+        from memstribo.cli.common import error_object
+
+        try:
+            print(dumps_json(error_object(message, args.command, kind)))
+            sys.stdout.flush()
+        except BrokenPipeError:  # pragma: no cover - the reader has gone
+            pass
+
+
+def _verbosity(args) -> None:
+    """--verbose: the 'memstribo' logger's notes at INFO on stderr; --quiet: Python warnings silenced."""
+    if args.command == "run":  # 'memstribo run' configures its own log lines
+        return
+    if getattr(args, "verbose", False):
+        import logging
+
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("memstribo: %(message)s"))
+        logger = logging.getLogger("memstribo")
+        logger.addHandler(handler)
+        logger.setLevel(logging.INFO)
+    elif getattr(args, "quiet", False):
+        import warnings
+
+        warnings.simplefilter("ignore")
+
+
+def _complete(parser) -> None:
+    """Shell completion with argcomplete when it is installed (``pip install "memstribo[completion]"``)."""
+    if "_ARGCOMPLETE" not in os.environ:
+        return
+    try:
+        import argcomplete
+    except ImportError:  # pragma: no cover - optional
+        return
+    argcomplete.autocomplete(parser)
 
 
 def main(argv: list[str] | None = None) -> int:
     # Not memstribo.heap.keep_freed_memory: it halves the CPU time of 2^16-point solves, but the damage stage's
     # peak memory grew from 12 to 16 GB with it (memstribo damage --json, 2026-11-23); opt-in for benchmarks.
     parser = build_parser()
+    _Parser.argv = list(sys.argv[1:] if argv is None else argv)
+    _complete(parser)
     args = parser.parse_args(argv)
     from memstribo.output import set_command_line  # provenance: the command line in every file written
 
@@ -114,16 +168,19 @@ def main(argv: list[str] | None = None) -> int:
     if not getattr(args, "handler", None):
         parser.print_help()
         return EXIT_USAGE
+    _verbosity(args)
     try:
         params = load_parameters(args)
         result = args.handler(args, params)
     except MemstriboError as exc:
+        _json_error(args, _printable(exc), "input")
         print(f"memstribo {args.command}: error: {_printable(exc)}", file=sys.stderr)
         return EXIT_USAGE
     except MemoryError:
-        print(f"memstribo {args.command}: error: not enough memory for these inputs (steps, grid spacing, "
-              "resample step or study size ask for larger arrays than this machine holds); reduce them.",
-              file=sys.stderr)
+        message = ("not enough memory for these inputs (steps, grid spacing, resample step or study size ask for "
+                   "larger arrays than this machine holds); reduce them.")
+        _json_error(args, message, "memory")
+        print(f"memstribo {args.command}: error: {message}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
         print(f"memstribo {args.command}: interrupted", file=sys.stderr)
@@ -131,11 +188,14 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as exc:  # a bug: say so briefly, full traceback on request
         if os.environ.get("MEMSTRIBO_DEBUG"):
             raise
+        _json_error(args, f"internal error: {type(exc).__name__}: {_printable(exc)}", "internal")
         print(f"memstribo {args.command}: internal error: {type(exc).__name__}: {_printable(exc)}\n"
               "This is a bug in memstribo; rerun with MEMSTRIBO_DEBUG=1 for the traceback and report it.",
               file=sys.stderr)
         return 1
     if result is not None:
+        if getattr(args, "quiet", False):
+            result.notes = []  # --quiet: the values only (warnings stay in the values and in --json)
         try:
             print(dumps_json(result.json_values()) if args.json else result.to_text())
             sys.stdout.flush()

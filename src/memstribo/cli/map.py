@@ -39,6 +39,9 @@ def register(subparsers, parents):
                         help="finish a map interrupted in --out, and run its failed points again")
     parser.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                         help="progress bar on stderr: auto (when stderr is a terminal), on, off")
+    from memstribo.cli.common import add_verbosity_arguments
+
+    add_verbosity_arguments(parser)
     parser.set_defaults(handler=run)
 
 
@@ -52,7 +55,9 @@ def run(args, params):
     if args.workers is not None and not 1 <= args.workers <= 4096:
         raise InputError(f"--workers {args.workers}: give a positive integer (at most 4096).")
     out = Path(args.out) if args.out else Path(f"memstribo-map-{Path(args.spec).stem}")
-    progress = args.progress == "on" or (args.progress == "auto" and sys.stderr.isatty())
+    from memstribo.cli.common import progress_enabled
+
+    progress = progress_enabled(args)
     result = design_map(spec, out, params, scheduler=args.scheduler, workers=args.workers, resume=args.resume,
                         progress=progress)
     probability = result.dataset["stiction_probability"].values

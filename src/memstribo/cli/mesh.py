@@ -67,7 +67,11 @@ def simulation_options(args, params=None):
     """Keyword arguments of :func:`memstribo.simulations.mesh.simulate_mesh` from the command line."""
     from memstribo.errors import InputError
 
+    from memstribo.checks import check_coating_wear, check_mesh_arguments
+
     coating = None
+    if params is not None:
+        check_coating_wear(params, args.coating)
     if args.coating:
         from memstribo.physics.coating import get_coating
 
@@ -76,6 +80,7 @@ def simulation_options(args, params=None):
         raise InputError("--wear needs --coating (bare silicon has no coating to wear).")
     if args.steps is not None and args.steps < 3:
         raise InputError(f"--steps must be at least 3, got {args.steps}.")
+    check_mesh_arguments(params, args.steps, 1, args.wear)
     progress = progress_enabled(args)
     return dict(steps=args.steps, coating=coating, wear=args.wear, progress=progress)
 
@@ -104,8 +109,12 @@ def run(args, params):
     params = apply_load_case(args, params)
     options = simulation_options(args, params)
     realisations = params["realisations"] if args.realisations is None else args.realisations
-    if realisations < 1:
-        raise InputError(f"--realisations must be at least 1, got {realisations}.")
+    from memstribo.parameters.definitions import SPECS
+
+    spec = SPECS["realisations"]
+    if not spec.minimum <= realisations <= spec.maximum:
+        raise InputError(f"--realisations must be from {int(spec.minimum):,} to {int(spec.maximum):,} (the bounds "
+                         f"of the parameter realisations), got {realisations:,}.")
     roughness = roughness_of(args)
     dataset = simulate_mesh(params, roughness, **options)
     summary = summarize(dataset)
@@ -117,6 +126,9 @@ def run(args, params):
     if realisations > 1:
         client = None
         if args.scheduler:
+            from memstribo.simulations.study import require_dask
+
+            require_dask("--scheduler")
             from distributed import Client
 
             client = Client(args.scheduler)

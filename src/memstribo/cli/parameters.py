@@ -27,7 +27,9 @@ def run(args, params):
         print(params.to_toml(), end="")
         return None
     if args.json:
-        return CommandResult(values=params.to_dict(), units={n: SPECS[n].unit for n in params})
+        # the values by name (SI) as before, and under "parameters" each with its unit, bounds and source
+        values = {**params.to_dict(), "parameters": {name: _entry(SPECS[name], params, name) for name in params}}
+        return CommandResult(values=values, units={n: SPECS[n].unit for n in params})
     lines = []
     for name in params:
         spec, value = SPECS[name], params[name]
@@ -37,6 +39,19 @@ def run(args, params):
             lines.append(f"  {'':<28} allowed: {spec.allowed()}" + (f"; {spec.why}" if spec.why else ""))
         lines.append(f"  {'':<28} source: {params.source(name)}")
     return CommandResult(values={}, title=f"parameter set '{params.name}'", notes=lines)
+
+
+def _entry(spec, params, name) -> dict:
+    """One parameter for ``parameters --json``: value [SI], unit, kind, bounds, allowed text, why, source."""
+    entry = {"value": params[name], "unit": spec.unit, "kind": spec.kind, "description": spec.description,
+             "source": params.source(name)}
+    if spec.kind in ("float", "int"):
+        entry.update(minimum=spec.minimum, maximum=spec.maximum, exclusive_minimum=spec.exclusive_minimum,
+                     exclusive_maximum=spec.exclusive_maximum)
+    if spec.choices:
+        entry["choices"] = list(spec.choices)
+    entry.update(optional=spec.optional, allowed=spec.allowed(), why=spec.why)
+    return entry
 
 
 def _coating(args, params):

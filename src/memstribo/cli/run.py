@@ -54,9 +54,7 @@ def register(subparsers, parents):
                         help="continue the run in DIR (killed, or with failed stages): stages run.json records as "
                              "done are read back, not recomputed; failed and missing stages (and those after them "
                              "that use them) run again; give the same config and options as that run")
-    loudness = parser.add_mutually_exclusive_group()
-    loudness.add_argument("--quiet", action="store_true", help="no log lines on stderr (errors only)")
-    loudness.add_argument("--verbose", action="store_true", help="more log lines on stderr (each stage's files)")
+    # --quiet (no log lines on stderr, errors only) and --verbose (each stage's files): add_progress_argument
     parser.set_defaults(handler=run)
 
 

@@ -69,11 +69,12 @@ def run(args, params):
     progress = options.pop("progress")
     from memstribo.cli.mesh import roughness_of
 
-    roughness = roughness_of(args)
-    if args.realisations < 1:
-        from memstribo.errors import InputError
+    from memstribo.checks import as_count
+    from memstribo.parameters.definitions import SPECS
 
-        raise InputError(f"--realisations must be at least 1, got {args.realisations}.")
+    as_count(args.realisations, "--realisations", int(SPECS["realisations"].minimum),
+             int(SPECS["realisations"].maximum))
+    roughness = roughness_of(args)
     points = sweep(params, args.parameter, values, roughness, progress=progress, realisations=args.realisations,
                    **options)
     critical = None

@@ -193,6 +193,7 @@ class RunChain:
     """
 
     def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False, resume: bool = False):
+        (options or RunOptions()).check_with(params)  # every [run] value against the parameters, before any stage
         self.params = params
         #: the parameters of the model stages: ``params`` with the geometry derived from a measured profile
         self.model_params = params

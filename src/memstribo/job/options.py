@@ -98,6 +98,30 @@ class RunOptions:
     realisations: int = 16
     map: str | None = None
 
+    def check_with(self, params) -> None:
+        """The ``[run]`` values that depend on the parameters, checked before the first stage.
+    
+        ``sliding_distance`` over the sliding step (``sliding_step``, unset: ``bond_length``) is at most
+        1 million steps, the sliding stage's limit; ``steps`` obeys the memory estimate of the meshing cycle.
+    
+        Raises
+        ------
+        InputError
+            A value the stage would refuse only once the run has reached it.
+        """
+        from memstribo.parameters import check_mesh_size
+    
+        if self.sliding_distance is not None:
+            step = params["sliding_step"] or params["bond_length"]
+            if self.sliding_distance / step > 1_000_000:
+                raise InputError(f"[run] sliding_distance = {self.sliding_distance:.4g} m is "
+                                 f"{self.sliding_distance / step:.3g} sliding steps of {step:.3g} m; the sliding stage "
+                                 "takes at most 1e6 (use a shorter distance, e.g. '0.5 um', or a larger sliding_step).")
+        if self.steps is not None:
+            if self.steps > 100_000:  # the bound of mesh_steps, before anything is sized from it
+                raise InputError(f"[run] steps / --steps = {self.steps:,}: at most 100,000 positions per meshing cycle.")
+            check_mesh_size(self.steps, params["mesh_window"], params["mesh_grid_spacing"], what="[run] steps")
+
     @classmethod
     def from_table(cls, table: Mapping[str, Any] | None, base_folder: str | Path | None = None) -> "RunOptions":
         """Validate a ``[run]`` table (values may carry units: ``loads = ["25 uN", "50 uN"]``).
@@ -200,8 +224,17 @@ def _roughness_files(files, base_folder) -> tuple[str, ...]:
         path = Path(str(name)).expanduser()
         if not path.is_absolute() and base_folder is not None:
             path = Path(base_folder) / path
-        if not path.is_file():
+        if not path.exists():
             raise InputError(f"[run] roughness_files: '{name}' does not exist.")
+        if not path.is_file():
+            raise InputError(f"[run] roughness_files: '{name}' is not a regular file (a folder, device or "
+                             "pipe); give measurement files.")
+        from memstribo.surfaces.readers import read_topography
+
+        try:  # read now, so that a file no reader takes stops the run before its first stage
+            read_topography(path)
+        except InputError as exc:
+            raise InputError(f"[run] roughness_files: {exc}") from None
         resolved.append(str(path.resolve()))
     return tuple(resolved)
 

@@ -233,6 +233,16 @@ def _check_consistency(values: Mapping[str, Any]) -> None:
         for key in ("roughness_sample_spacing", "roughness_resample_spacing"):
             if values.get(key):
                 check_points(values["roughness_length"], values[key], f"roughness_length / {key}")
+    if values.get("atomic_height") and values.get("adhesive_height"):
+        if values["atomic_height"] > values["adhesive_height"]:
+            raise InputError(
+                f"atomic_height ({values['atomic_height']:.4g} m) is larger than adhesive_height "
+                f"({values['adhesive_height']:.4g} m): atomic blocks are the top layer of an adhesive block.")
+    gap, block = values.get("sliding_gap"), values.get("adhesive_height")
+    if gap is not None and block and gap < -block:
+        raise InputError(
+            f"sliding_gap = {gap:.4g} m is an interference deeper than the nanoblock (adhesive_height "
+            f"{block:.4g} m): it would crush the block; allowed: sliding_gap >= -adhesive_height.")
     if values.get("atomic_width") and values.get("adhesive_width"):
         if values["atomic_width"] > values["adhesive_width"]:
             raise InputError(
@@ -335,6 +345,8 @@ def read_config(path: str | Path) -> dict[str, Any]:
     """
     path = Path(path)
     shown = printable(path, 200)
+    if path.exists() and not path.is_dir() and not path.is_file():  # /dev/zero, a pipe: reading would never end
+        raise InputError(f"config file '{shown}' is not a regular file (a device, pipe or socket); give a TOML file.")
     try:
         raw = path.read_bytes()
     except FileNotFoundError:

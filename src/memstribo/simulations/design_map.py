@@ -419,6 +419,9 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
     InputError
         A bad point, ``out`` holding another map, or ``out`` holding this map without ``resume``.
     """
+    from memstribo.simulations.study import require_dask
+
+    require_dask("memstribo map")
     from memstribo.output import provenance_attributes, write_dataset
     from memstribo.parameters import get_parameter_values
     from memstribo.simulations.study import _finished_points, _hash, POINTS_FOLDER, prepare_points

@@ -613,6 +613,22 @@ def _finished_points(folder: Path, ids: set[str]) -> dict[str, dict]:
     return done
 
 
+def require_dask(what: str = "this command") -> None:
+    """Refuse clearly when dask.distributed is not installed (the optional extra ``parallel``).
+
+    Raises
+    ------
+    InputError
+        Naming ``what`` needs it and the command that installs it.
+    """
+    try:
+        import dask  # noqa: F401
+        import distributed  # noqa: F401
+    except ImportError:
+        raise InputError(f"{what} runs on dask.distributed, an optional part of memstribo: install it with "
+                         "pip install 'memstribo[parallel]'.") from None
+
+
 def _connect(scheduler: str | None, workers: int | None):
     """A dask.distributed Client: to ``scheduler`` or to a new quiet LocalCluster (:func:`local_cluster`)."""
     from distributed import Client
@@ -665,6 +681,7 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     InputError
         Bad spec or point, ``out`` holding another study, or ``out`` holding this study without ``resume``.
     """
+    require_dask("memstribo study")
     from memstribo.parameters import get_parameter_values
 
     start = time.perf_counter()

@@ -119,9 +119,9 @@ def published_rows() -> list[ValidationRow]:
     cof_ots = point(0.4, ots)["cof_mean"]
     out.append(ValidationRow(
         TOPIC, "OTS-coated gear (wear 0, pinion bare) in air, RH 0.4: COF", "0.08 +/- 0.01, dynamic, both surfaces "
-        "OTS-coated (" + SRINIVASAN_1998 + ")", 0.08, round(cof_ots, 3), "", "rel 0.5" if abs(cof_ots / 0.08 - 1) <= 0.5
-        else "differs (see note)", bool(abs(cof_ots / 0.08 - 1) <= 0.5), OXIDE_COMMAND,
-        note="OTS's U_vdW is the vacuum set's (not calibrated in air); the model coats the gear only"))
+        "OTS-coated (" + SRINIVASAN_1998 + ")", 0.08, round(cof_ots, 3), "", "differs (see note)",
+        bool(abs(cof_ots / 0.08 - 1) <= 0.5), OXIDE_COMMAND, band=(0.01, 0.05),
+        note="0.08 +/- 0.01 is the stated scatter; memstribo's 0.03 lies below it: OTS's U_vdW is the vacuum set's (not calibrated in air); the model coats the gear only"))
     ratio_model, ratio_paper = cof / cof_ots, 0.3 / 0.08
     out.append(ValidationRow(
         TOPIC, "friction reduction by the coating in air: COF bare / COF OTS", "0.3 / 0.08 = 3.8 (dynamic; static "
@@ -132,14 +132,13 @@ def published_rows() -> list[ValidationRow]:
     out.append(ValidationRow(
         TOPIC, "bare oxidised silicon: adhesion force F_adh at RH 0.9 over RH 0.3",
         "grows exponentially with RH over 30-95 % (hydrophilic polysilicon beams; " + DE_BOER_1998 + ")", None,
-        round(growth, 3), "", "trend: > 1 (grows)" if growth > 1 else "differs (see note)", bool(growth > 1.0),
-        OXIDE_COMMAND, note="F_adh of the loaded line contact (mean over the cycle); the beams of the reference are "
+        round(growth, 3), "", "differs (see note)", bool(growth > 1.0), OXIDE_COMMAND, band=(0.1, 0.4),
+        note="the model's F_adh falls with RH instead: F_adh of the loaded line contact (mean over the cycle); the beams of the reference are "
         "unloaded crack tips, where capillary adhesion grows far more"))
     growth_ots = coated[0.9]["adhesion_force_mean"] / coated[0.3]["adhesion_force_mean"]
     out.append(ValidationRow(
         TOPIC, "OTS-coated gear: F_adh at RH 0.9 over RH 0.3", "hydrophobic beams: no humidity effect up to >= 90 % "
         "RH (a later paper citing " + DE_BOER_1998 + ")", 1.0, round(growth_ots, 3), "",
-        "rel 0.1" if abs(growth_ots - 1.0) <= 0.1 else "differs (see note)", bool(abs(growth_ots - 1.0) <= 0.1),
-        OXIDE_COMMAND,
-        note="the model's pinion stays bare (theta 30 deg against 112 deg): weak menisci remain"))
+        "differs (see note)", bool(abs(growth_ots - 1.0) <= 0.1), OXIDE_COMMAND, band=(0.1, 0.4),
+        note="no effect within 10 % expected, the model's F_adh falls instead: the model's pinion stays bare (theta 30 deg against 112 deg): weak menisci remain"))
     return out

@@ -52,13 +52,24 @@ def rows() -> list[ValidationRow]:
             100 * TABLE_5_1[-1, j + 1] / TABLE_5_1[-1, 0], 100 * float(sharing.share_of(position)[-1]), "%",
             atol=0.1, command="memstribo asperity --load '7.0165 uN' --nanoblock --json",
             note="rigid adhesive block, power-law asperities at 58.4 nm pitch, Boussinesq cross-influence"))
+        printed = 100 * TABLE_5_1[0, j + 1] / TABLE_5_1[0, 0]
+        # the side share happens to stay within 0.1 % of the print; the corner's falls and the central's rises
+        band = {"corner": (printed - 0.4, printed - 0.15), "side": None, "central": (printed + 0.4, printed + 0.8)}
         out.append(compare(
             "asperity", f"share of the {position} asperity at 0.8166 uN", "thesis Table 5-1",
-            100 * TABLE_5_1[0, j + 1] / TABLE_5_1[0, 0], 100 * float(sharing.share_of(position)[0]), "%",
-            atol=0.1, command="memstribo asperity --load '0.8166 uN' --nanoblock --json",
-            note="differs on purpose: the thesis prints the same shares at every load (a linear influence "
-                 "model); with the non-linear power-law compliance the shares even out at small loads"))
+            printed, 100 * float(sharing.share_of(position)[0]), "%",
+            atol=0.1, command="memstribo asperity --load '0.8166 uN' --nanoblock --json", differs=band[position],
+            note="the thesis prints the same shares at every load (a linear influence model); with the non-linear "
+                 "power-law compliance the shares even out at small loads" + (
+                     "; this one stays within the tolerance" if band[position] is None else
+                     ": differs on purpose")))
     # --- Tables 5-3 and 5-4 ----------------------------------------------------------------------------
+    # Tolerances from the printed digits: Table 5-3 prints 3 significant digits (half a unit of the last: 0.2 %,
+    # written as rel 0.005), Table 5-4 six; the locations are compared at 0.15 nm, the x grid of the damage
+    # integral near the contact edge (docs/damage.md); the text's 9 % and 18.65 % at half their last digit.
+    # memstribo's maxima are 3-5 % (m = 1) and 19-23 % (m = 2) above the print: known differences, with their
+    # bands, not tolerances widened to reach agreement (docs/damage.md: mu and the peak sequence are inferred).
+    high = {1: (1.02, 1.06), 2: (1.15, 1.27)}
     for m, table, unit in ((1, TABLE_5_3, "Pa"), (2, TABLE_5_4, "Pa^2")):
         result = nanoblock_damage(TABLE_5_1[:, 0], params.updated({"damage_exponent": m}))
         command = f"memstribo damage --loads table5-1 --set damage_exponent={m} --json"
@@ -66,19 +77,22 @@ def rows() -> list[ValidationRow]:
             value, location = table[position]
             out.append(compare(
                 "damage", f"max omega/c1 per cycle, {position} asperity, m = {m}",
-                f"thesis Table 5-{2 + m}", value, result.maximum[position], unit, rtol=0.06 if m == 1 else 0.25,
-                command=command,
-                note="mu = 0.1 (inferred), the six Table 5-1 loads repeated to k = 48 peaks" + (
-                    "; 3-5 % above the thesis" if m == 1 else "; 19-23 % above the thesis (docs/damage.md)")))
+                f"thesis Table 5-{2 + m}", value, result.maximum[position], unit, rtol=0.005,
+                command=command, differs=(high[m][0] * value, high[m][1] * value),
+                note="differs: mu = 0.1 (inferred) and the six Table 5-1 loads repeated to k = 48 peaks (inferred) "
+                     + ("give maxima 3-5 % above the thesis" if m == 1 else
+                        "give maxima 19-23 % above the thesis (docs/damage.md)")))
             out.append(compare(
                 "damage", f"location of the maximum, {position} asperity, m = {m}", f"thesis Table 5-{2 + m}",
-                location * 1e9, result.location[position] * 1e9, "nm", atol=0.15 if m == 1 else 1.0,
-                command=command,
-                note="" if m == 1 else "the m = 2 maximum sits about 0.8 nm further out (at the edge of the "
+                location * 1e9, result.location[position] * 1e9, "nm", atol=0.15, command=command,
+                differs=None if m == 1 else (location * 1e9 - 1.0, location * 1e9 - 0.6),
+                note="" if m == 1 else "differs: the m = 2 maximum sits 0.6-1.0 nm further out (at the edge of the "
                                        "largest contact) than printed"))
-        expected = {1: 0.09, 2: 0.1865}[m]
+        printed, digits = {1: (9.0, 0.5), 2: (18.65, 0.005)}[m]
         out.append(compare(
-            "damage", f"corner life shorter than central, m = {m}", "thesis 5.5.2 text", 100 * expected,
-            100 * (1 - result.life_ratio_corner_to_central), "%", atol=1.5, command=command,
-            note="1 - life_ratio_corner_to_central"))
+            "damage", f"corner life shorter than central, m = {m}", "thesis 5.5.2 text", printed,
+            100 * (1 - result.life_ratio_corner_to_central), "%", atol=digits, command=command,
+            differs=(printed, printed + 1.6),
+            note="1 - life_ratio_corner_to_central; differs: follows from the maxima above (corner and central "
+                 "not equally high above the print), 0.5-1.2 points more than printed"))
     return out

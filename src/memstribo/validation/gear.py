@@ -29,7 +29,7 @@ def rows() -> list[ValidationRow]:
         compare("gear", "tangential force F_t", "thesis 4.7 (4-27)", 2.82e-3, values["tangential_force"], "N",
                 rtol=1e-3, command=COMMAND),
         compare("gear", "Hertz half-width at the pitch point, 25 uN", "thesis 4.5 (printed)", 58.869,
-                values["hertz_half_width"] * 1e9, "nm", rtol=1e-3, command=COMMAND,
+                values["hertz_half_width"] * 1e9, "nm", rtol=1e-3, command=COMMAND, differs=(43.0, 44.0),
                 note="differs on purpose: (4-24) with E* = 85 GPa, R_ef = 10.08 um, w = 12.5 N/m gives 43.45 nm; "
                      "the printed 58.9 nm does not follow from the thesis's inputs (MODEL §6)"),
         compare("gear", "Hertz half-width at the pitch point, 25 uN", "closed form (4-24)",

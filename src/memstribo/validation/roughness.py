@@ -45,7 +45,7 @@ def _file_rows() -> list[ValidationRow]:
     tem = read_topography(afm / "container-2.zip", channel="80_Scale")
     rows.append(compare(
         "roughness", "Rq of the TEM profile (76 non-uniform points)", README + ", point-wise", 3.51,
-        profile_statistics(tem).Rq * 1e9, "nm", atol=0.005,
+        profile_statistics(tem).Rq * 1e9, "nm", atol=0.005, differs=(3.495, 3.505),
         command="memstribo roughness data/afm/container-2.zip --channel 80_Scale --json",
         note="differs on purpose: memstribo levels by the least-squares line through the points (3.504 nm); "
              "the README's 3.51 nm is point-wise after SurfaceTopography's integral line fit"))
@@ -73,7 +73,7 @@ def _thesis_rows() -> list[ValidationRow]:
         compare("roughness", "rms slope of the default (synthetic) profile at 78 nm", "thesis 4.2.3 (4-6)", 0.0241,
                 raw.rms_slope, "", rtol=1e-9, command=command),
         compare("roughness", "lambda_q of the default profile", "thesis 4.2.3 (4-5), printed", 58.4,
-                raw.lambda_q * 1e9, "nm", rtol=1e-3, command=command,
+                raw.lambda_q * 1e9, "nm", rtol=1e-3, command=command, differs=(420.0, 426.0),
                 note="differs on purpose: 2 pi Rq / Delta_q with the printed Rq = 1.6235 nm and Delta_q = 0.0241 is "
                      "423 nm; the printed 58.4 nm does not follow from them (MODEL §1.3). The atomic pitch of the "
                      "default parameter set keeps 58.4 nm"),
@@ -81,7 +81,7 @@ def _thesis_rows() -> list[ValidationRow]:
                 derived.atomic_height * 1e9, "nm", atol=1e-5, command=ch3_command,
                 note="0.5 x 1.6433 nm = 0.821650 nm; the thesis truncates the last digit"),
         compare("roughness", "H_adh = 1.2 Rq (chapter 3, Rq = 1.6433 nm)", "thesis 3.4.1, printed", 2.11,
-                derived.adhesive_height * 1e9, "nm", atol=0.005, command=ch3_command,
+                derived.adhesive_height * 1e9, "nm", atol=0.005, command=ch3_command, differs=(1.97, 1.975),
                 note="differs on purpose: 1.2 x 1.6433 nm = 1.972 nm; the printed 2.11 nm is 1.284 Rq. memstribo "
                      "applies the stated rule (MODEL §1.4)"),
         compare("roughness", "atomic blocks per nanoblock (parameter set)", "thesis 4.2.3, Figure 4-23", 9,

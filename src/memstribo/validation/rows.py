@@ -38,6 +38,15 @@ class ValidationRow:
         The value is a residual at round-off level (reference 0, absolute tolerance): the
         table shows it as the bound it meets ("< 2e-07"), never as digits, because its
         digits depend on the platform and library versions.
+    expected : {"agrees", "differs"} or None
+        The verdict, fixed in the row's source: "differs" for a known disagreement (its note
+        says why), "agrees" otherwise. None (the default) is "differs" when the tolerance says
+        "differs (see note)", else "agrees". A test fails when a row's computed ``agrees``
+        leaves its expected verdict: a row that agreed stops agreeing, or a known
+        disagreement vanishes (then its note is out of date).
+    band : tuple of float or None
+        For a known disagreement: the range (in ``unit``) that memstribo's value is known to
+        lie in; a test fails when it leaves it (the disagreement grew or shrank unnoticed).
     """
 
     topic: str
@@ -51,11 +60,32 @@ class ValidationRow:
     command: str
     note: str = ""
     shown_as_bound: bool = False
+    expected: str | None = None
+    band: tuple[float, float] | None = None
+
+    def __post_init__(self):
+        if self.expected is None:
+            object.__setattr__(self, "expected", "differs" if self.tolerance.startswith("differs") else "agrees")
+        if self.expected not in ("agrees", "differs"):
+            raise ValueError(f"expected must be 'agrees' or 'differs', got {self.expected!r}")
+
+    @property
+    def as_expected(self) -> bool:
+        """The computed verdict is the one fixed in the source, and a known difference stays in its band."""
+        if self.agrees != (self.expected == "agrees"):
+            return False
+        if self.band is not None and self.value is not None:
+            return self.band[0] <= self.value <= self.band[1]
+        return True
 
 
 def compare(topic, quantity, reference, reference_value, value, unit="", *, rtol=None, atol=None,
-            command="", note="") -> ValidationRow:
-    """Build a row, judging agreement by ``rtol`` (relative) and/or ``atol`` (absolute)."""
+            command="", note="", differs: tuple[float, float] | None = None) -> ValidationRow:
+    """Build a row, judging agreement by ``rtol`` (relative) and/or ``atol`` (absolute).
+
+    ``differs``: a known disagreement, the band (in ``unit``) memstribo's value is known to lie in; the
+    row's verdict is then "differs" whatever the value (the tests check the value stays in the band).
+    """
     if reference_value is None or value is None:
         raise ValueError("compare() needs both values; build a ValidationRow directly for trends")
     rtol_ = 0.0 if rtol is None else rtol
@@ -65,4 +95,6 @@ def compare(topic, quantity, reference, reference_value, value, unit="", *, rtol
     # A residual (reference 0) that meets a non-zero absolute tolerance is round-off: show the bound.
     residual = reference_value == 0 and rtol is None and atol_ > 0 and agrees and value != 0
     return ValidationRow(topic, quantity, reference, float(reference_value), float(value), unit,
-                         " or ".join(parts) or "exact", agrees, command, note, shown_as_bound=residual)
+                         " or ".join(parts) or "exact", agrees, command, note, shown_as_bound=residual,
+                         expected="agrees" if differs is None else "differs",
+                         band=None if differs is None else (float(differs[0]), float(differs[1])))

@@ -1,0 +1,42 @@
+"""#29 item 7: the examples leave the tree clean. Each writes into its own output folder (examples/output/, ignored
+by git), never into tracked files such as docs/figures/; `git status --porcelain` is the same after running them."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parent.parent
+
+#: the quick examples and their arguments (the design map at its tiny size); the notebook has its own test
+QUICK = [("interface_figure.py", []), ("adhesive_line_contact.py", []), ("design_map_example.py", ["--tiny"]),
+         ("api_afm_profile.py", [])]
+
+
+def _status():
+    return subprocess.run(["git", "status", "--porcelain", "--untracked-files=all"], cwd=REPO, capture_output=True,
+                          text=True, check=True).stdout
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("git") is None or not (REPO / ".git").exists(), reason="needs a git checkout")
+def test_quick_examples_leave_git_status_unchanged():
+    before = _status()
+    env = {**os.environ, "MPLBACKEND": "Agg"}
+    for script, arguments in QUICK:
+        run = subprocess.run([sys.executable, str(REPO / "examples" / script), *arguments], cwd=REPO, env=env,
+                             capture_output=True, text=True, timeout=600)
+        assert run.returncode == 0, f"{script}: {run.stderr[-1500:]}"
+    assert _status() == before, "an example wrote into tracked or unignored files"
+
+
+def test_no_example_writes_into_docs_by_default():
+    """The examples' default output is their own folder under examples/output/ (fast, no run)."""
+    for path in sorted((REPO / "examples").glob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        assert '/ "docs" / "figures"' not in text and 'ROOT / "docs"' not in text, path.name
