@@ -107,6 +107,32 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
     ff_inst = _get(dataset, "friction_force_instantaneous", "friction_force")
     half = _get(dataset, "hertz_half_width")
     energy = _get(dataset, "energy_dissipated")
+    warnings = []
+
+    strength_result = _root_strength(pair, c, fn, ff, params, warnings)
+    s_max, s_min, a_eff, p_tooth = (strength_result[k] for k in ("s_max", "s_min", "a_eff", "p_tooth"))
+    p_pair, n01, fatigue, stresses = (strength_result[k] for k in ("p_pair", "n01", "fatigue", "stresses"))
+    flash, bulk, contact = _contact_temperature(pair, c, ff_inst, half, energy, params, coating, warnings)
+    return {
+        "root_stress_max": [s_max["pinion"], s_max["gear"]],
+        "root_stress_compressive_min": [s_min["pinion"], s_min["gear"]],
+        "root_effective_area": [a_eff["pinion"], a_eff["gear"]],
+        "fracture_probability": p_pair,
+        "fracture_probability_pinion_tooth": p_tooth["pinion"],
+        "fracture_probability_gear_tooth": p_tooth["gear"],
+        "cycles_to_fracture_p01": n01,
+        "flash_temperature_max": float(np.max(flash)),
+        "bulk_temperature_rise": bulk,
+        "contact_temperature_max": contact,
+        "root_stress": {"pinion": stresses["pinion"]["tensile"], "gear": stresses["gear"]["tensile"]},
+        "flash_temperature": flash,
+        "fatigue": fatigue,
+        "warnings": warnings,
+    }
+
+
+def _root_strength(pair, c, fn, ff, params, warnings) -> dict:
+    """Root stresses over the cycle, first-load fracture risk per tooth and the fatigue constants (tooth_life)."""
     b = float(params["face_width"])
     m_w = float(params["weibull_modulus"])
     sigma_theta = float(params["strength_characteristic"])
@@ -115,8 +141,6 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
     k_rh = float(params["fatigue_humidity_sensitivity"])
     rh = float(params["relative_humidity"]) if params["environment"] == "air" else 0.0
     strength.check_weibull(sigma_theta, m_w, area_0)
-    warnings = []
-
     # --- root stress over the cycle ---------------------------------------------------------------
     stresses = tooth_stress.cycle_root_stress(pair, c, fn, np.maximum(ff, 0.0), params["dedendum_coefficient"],
                                               params["root_fillet_coefficient"], face_width=b)
@@ -141,6 +165,13 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
                         f"{max(s_max.values()) / 1e9:.3g} GPa against a characteristic strength of "
                         f"{sigma_theta / 1e9:.3g} GPa)")
 
+    return {"s_max": s_max, "s_min": s_min, "a_eff": a_eff, "p_tooth": p_tooth, "p_pair": p_pair, "n01": n01,
+            "fatigue": fatigue, "stresses": stresses}
+
+
+def _contact_temperature(pair, c, ff_inst, half, energy, params, coating, warnings):
+    """(flash temperature rise per step [K], bulk rise [K], largest contact temperature [K]) of the cycle."""
+    b = float(params["face_width"])
     # --- contact temperature ------------------------------------------------------------------------
     u1, u2 = pair.surface_velocities(c)
     v_s = np.abs(np.asarray(u1) - np.asarray(u2))
@@ -166,22 +197,7 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
             warnings.append(f"the contact temperature reaches {contact:.4g} K (ambient {ambient:.4g} K + bulk "
                             f"{bulk:.3g} K + flash {float(np.max(flash)):.3g} K), above the degradation temperature "
                             f"of {coating.name} ({limit:.4g} K)")
-    return {
-        "root_stress_max": [s_max["pinion"], s_max["gear"]],
-        "root_stress_compressive_min": [s_min["pinion"], s_min["gear"]],
-        "root_effective_area": [a_eff["pinion"], a_eff["gear"]],
-        "fracture_probability": p_pair,
-        "fracture_probability_pinion_tooth": p_tooth["pinion"],
-        "fracture_probability_gear_tooth": p_tooth["gear"],
-        "cycles_to_fracture_p01": n01,
-        "flash_temperature_max": float(np.max(flash)),
-        "bulk_temperature_rise": bulk,
-        "contact_temperature_max": contact,
-        "root_stress": {"pinion": stresses["pinion"]["tensile"], "gear": stresses["gear"]["tensile"]},
-        "flash_temperature": flash,
-        "fatigue": fatigue,
-        "warnings": warnings,
-    }
+    return flash, bulk, contact
 
 
 def _risk(fatigue, cycles):
