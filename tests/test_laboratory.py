@@ -157,3 +157,16 @@ def test_docs_experiments_regenerates_identically():
 
     page = (REPO / "docs" / "experiments.md").read_text(encoding="utf-8")
     assert markdown(run_all()) == page, "regenerate: python -m memstribo.laboratory --write docs/experiments.md"
+
+
+def test_validate_lab_command_prints_every_row_with_registered_keys(cli, monkeypatch):
+    from memstribo.laboratory import report
+    from memstribo.quantities import QUANTITIES
+
+    for key, value in {"nominal_realisations": 1, "prior_samples": 4, "calibration_realisations": 1}.items():
+        monkeypatch.setitem(report.SETTINGS, key, value)
+    out = cli.json("validate-lab")
+    assert [r["id"] for r in out["laboratory_rows"]] == [r.id for r in data.load_measurements()]
+    assert all(("median" in r) == (r["status"] == "predicted") and ("reason" in r) != ("median" in r)
+               for r in out["laboratory_rows"])
+    assert set(out) - {"warnings"} <= set(QUANTITIES)

@@ -200,7 +200,8 @@ def _friction_values(row, samples, realisations, calibration_coating, seed):
             case = (f"fixed-load sliding structure ({int(params['slider_blocks'])} nanoblocks) over a synthetic profile, "
                     f"{set_name}{' + ' + row.coating + ' (U_chem off)' if row.coating else ''}, nominal pressure "
                     f"{pressure:.3g} Pa -> load {load:.3g} N on the structure; {note}; "
-                    f"{'static friction read as the model COF (it has no separate static friction)' if row.quantity == 'static_cof' else 'kinetic COF = cof_mean'}")
+                    + ("static friction read as the model COF (it has no separate static friction)"
+                       if row.quantity == "static_cof" else "kinetic COF = cof_mean"))
     return values, case
 
 
