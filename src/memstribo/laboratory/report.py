@@ -197,9 +197,34 @@ def _findings(res):
     lines.append("- Static friction: the model has one friction coefficient (energy dissipated per sliding distance); "
                  "every static row is compared with it, and the measured static values of the bare oxide (2.1–2.3) are "
                  "a static friction the model does not have.")
+    result = res["result"]
+    by_id = {r.id: r for r in res["rows"]}
+    lost = [p1 for p0, p1 in zip(result.prior_predictions, result.posterior_predictions)
+            if p0.status == "predicted" and p0.inside and not p1.inside and not by_id[p0.id].calibration]
+    if lost:
+        lines.append("- Calibration moves " + ", ".join(p.id for p in lost) + " out of the band. "
+                     + _why_lost(lost, by_id, result))
     missing = [p for p in res["nominal"] if p.status != "predicted"]
     lines.append(f"- Not predicted ({len(missing)} rows): " + "; ".join(f"{p.id} ({p.reason})" for p in missing) + ".")
     return lines
+
+
+def _why_lost(lost, by_id, result):
+    """The reason a held-out row leaves the band after calibration, where the data say it."""
+    cal = [by_id[p.id] for p in result.posterior_predictions if by_id[p.id].calibration]
+    parts = []
+    for p in lost:
+        row = by_id[p.id]
+        same = [c for c in cal if c.coating == row.coating and c.quantity != row.quantity]
+        if same:
+            parts.append(f"{p.id} is a {row.quantity.replace('_', ' ')} of {row.coating or 'the bare oxide'} "
+                         f"({_g(row.value)}) and the calibration row {same[0].id} is its {same[0].quantity.replace('_', ' ')} "
+                         f"({_g(same[0].value)}): the model has one COF, so fitting it to one moves it away from the other")
+        elif row.condition("geometry") != "flat":
+            parts.append(f"{p.id} is a {row.condition('geometry')} contact at {_g(row.number('contact_pressure'))} Pa, "
+                         f"far from the calibration rows' load; the posterior band ({_g(p.low)}–{_g(p.high)}) misses "
+                         f"{_g(row.value)} by {_g(p.low / row.value if row.value < p.low else row.value / p.high, 2)}x")
+    return "; ".join(parts) + "." if parts else ""
 
 
 def figure(res, path):
