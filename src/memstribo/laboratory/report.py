@@ -194,9 +194,10 @@ def _findings(res):
                      f"(band {_g(p.low)}–{_g(p.high)}), as measured: for an unloaded rough interface the menisci fill more "
                      "of the gaps as RH rises. The loaded gear of the meshing cycle shows the opposite trend "
                      "(docs/humidity.md): that is item 4 of issue 28, not settled here.")
-    lines.append("- Static friction: the model has one friction coefficient (energy dissipated per sliding distance); "
-                 "every static row is compared with it, and the measured static values of the bare oxide (2.1–2.3) are "
-                 "a static friction the model does not have.")
+    lines.append("- Static friction: the model has one friction coefficient (energy dissipated per sliding distance, "
+                 "divided by normal plus adhesion force); every static row is compared with it. It has no separate "
+                 "static friction (no peak at the start of sliding), so a static and a kinetic row of one coating "
+                 "cannot both be met by one set of constants.")
     result = res["result"]
     by_id = {r.id: r for r in res["rows"]}
     lost = [p1 for p0, p1 in zip(result.prior_predictions, result.posterior_predictions)
