@@ -120,7 +120,7 @@ LAYERS = [
     ("materials", ("memstribo.materials",)),
     ("physics", ("memstribo.physics",)),
     ("simulations", ("memstribo.simulations",)),
-    ("validation", ("memstribo.validation",)),
+    ("validation", ("memstribo.validation", "memstribo.laboratory")),
     ("job", ("memstribo.job",)),
     ("api", ("memstribo.api",)),
     ("cli", ("memstribo.cli",)),

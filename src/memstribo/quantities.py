@@ -328,6 +328,16 @@ _ENTRIES = [
      "friction power over the heat conductance to its surroundings"),
     ("contact_temperature_max", "K", "largest contact temperature",
      "ambient temperature + bulk temperature rise + largest flash temperature rise"),
+    ("laboratory_rows", _TEXT, "laboratory rows", "per published measurement: id, quantity, measured value, predicted "
+     "median and 90 % band (SI, the row's unit), inside or outside, or why not predicted (issue 28)"),
+    ("held_out_inside_before", "1", "held-out hits before calibration", "held-out measurements inside the 90 % band over "
+     "roughness x prior samples (issue 28)"),
+    ("held_out_inside_after", "1", "held-out hits after calibration", "held-out measurements inside the 90 % band over "
+     "roughness x posterior (issue 28)"),
+    ("held_out_predicted", "1", "held-out rows predicted", "held-out measurements the model could predict (issue 28)"),
+    ("effective_sample_size", "1", "effective sample size", "(sum w)^2 / sum w^2 of the calibration's importance weights"),
+    ("fitted_constants", _TEXT, "fitted constants", "fitted or calibrated constants the run uses, with their value, "
+     "unit and fit conditions (issue 28)"),
 ]
 
 QUANTITIES: dict[str, Quantity] = {name: Quantity(name, unit, long, text) for name, unit, long, text in _ENTRIES}

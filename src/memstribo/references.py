@@ -106,6 +106,45 @@ REFERENCES: dict[str, str] = {
         "monolayer for MEMS: a comparison to the octadecyltrichlorosilane self-assembled monolayer', "
         "J. Microelectromech. Syst. 10 (2001) 41-49. doi:10.1109/84.911090"
     ),
+    "srinivasan_report_1998": (
+        "U. Srinivasan et al. (Sandia National Laboratories, U. C. Berkeley), 'Lubrication of polysilicon "
+        " micromechanisms with self-assembled monolayers', Sandia National Laboratories report, OSTI 671989, "
+        "1998. doi:10.2172/671989"
+    ),
+    "srinivasan_chapter_1998": (
+        "U. Srinivasan, M. R. Houston et al., 'Lubrication of polysilicon micromechanisms with "
+        "alkylsiloxane self-assembled monolayers: coefficient of static friction measurements', in B. Bhushan (ed.), "
+        "Tribology Issues and Opportunities in MEMS, Springer, 1998. doi:10.1007/978-94-011-5050-7_45"
+    ),
+    "lim_1990": (
+        "M. G. Lim, R. M. White et al., 'Polysilicon microstructures to characterize "
+        "static friction', Proceedings IEEE Micro Electro Mechanical Systems (MEMS '90), 1990 (IEEE proceedings "
+        "record; DOI not found in the searched records)"
+    ),
+    "gabriel_1990": (
+        "K. J. Gabriel, F. Behi, R. Mahadevan, M. Mehregany, 'In situ friction and wear measurements in integrated "
+        "polysilicon mechanisms', Sensors and Actuators A 21 (1990); value as cited in the Sandia report "
+        "doi:10.2172/671989"
+    ),
+    "delrio_2007": (
+        "F. W. DelRio, M. L. Dunn, L. M. Phinney, C. J. Bourdon, M. P. de Boer, 'Rough surface adhesion in the "
+        "presence of capillary condensation', Appl. Phys. Lett. 90 (2007) 163104. doi:10.1063/1.2723658"
+    ),
+    "deboer_1998": (
+        "M. P. de Boer, P. J. Clews, B. K. Smith, T. A. Michalske, 'Adhesion of polysilicon microbeams in controlled "
+        "humidity ambients', MRS Proc. 518 (1998) 131. doi:10.1557/PROC-518-131"
+    ),
+    "mehregany_2005": (
+        "M. Mehregany, S. Rajgopal, A. Izad, 'A unique reliability data point: the start-stop operation of a "
+        "polysilicon micromotor at the eight year mark', Proceedings IEEE MEMS 2005, ISBN 0-7803-8994-8 (IEEE "
+        "proceedings record; DOI not found in the searched records)"
+    ),
+    "van_spengen_2010": (
+        "W. M. van Spengen, V. Turq, J. W. M. Frenken, 'The description of friction of silicon MEMS with surface "
+        "roughness: virtues and limitations of a stochastic Prandtl-Tomlinson model', Beilstein J. Nanotechnol. 1 "
+        "(2010) 163-171. doi:10.3762/bjnano.1.20"
+    ),
+    "kish_1965": "L. Kish, Survey Sampling, Wiley, 1965 (effective sample size of weighted samples, (sum w)^2 / sum w^2).",
     "maboudian_howe_1997": (
         "R. Maboudian, R. T. Howe, 'Critical review: adhesion in surface micromechanical structures', "
         "J. Vac. Sci. Technol. B 15 (1997) 1-20. doi:10.1116/1.589247"
