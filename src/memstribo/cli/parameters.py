@@ -28,6 +28,10 @@ def run(args, params):
         return None
     if args.json:
         return CommandResult(values=params.to_dict(), units={n: SPECS[n].unit for n in params})
+    from memstribo.uncertainty.priors import priors_for, set_priors
+
+    free = priors_for(params)
+    priors = {**set_priors(params.name if params.name in _sets() else "silicon_thesis"), **free}
     lines = []
     for name in params:
         spec, value = SPECS[name], params[name]
@@ -36,7 +40,17 @@ def run(args, params):
         if spec.kind in ("float", "int"):
             lines.append(f"  {'':<28} allowed: {spec.allowed()}" + (f"; {spec.why}" if spec.why else ""))
         lines.append(f"  {'':<28} source: {params.source(name)}")
+        if name in priors:
+            prior = priors[name]
+            state = "sampled by --uncertainty" if name in free else "fixed (its value was given)"
+            lines.append(f"  {'':<28} prior: {prior.describe()} ({state}); {prior.source}; width: {prior.reason}")
     return CommandResult(values={}, title=f"parameter set '{params.name}'", notes=lines)
+
+
+def _sets():
+    from memstribo.parameters import available_parameter_sets
+
+    return available_parameter_sets()
 
 
 def _coating(args, params):
@@ -52,10 +66,16 @@ def _coating(args, params):
               "sources": {name: coating.sources.get(name, "") for name in names}}
     if args.json:
         return CommandResult(values=values, units={name: _UNITS[name] for name in names})
+    from memstribo.uncertainty.priors import coating_priors
+
+    priors = coating_priors(coating)
     lines = []
     for name in names:
         unit = _UNITS[name]
         lines.append(f"  {name:<24} {format_quantity(getattr(coating, name), unit):<16} "
                      + ("(--set coating_" + name + "=...)" if name != "water_contact_angle_deg" else "(informative)"))
         lines.append(f"  {'':<24} source: {coating.sources.get(name, '')}")
+        prior = priors.get(f"coating_{name}")
+        if prior is not None:
+            lines.append(f"  {'':<24} prior: {prior.describe()}; {prior.source}; width: {prior.reason}")
     return CommandResult(values={}, title=f"coating '{coating.name}': {coating.description}", notes=lines)
