@@ -129,8 +129,10 @@ def run(args, params):
     if args.step_check:
         values.update(step_convergence(params, roughness, steps=options["steps"], coating=options["coating"],
                                        wear=options["wear"], baseline=summary))
+    study = None
     if uncertainty is not None:
-        values.update(_uncertainty(args, params, roughness, options, uncertainty, realisations))
+        shown, study = _uncertainty(args, params, roughness, options, uncertainty, realisations)
+        values.update(shown)
     elif realisations > 1:
         from memstribo.uncertainty.intervals import ensemble_interval
 
@@ -184,6 +186,10 @@ def run(args, params):
         notes.extend(write_outputs(dataset, args.out, provenance_attributes(
             params, roughness=roughness, extra={"command": "memstribo mesh",
                                                 "models": "memstribo.simulations.mesh.simulate_mesh (thesis 4.6-4.9)"})))
+        if study is not None:
+            from memstribo.uncertainty.figures import write_figures
+
+            notes.append("  wrote " + ", ".join(str(path) for path in write_figures(study, args.out)))
     return CommandResult(values=values, units=dict(SUMMARY_UNITS), title="meshing cycle (thesis 4.6-4.9)",
                          notes=notes)
 
@@ -257,8 +263,8 @@ def _close(client, args) -> None:
         cluster.close()
 
 
-def _uncertainty(args, params, roughness, options, samples, realisations) -> dict:
-    """Run :func:`memstribo.uncertainty.study.uncertainty_study` for ``--uncertainty`` and return its JSON keys."""
+def _uncertainty(args, params, roughness, options, samples, realisations):
+    """Run :func:`memstribo.uncertainty.study.uncertainty_study` for ``--uncertainty``: (its keys shown, the result)."""
     from memstribo.errors import InputError
     from memstribo.uncertainty.study import uncertainty_study
 
@@ -281,7 +287,7 @@ def _uncertainty(args, params, roughness, options, samples, realisations) -> dic
     result["dominant_constant"] = result.pop("dominant")
     shown = UNCERTAINTY_KEYS if getattr(args, "json", False) else \
         [key for key in UNCERTAINTY_KEYS if key not in UNCERTAINTY_JSON_ONLY]  # the notes give them in words
-    return {key: result[key] for key in shown if key in result}
+    return {key: result[key] for key in shown if key in result}, result
 
 
 def uncertainty_notes(values) -> list[str]:
