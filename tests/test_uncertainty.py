@@ -250,3 +250,20 @@ def test_bad_uncertainty_input_exits_2(cli, argv, message):
     code, out, err = cli("mesh", "--steps", "3", "--no-step-check", *argv)
     assert code == 2
     assert message in err and "Traceback" not in err
+
+
+def test_grouped_design_shares_the_solved_constants_only(params):
+    from memstribo.uncertainty.study import _design
+
+    priors = priors_for(params)
+    points = _design(priors, 2, 8, 2, ("bond_energy", "vdw_bond_energy"), seed=0)
+    assert len(points) == 16 and [r for r, _ in points].count(0) == 8
+    for r in (0, 1):
+        mine = [c for q, c in points if q == r]
+        groups = [mine[:4], mine[4:]]
+        for group in groups:
+            assert len({c["adhesive_width"] for c in group}) == 1  # one contact solve per group
+            assert len({c["vdw_bond_energy"] for c in group}) == 4  # the rescaled energies all differ
+        assert groups[0][0]["adhesive_width"] != groups[1][0]["adhesive_width"]
+    ungrouped = _design(priors, 2, 8, None, ("bond_energy", "vdw_bond_energy"), seed=0)
+    assert len({c["adhesive_width"] for _, c in ungrouped}) == 16

@@ -299,6 +299,29 @@ def designer_sentence(name, entry, prior, nominal) -> str:
     return f"Stiction if {name} {sign} {value:.3g}{unit} (nominal {nominal:.3g}{unit}){measure}."
 
 
+def _design(sampled, realisations, sets, solve_sets, rescalable, seed):
+    """The points [(realisation, constants)] of ``realisations`` x ``sets`` samples.
+
+    One low-discrepancy design of ``realisations * sets`` points over the priors; point
+    ``i = j * realisations + r`` goes to realisation ``r`` (so a doubled ``sets`` extends the design).
+    With ``solve_sets`` < ``sets``, the constants that need a new contact solve take only ``solve_sets``
+    values per realisation (each group of ``sets / solve_sets`` points shares its first point's), while the
+    rescaled bond energies keep all their values: fewer solves, each sample still drawn from the priors.
+    """
+    from memstribo.uncertainty.sampling import sample_constants
+
+    design = sample_constants(sampled, realisations * sets, seed=seed)
+    points = []
+    group = 1 if not solve_sets or solve_sets >= sets else int(math.ceil(sets / int(solve_sets)))
+    for i, constants in enumerate(design):
+        r, j = i % realisations, i // realisations
+        if group > 1:
+            first = design[(j - j % group) * realisations + r]
+            constants = {k: (v if k in rescalable else first[k]) for k, v in constants.items()}
+        points.append((r, constants))
+    return points
+
+
 def _check_samples(samples, realisations, steps_of_cycle):
     from memstribo.parameters.definitions import MEMORY_LIMIT_BYTES
 
@@ -319,7 +342,7 @@ def _check_samples(samples, realisations, steps_of_cycle):
 def uncertainty_study(params, roughness=None, *, samples="auto", realisations=None, steps=None, coating=None,
                       wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
                       sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
-                      threshold=0.1, curve_points=9, priors=None) -> dict:
+                      threshold=0.1, curve_points=9, priors=None, solve_sets=None) -> dict:
     """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
 
     Parameters
@@ -357,6 +380,11 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         Values of the dominant constant for the curve P(stiction) against it.
     priors : Mapping[str, Prior], optional
         Priors to use instead of the parameter set's.
+    solve_sets : int, optional
+        Distinct values per realisation of the constants that need a new contact solve (default:
+        every constant set its own); the bond energies are rescaled and keep every set's value
+        (:func:`_design`). Fewer solves; the samples of a group share their contact solution, so they
+        are correlated and the interval (which counts them as independent) is then optimistic.
 
     Returns
     -------
@@ -379,7 +407,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         the memory estimate, bad priors.
     """
     from memstribo.uncertainty.priors import priors_for
-    from memstribo.uncertainty.sampling import _check_fixed, sample_constants
+    from memstribo.uncertainty.sampling import _check_fixed
     from memstribo.uncertainty.intervals import half_width
 
     start = time.perf_counter()
@@ -403,8 +431,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         if samples == "auto":
             sets_count = max(1, 16)
             while True:
-                sets = sample_constants(sampled, sets_count, seed=seed)
-                summaries = runner.summaries([(r, cs) for cs in sets for r in range(R)])
+                points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+                summaries = runner.summaries(points)
                 p = _probability(summaries, confidence)
                 if (half_width(p["count"], p["samples"], confidence) < TARGET_HALF_WIDTH and not p["failed"]) \
                         or 2 * R * sets_count > int(budget):
@@ -412,8 +440,9 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
                 sets_count *= 2
         else:
             sets_count = max(1, int(samples) // R)
-            sets = sample_constants(sampled, sets_count, seed=seed)
-            summaries = runner.summaries([(r, cs) for cs in sets for r in range(R)])
+            points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+            summaries = runner.summaries(points)
+        sets = range(sets_count)
         p_all = _probability(summaries, confidence)
         p_nom = _probability(nominal, confidence)
         ok = [s for s in summaries if not s.get("failed")]
@@ -430,6 +459,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
             "stiction_probability_nominal_text": p_nom["text"],
             "realisations": R,
             "constant_sets": len(sets),
+            "solve_sets": solve_sets,
             "confidence": confidence,
             "margin_quantiles": _quantiles([s["stiction_margin"] for s in ok]),
             "margin_quantiles_nominal": _quantiles([s["stiction_margin"] for s in ok_nominal]),
