@@ -267,3 +267,21 @@ def test_grouped_design_shares_the_solved_constants_only(params):
         assert groups[0][0]["adhesive_width"] != groups[1][0]["adhesive_width"]
     ungrouped = _design(priors, 2, 8, None, ("bond_energy", "vdw_bond_energy"), seed=0)
     assert len({c["adhesive_width"] for _, c in ungrouped}) == 16
+
+
+# --- design maps ----------------------------------------------------------------------------------------------
+def test_map_point_carries_the_interval(params):
+    from memstribo.simulations.design_map import map_point, map_spec
+
+    plain = map_point(params.updated({"realisations": 2}), steps=11)
+    assert plain["uncertainty_samples"] == 0
+    assert plain["stiction_probability_low"] <= plain["stiction_probability"] <= plain["stiction_probability_high"]
+    assert (plain["stiction_probability_low"], plain["stiction_probability_high"]) == pytest.approx(
+        binomial_interval(round(2 * plain["stiction_probability"]), 2))
+    with_constants = map_point(params.updated({"realisations": 2}), steps=11, uncertainty=4)
+    assert with_constants["uncertainty_samples"] == 4
+    assert with_constants["stiction_probability_nominal"] == plain["stiction_probability"]
+    low, high = with_constants["stiction_probability_low"], with_constants["stiction_probability_high"]
+    assert low <= with_constants["stiction_probability"] <= high
+    with pytest.raises(InputError, match="uncertainty"):
+        map_spec({"realisations": 4, "uncertainty": 2, "grid": {"drive_torque": ["1e-7 N*m", "2e-7 N*m"]}})
