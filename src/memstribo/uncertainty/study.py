@@ -412,8 +412,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
 
     start = time.perf_counter()
     coating_name = getattr(coating, "name", coating) if coating is not None else None
-    if priors is None:
-        priors = priors_for(params, coating_name)
+    if priors is None:  # a fully worn coating (wear 1) leaves bare blocks only: its constants do not act
+        priors = priors_for(params, coating_name if float(wear) < 1.0 else None)
     fixed_names = _check_fixed(priors, fixed)
     sampled = {name: p for name, p in priors.items() if name not in fixed_names}
     if realisations is None:
