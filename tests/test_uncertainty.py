@@ -245,6 +245,7 @@ def test_uncertainty_study_small(params):
     (("--uncertainty", "4", "--fix", "bond_energy,bond_energy"), "named twice"),
     (("--uncertainty", "4", "--set", "bond_energy=4e-19", "--fix", "bond_energy"), "named twice"),
     (("--fix", "bond_energy"), "need --uncertainty"),
+    (("--uncertainty", "5000000"), "memory"),
 ])
 def test_bad_uncertainty_input_exits_2(cli, argv, message):
     code, out, err = cli("mesh", "--steps", "3", "--no-step-check", *argv)
