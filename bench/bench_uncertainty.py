@@ -92,6 +92,15 @@ def case_sobol(args, params):
             "solves": result["solves"], "rescalings": result["rescalings"], "ranking": ranking}
 
 
+def _warm_up():
+    """One short cycle: imports and the compiled zone kernel (numba) ready, as in a long study."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh
+
+    simulate_mesh(get_parameter_values(), steps=5)
+    return True
+
+
 def case_speedup(args, params):
     from memstribo.uncertainty.study import _Runner
 
@@ -100,8 +109,10 @@ def case_speedup(args, params):
     for workers in (0, 2):
         client = _client(workers)
         try:
-            if client is not None:  # start-up of the workers (imports) is not the speed-up
-                client.run(lambda: __import__("memstribo.simulations.mesh"))
+            if client is not None:  # start-up of the workers (imports, compilation) is not the speed-up
+                client.run(_warm_up)
+            else:
+                _warm_up()
             runner = _Runner(params, None, args.steps, None, 1.0, client, False)
             start = time.perf_counter()
             runner.summaries(points)
