@@ -286,3 +286,11 @@ def test_map_point_carries_the_interval(params):
     assert low <= with_constants["stiction_probability"] <= high
     with pytest.raises(InputError, match="uncertainty"):
         map_spec({"realisations": 4, "uncertainty": 2, "grid": {"drive_torque": ["1e-7 N*m", "2e-7 N*m"]}})
+
+
+def test_the_ensemble_output_has_its_interval(cli):
+    out = cli.json("mesh", "--realisations", "2", "--steps", "5", "--no-step-check")
+    k = sum(r["stiction"] for r in out["per_realisation"])
+    assert out["stiction_count"] == k
+    assert out["stiction_probability_ci"] == pytest.approx(list(binomial_interval(k, 2)))
+    assert out["stiction_probability_text"] == format_probability(k, 2)
