@@ -119,7 +119,7 @@ LAYERS = [
     ("surfaces", ("memstribo.surfaces",)),
     ("materials", ("memstribo.materials",)),
     ("physics", ("memstribo.physics",)),
-    ("simulations", ("memstribo.simulations",)),
+    ("simulations", ("memstribo.simulations", "memstribo.uncertainty")),
     ("validation", ("memstribo.validation", "memstribo.laboratory")),
     ("job", ("memstribo.job",)),
     ("api", ("memstribo.api",)),

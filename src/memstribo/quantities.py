@@ -338,6 +338,42 @@ _ENTRIES = [
     ("effective_sample_size", "1", "effective sample size", "(sum w)^2 / sum w^2 of the calibration's importance weights"),
     ("fitted_constants", _TEXT, "fitted constants", "fitted or calibrated constants the run uses, with their value, "
      "unit and fit conditions (issue 28)"),
+    # --- what the verdict hangs on (MODEL 7d, issue 27; memstribo.uncertainty) -----------------------------
+    ("stiction_count", "1", "stiction count", "samples (realisations, or realisations x constant sets) that stick"),
+    ("stiction_probability_ci", "1", "stiction probability interval",
+     "95 % confidence interval [low, high] of the stiction probability from the number of samples (Wilson)"),
+    ("stiction_probability_text", _TEXT, "stiction probability with interval",
+     "the count and its interval, e.g. '0 of 16 (95 % CI 0-19 %)'"),
+    ("stiction_probability_nominal", "1", "stiction probability at nominal constants",
+     "fraction of roughness realisations that stick with every constant at its nominal value"),
+    ("stiction_probability_nominal_ci", "1", "stiction probability interval at nominal constants",
+     "95 % confidence interval [low, high] of stiction_probability_nominal (Wilson)"),
+    ("stiction_probability_nominal_text", _TEXT, "stiction probability at nominal constants, with interval",
+     "the count over the realisations at nominal constants and its interval"),
+    ("stiction_probability_low", "1", "stiction probability, lower bound", "lower bound of the 95 % interval"),
+    ("stiction_probability_high", "1", "stiction probability, upper bound", "upper bound of the 95 % interval"),
+    ("uncertainty_samples", "1", "uncertainty samples", "realisations x constant sets of the uncertainty study"),
+    ("constant_sets", "1", "constant sets", "sets of the uncertain constants drawn from their priors (Sobol' design)"),
+    ("margin_quantiles", "N", "stiction margin quantiles",
+     "5/50/95 % quantiles of the stiction margin over realisations x constant sets (p05, p50, p95, median)"),
+    ("margin_quantiles_nominal", "N", "stiction margin quantiles at nominal constants",
+     "5/50/95 % quantiles of the stiction margin over the realisations at nominal constants"),
+    ("startup_margin_quantiles", "N", "start-up margin quantiles",
+     "5/50/95 % quantiles of the start-up margin over realisations x constant sets"),
+    ("cof_quantiles", "1", "mean COF quantiles", "5/50/95 % quantiles of the cycle's mean COF over the samples"),
+    ("cof_split_quantiles", "1", "COF split quantiles",
+     "5/50/95 % quantiles of the chemical, vdW, elastic and capillary parts of the mean COF"),
+    ("sensitivity", _TEXT, "sensitivity",
+     "per constant: Sobol' first-order and total indices of the margin (first, total) and of the mean COF "
+     "(cof_first, cof_total) with their bootstrap intervals, and the critical value [unit of the constant] "
+     "where the median margin crosses zero, or null with a note"),
+    ("dominant_constant", _TEXT, "dominant constant", "the constant with the largest total Sobol' index of the margin"),
+    ("designer_sentence", _TEXT, "what to do", "where the verdict flips and what to measure"),
+    ("sampled_constants", _TEXT, "sampled constants", "the constants sampled from their priors"),
+    ("fixed_constants", _TEXT, "fixed constants", "constants with a prior held at their value (--fix, --set)"),
+    ("unconverged_samples", "1", "unconverged samples", "sampled cycles with unconverged contact steps (kept)"),
+    ("failed_samples", "1", "failed samples", "sampled points the model refused (counted in the interval)"),
+    ("priors", _TEXT, "priors", "the prior of each uncertain constant: distribution, bounds [SI], source, reason"),
 ]
 
 QUANTITIES: dict[str, Quantity] = {name: Quantity(name, unit, long, text) for name, unit, long, text in _ENTRIES}

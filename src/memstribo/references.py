@@ -245,6 +245,40 @@ REFERENCES: dict[str, str] = {
         "E. Lassner, W.-D. Schubert, Tungsten: Properties, Chemistry, Technology of the Element, Alloys, and "
         "Chemical Compounds, Kluwer Academic/Plenum Publishers, New York, 1999."
     ),
+    "wilson_1927": (
+        "E. B. Wilson, 'Probable inference, the law of succession, and statistical inference', "
+        "J. Am. Stat. Assoc. 22 (1927) 209-212. doi:10.1080/01621459.1927.10502953"
+    ),
+    "clopper_pearson_1934": (
+        "C. J. Clopper, E. S. Pearson, 'The use of confidence or fiducial limits illustrated in the case of the "
+        "binomial', Biometrika 26 (1934) 404-413. doi:10.1093/biomet/26.4.404"
+    ),
+    "sobol_2001": (
+        "I. M. Sobol', 'Global sensitivity indices for nonlinear mathematical models and their Monte Carlo "
+        "estimates', Math. Comput. Simul. 55 (2001) 271-280. doi:10.1016/S0378-4754(00)00270-6"
+    ),
+    "saltelli_2010": (
+        "A. Saltelli, P. Annoni, I. Azzini, F. Campolongo, M. Ratto, S. Tarantola, 'Variance based sensitivity "
+        "analysis of model output. Design and estimator for the total sensitivity index', Comput. Phys. Commun. "
+        "181 (2010) 259-270. doi:10.1016/j.cpc.2009.09.018"
+    ),
+    "herman_usher_2017": (
+        "J. Herman, W. Usher, 'SALib: an open-source Python library for sensitivity analysis', J. Open Source "
+        "Softw. 2 (2017) 97. doi:10.21105/joss.00097"
+    ),
+    "owen_1998": (
+        "A. B. Owen, 'Scrambling Sobol' and Niederreiter-Xing points', J. Complexity 14 (1998) 466-489. "
+        "doi:10.1006/jcom.1998.0487"
+    ),
+    "sharpe_1997": (
+        "W. N. Sharpe, B. Yuan, R. Vaidyanathan, R. L. Edwards, 'Measurements of Young's modulus, Poisson's ratio, "
+        "and tensile strength of polysilicon', Proc. IEEE MEMS '97 (1997) 424-429. doi:10.1109/MEMSYS.1997.581881"
+    ),
+    "sharpe_2000": (
+        "W. N. Sharpe, K. Jackson, G. Coles, D. A. LaVan, 'Mechanical properties of different polysilicons', "
+        "Proc. ASME IMECE 2000, MEMS, 255-259. doi:10.1115/IMECE2000-1100"
+    ),
+    "kittel_2005": "C. Kittel, Introduction to Solid State Physics, 8th ed., Wiley, 2005 (Table 3.1, cohesive energies).",
 }
 
 _used: dict[str, None] = {}

@@ -66,6 +66,7 @@ def run(args, params):
         "name": spec.name,
         "axes": {key: len(v) for key, v in spec.axes},
         "realisations": spec.realisations,
+        "uncertainty_samples": spec.uncertainty,
         "points": result.n_points,
         "computed": result.n_computed,
         "reused": result.n_reused,

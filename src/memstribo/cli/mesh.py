@@ -34,6 +34,20 @@ def register(subparsers, parents):
                         help="independent roughness realisations: the verdict as a stiction probability with "
                              "5-95 %% bands (default: the parameter realisations, 1)")
     parser.add_argument("--scheduler", metavar="ADDRESS", help="run the realisations on a dask.distributed scheduler")
+    parser.add_argument("--uncertainty", metavar="N|auto",
+                        help="the verdict over what nobody measured (MODEL 7d): N samples of roughness realisations x "
+                             "constants drawn from their priors ('memstribo parameters' lists them), or 'auto' (until "
+                             "the 95 %% interval's half-width is below 0.05, at most 1024); reports P(stiction) with "
+                             "its interval, the Sobol' ranking of the constants and their critical values")
+    parser.add_argument("--fix", action="append", default=[], metavar="NAME[,NAME]",
+                        help="with --uncertainty: keep these constants at their value (each must have a prior; "
+                             "--set NAME=VALUE fixes one at another value)")
+    parser.add_argument("--sobol-samples", type=int, metavar="N",
+                        help="with --uncertainty: base samples of the Sobol' design, a power of two (default 32): "
+                             "N x (constants + 3) cycles or rescalings")
+    parser.add_argument("--workers", type=int, metavar="N",
+                        help="with --uncertainty or --realisations: run the cycles on a local Dask cluster of N "
+                             "worker processes")
     parser.add_argument("--step-check", action=argparse.BooleanOptionalAction, default=True,
                         help="rerun at twice the steps and report step_converged (default: on)")
     parser.add_argument("--out", metavar="DIR", help="write the time series (NetCDF + CSV) and the figures (PNG + SVG)")
@@ -108,6 +122,7 @@ def run(args, params):
 
     params = apply_load_case(args, params)
     options = simulation_options(args, params)
+    uncertainty = _uncertainty_option(args)
     realisations = params["realisations"] if args.realisations is None else args.realisations
     from memstribo.parameters.definitions import SPECS
 
@@ -123,23 +138,23 @@ def run(args, params):
     if args.step_check:
         values.update(step_convergence(params, roughness, steps=options["steps"], coating=options["coating"],
                                        wear=options["wear"], baseline=summary))
-    if realisations > 1:
-        client = None
-        if args.scheduler:
-            from memstribo.simulations.study import require_dask
+    study = None
+    if uncertainty is not None:
+        shown, study = _uncertainty(args, params, roughness, options, uncertainty, realisations)
+        values.update(shown)
+    elif realisations > 1:
+        from memstribo.uncertainty.intervals import ensemble_interval
 
-            require_dask("--scheduler")
-            from distributed import Client
-
-            client = Client(args.scheduler)
+        client = _client(args)
         try:
             ensemble = simulate_ensemble(params, roughness, realisations=realisations, steps=options["steps"],
                                          coating=options["coating"], wear=options["wear"], client=client,
                                          progress=options["progress"])
         finally:
-            if client is not None:
-                client.close()
+            _close(client, args)
+        ensemble = ensemble_interval(ensemble)  # no probability without its interval (MODEL 7d)
         values.update({key: ensemble[key] for key in ENSEMBLE_KEYS})
+        values.update({key: ensemble[key] for key in ENSEMBLE_INTERVAL_KEYS})
     notes = [
         f"  load case '{summary['load_case']}': normal force {summary['normal_force_total'] * 1e3:.4g} mN on the "
         f"teeth, F_t {summary['tangential_force'] * 1e3:.4g} mN"
@@ -162,9 +177,11 @@ def run(args, params):
         notes.append(f"  step check at {values['steps_checked']} steps: margin changes by "
                      f"{values['step_change_margin'] * 100:.2g} % of F_t, mean COF by {values['step_change_cof'] * 100:.2g} %"
                      + ("" if values["step_converged"] else " -- NOT converged (goal < 2 %): use more steps"))
-    if "stiction_probability" in values:
+    if "uncertainty_samples" in values:
+        notes.extend(uncertainty_notes(values))
+    elif "stiction_probability" in values:
         notes.append(f"  ensemble of {values['realisations']} roughness realisations: stiction probability "
-                     f"{values['stiction_probability'] * 100:.0f} %, margin {values['stiction_margin_p05'] * 1e3:+.3g} .. "
+                     f"{values['stiction_probability_text']}, margin {values['stiction_margin_p05'] * 1e3:+.3g} .. "
                      f"{values['stiction_margin_p95'] * 1e3:+.3g} mN (5-95 %), mean COF {values['cof_mean_p05']:.3g} .. "
                      f"{values['cof_mean_p95']:.3g}")
     for text in summary["warnings"]:
@@ -178,8 +195,134 @@ def run(args, params):
         notes.extend(write_outputs(dataset, args.out, provenance_attributes(
             params, roughness=roughness, extra={"command": "memstribo mesh",
                                                 "models": "memstribo.simulations.mesh.simulate_mesh (thesis 4.6-4.9)"})))
+        if study is not None:
+            from memstribo.uncertainty.figures import write_figures
+
+            notes.append("  wrote " + ", ".join(str(path) for path in write_figures(study, args.out)))
     return CommandResult(values=values, units=dict(SUMMARY_UNITS), title="meshing cycle (thesis 4.6-4.9)",
                          notes=notes)
+
+
+#: Keys the ensemble verdict gains from :func:`memstribo.uncertainty.intervals.ensemble_interval`.
+ENSEMBLE_INTERVAL_KEYS = ("stiction_count", "stiction_probability_ci", "stiction_probability_text")
+
+#: Keys of the uncertainty study (``--uncertainty``) in the JSON, from
+#: :func:`memstribo.uncertainty.study.uncertainty_study` (``samples`` as ``uncertainty_samples``,
+#: ``dominant`` as ``dominant_constant``).
+UNCERTAINTY_KEYS = ("stiction_probability", "stiction_probability_ci", "stiction_count", "uncertainty_samples",
+                    "stiction_probability_text", "stiction_probability_nominal", "stiction_probability_nominal_ci",
+                    "stiction_probability_nominal_text", "realisations", "constant_sets", "margin_quantiles",
+                    "margin_quantiles_nominal", "startup_margin_quantiles", "cof_quantiles", "cof_split_quantiles",
+                    "sensitivity", "dominant_constant", "designer_sentence", "sampled_constants", "fixed_constants",
+                    "unconverged_samples", "failed_samples", "priors")
+
+
+#: Keys only the JSON carries (the readable output gives them as notes).
+UNCERTAINTY_JSON_ONLY = ("priors", "sensitivity", "cof_split_quantiles", "sampled_constants",
+                         "margin_quantiles_nominal")
+
+
+def _uncertainty_option(args):
+    """``--uncertainty``: None, ``"auto"`` or a sample count; the options that need it are refused without it."""
+    from memstribo.errors import InputError
+
+    text = getattr(args, "uncertainty", None)
+    if text is None:
+        if getattr(args, "fix", None) or getattr(args, "sobol_samples", None) is not None:
+            raise InputError("--fix and --sobol-samples need --uncertainty N|auto.")
+        return None
+    text = str(text).strip().lower()
+    if text == "auto":
+        return "auto"
+    try:
+        n = int(text)
+    except ValueError:
+        raise InputError(f"--uncertainty expects a number of samples or 'auto', got '{text}'.") from None
+    if n < 1:
+        raise InputError(f"--uncertainty must be at least 1 sample, got {n}.")
+    return n
+
+
+def _client(args):
+    """A Dask client: --scheduler ADDRESS, or a local cluster of --workers N processes, or None."""
+    from memstribo.simulations.study import require_dask
+
+    if getattr(args, "scheduler", None):
+        require_dask("--scheduler")
+        from distributed import Client
+
+        return Client(args.scheduler)
+    if getattr(args, "workers", None):
+        from memstribo.errors import InputError
+
+        if args.workers < 1:
+            raise InputError(f"--workers must be at least 1, got {args.workers}.")
+        require_dask("--workers")
+        from distributed import Client
+
+        from memstribo.simulations.study import local_cluster
+
+        return Client(local_cluster(args.workers))
+    return None
+
+
+def _close(client, args) -> None:
+    """Close a client of :func:`_client`, and the local cluster it started (--workers)."""
+    if client is None:
+        return
+    cluster = getattr(client, "cluster", None)
+    client.close()
+    if cluster is not None and not getattr(args, "scheduler", None):
+        cluster.close()
+
+
+def _uncertainty(args, params, roughness, options, samples, realisations):
+    """Run :func:`memstribo.uncertainty.study.uncertainty_study` for ``--uncertainty``: (its keys shown, the result)."""
+    from memstribo.errors import InputError
+    from memstribo.uncertainty.study import uncertainty_study
+
+    fixed = [name.strip() for item in args.fix for name in item.split(",") if name.strip()]
+    for name in fixed:
+        if name in params and params.source(name) in ("--set",) or str(params.source(name) if name in params
+                                                                         else "").startswith("config file"):
+            raise InputError(f"the constant '{name}' is named twice: --fix {name} and a value given by "
+                             f"{params.source(name)} (a given value is already fixed; drop --fix {name}).")
+    client = _client(args)
+    try:
+        result = uncertainty_study(params, roughness, samples=samples,
+                                   realisations=None if args.realisations is None else realisations,
+                                   steps=options["steps"], coating=options["coating"], wear=options["wear"],
+                                   client=client, progress=options["progress"], fixed=fixed,
+                                   sobol_samples=args.sobol_samples)
+    finally:
+        _close(client, args)
+    result["uncertainty_samples"] = result.pop("samples")
+    result["dominant_constant"] = result.pop("dominant")
+    shown = UNCERTAINTY_KEYS if getattr(args, "json", False) else \
+        [key for key in UNCERTAINTY_KEYS if key not in UNCERTAINTY_JSON_ONLY]  # the notes give them in words
+    return {key: result[key] for key in shown if key in result}, result
+
+
+def uncertainty_notes(values) -> list[str]:
+    """The readable lines of an uncertainty study: probabilities with intervals, ranking, critical values."""
+    notes = [f"  P(stiction) = {values['stiction_probability_text']} over {values['realisations']} roughness "
+             f"realisations x {values['constant_sets']} sets of the uncertain constants",
+             f"  P(stiction) at nominal constants = {values['stiction_probability_nominal_text']}"]
+    q = values.get("margin_quantiles")
+    if q:
+        notes.append(f"  margin 5/50/95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / {q['p95'] * 1e3:+.3g} mN")
+    ranked = [(name, entry) for name, entry in values.get("sensitivity", {}).items()]
+    if ranked:
+        notes.append("  what the margin hangs on (Sobol' total index [95 % interval]; critical value):")
+        for name, entry in ranked[:6]:
+            critical = entry.get("critical_value")
+            crit = (f"critical {critical:.4g}" if critical is not None
+                    else (entry.get("note") or ""))
+            notes.append(f"    {name:<24} {entry['total']:.2f} [{entry['total_ci'][0]:.2f}, {entry['total_ci'][1]:.2f}]"
+                         f"  {crit}")
+    if values.get("designer_sentence"):
+        notes.append(f"  {values['designer_sentence']}")
+    return notes
 
 
 def write_outputs(dataset, folder, provenance=None) -> list[str]:

@@ -27,9 +27,14 @@ def run(args, params):
         print(params.to_toml(), end="")
         return None
     if args.json:
-        # the values by name (SI) as before, and under "parameters" each with its unit, bounds and source
+        # the values by name (SI) as before, and under "parameters" each with its unit, bounds, source and prior
         values = {**params.to_dict(), "parameters": {name: _entry(SPECS[name], params, name) for name in params}}
+        _add_priors(values["parameters"], params)
         return CommandResult(values=values, units={n: SPECS[n].unit for n in params})
+    from memstribo.uncertainty.priors import priors_for, set_priors
+
+    free = priors_for(params)
+    priors = {**set_priors(params.name if params.name in _sets() else "silicon_thesis"), **free}
     lines = []
     for name in params:
         spec, value = SPECS[name], params[name]
@@ -38,6 +43,10 @@ def run(args, params):
         if spec.kind in ("float", "int"):
             lines.append(f"  {'':<28} allowed: {spec.allowed()}" + (f"; {spec.why}" if spec.why else ""))
         lines.append(f"  {'':<28} source: {params.source(name)}")
+        if name in priors:
+            prior = priors[name]
+            state = "sampled by --uncertainty" if name in free else "fixed (its value was given)"
+            lines.append(f"  {'':<28} prior: {prior.describe()} ({state}); {prior.source}; width: {prior.reason}")
     return CommandResult(values={}, title=f"parameter set '{params.name}'", notes=lines)
 
 
@@ -52,6 +61,22 @@ def _entry(spec, params, name) -> dict:
         entry["choices"] = list(spec.choices)
     entry.update(optional=spec.optional, allowed=spec.allowed(), why=spec.why)
     return entry
+
+
+def _add_priors(entries, params) -> None:
+    """Each sampled constant's prior (distribution, bounds, source, why its width) under its entry's ``prior``."""
+    from memstribo.uncertainty.priors import priors_for
+
+    for name, prior in priors_for(params).items():
+        if name in entries:
+            entries[name]["prior"] = {"distribution": prior.distribution, "low": prior.low, "high": prior.high,
+                                      "source": prior.source, "reason": prior.reason}
+
+
+def _sets():
+    from memstribo.parameters import available_parameter_sets
+
+    return available_parameter_sets()
 
 
 def _coating(args, params):
@@ -70,10 +95,16 @@ def _coating(args, params):
               "sources": {name: coating.sources.get(name, "") for name in names}}
     if args.json:
         return CommandResult(values=values, units={name: _UNITS[name] for name in names})
+    from memstribo.uncertainty.priors import coating_priors
+
+    priors = coating_priors(coating)
     lines = []
     for name in names:
         unit = _UNITS[name]
         lines.append(f"  {name:<24} {format_quantity(getattr(coating, name), unit):<16} "
                      + notes.get(name, "(--set coating_" + name + "=...)"))
         lines.append(f"  {'':<24} source: {coating.sources.get(name, '')}")
+        prior = priors.get(f"coating_{name}")
+        if prior is not None:
+            lines.append(f"  {'':<24} prior: {prior.describe()}; {prior.source}; width: {prior.reason}")
     return CommandResult(values={}, title=f"coating '{coating.name}': {coating.description}", notes=lines)

@@ -29,6 +29,8 @@ Spec file (TOML)::
     plot = ["drive_torque", "face_width"]   # optional: the two axes of the figures
     cycles_observed = 1e6           # optional: observed coating life, calibrates c1
     wear_sweep = [0, 0.25, 0.5, 0.75, 1]     # optional: Omega states for the critical wear
+    uncertainty = 64                # optional: P(stiction) over realisations x constants from their priors
+                                    # (MODEL 7d, memstribo.uncertainty): samples per point, realisations each
 
     [map.fixed]                     # optional: the same for every point
     coating = "OTS"
@@ -74,9 +76,12 @@ MAX_MAP_POINTS = 10_000
 #: the names of :func:`memstribo.simulations.mesh.ensemble_summary`, and the coating's life.
 MAP_RESULTS = ("stiction_probability", "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95",
                "cof_mean_median", "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median", "mesh_efficiency_p05",
-               "mesh_efficiency_p95", "realisations", "cycles_to_failure", "cycles_to_stiction", "critical_wear")
+               "mesh_efficiency_p95", "realisations", "cycles_to_failure", "cycles_to_stiction", "critical_wear",
+               "stiction_probability_low", "stiction_probability_high", "stiction_probability_nominal",
+               "uncertainty_samples")
 
-_MAP_KEYS = {"name", "realisations", "steps", "plot", "cycles_observed", "wear_sweep", "grid", "fixed"}
+_MAP_KEYS = {"name", "realisations", "steps", "plot", "cycles_observed", "wear_sweep", "grid", "fixed",
+             "uncertainty"}
 
 
 @dataclass(frozen=True)
@@ -104,6 +109,9 @@ class MapSpec:
         Observed coating life [meshing cycles] that calibrates c1.
     wear_sweep : tuple of float
         Worn fractions Omega [-] whose stiction margins give the critical wear of coated points.
+    uncertainty : int
+        Samples (realisations x constant sets) of each point's P(stiction) over the uncertain
+        constants (MODEL 7d; 0: the realisations at nominal constants only).
     source : str
         Where the spec comes from (file name or "python").
     """
@@ -117,6 +125,7 @@ class MapSpec:
     plot: tuple[str, ...] = ()
     cycles_observed: float | None = None
     wear_sweep: tuple[float, ...] = DEFAULT_WEAR_SWEEP
+    uncertainty: int = 0
     source: str = "python"
 
     @property
@@ -226,6 +235,12 @@ def map_spec(table: Mapping[str, Any], parameters: Mapping[str, Any] | None = No
             or not all(isinstance(w, (int, float)) and not isinstance(w, bool) and 0 <= w <= 1 for w in wears)):
         raise InputError(f"{where}: wear_sweep = {printable(repr(wears), 60)}: give a list of at least two worn "
                          "fractions from 0 to 1.")
+    uncertainty = table.get("uncertainty", 0)
+    if (not isinstance(uncertainty, int) or isinstance(uncertainty, bool) or not 0 <= uncertainty <= 100_000
+            or (uncertainty and uncertainty < realisations)):
+        raise InputError(f"{where}: uncertainty = {printable(repr(uncertainty), 40)}: give the samples per point "
+                         f"(realisations x constant sets), at least realisations ({realisations}) and at most "
+                         "100000, or 0 for none.")
     numeric = [key for key, values in axes if _is_numeric(key) and len(values) >= 2]
     plot = table.get("plot")
     if plot is None:
@@ -240,7 +255,7 @@ def map_spec(table: Mapping[str, Any], parameters: Mapping[str, Any] | None = No
                              f"two or more values; axes: {numeric}.{did_you_mean(key, numeric)}")
     return MapSpec(name=name, axes=axes, fixed=dict(fixed), parameters=dict(parameters or {}),
                    realisations=realisations, steps=steps, plot=tuple(plot), cycles_observed=cycles,
-                   wear_sweep=tuple(float(w) for w in wears), source=source)
+                   wear_sweep=tuple(float(w) for w in wears), uncertainty=int(uncertainty), source=source)
 
 
 def load_map_spec(path: str | Path) -> MapSpec:
@@ -282,7 +297,7 @@ def _study_of(spec: MapSpec):
 
 def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: str | None = None,
               steps: int | None = None, *, cycles_observed: float | None = None,
-              wear_sweep=DEFAULT_WEAR_SWEEP) -> dict[str, Any]:
+              wear_sweep=DEFAULT_WEAR_SWEEP, uncertainty: int = 0) -> dict[str, Any]:
     """The ensemble verdict of one map point (and the coating life where it is known).
 
     Parameters
@@ -301,11 +316,18 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
         Observed coating life [meshing cycles] that calibrates c1.
     wear_sweep : sequence of float
         Worn fractions [-] whose stiction margins give the critical wear.
+    uncertainty : int
+        Samples of P(stiction) over realisations x the uncertain constants
+        (:func:`memstribo.uncertainty.study.uncertainty_study`, no sensitivity); 0: the realisations
+        at nominal constants only.
 
     Returns
     -------
     dict
-        The keys of :data:`MAP_RESULTS` (SI; NaN where unknown) and ``note`` (text).
+        The keys of :data:`MAP_RESULTS` (SI; NaN where unknown) and ``note`` (text). The
+        probability always comes with its 95 % interval (``stiction_probability_low``, ``_high``,
+        Wilson); with ``uncertainty`` it is over realisations x constants and
+        ``stiction_probability_nominal`` keeps the realisations' at nominal constants.
     """
     from memstribo.simulations import mesh
     from memstribo.simulations.study import _read_roughness
@@ -326,8 +348,21 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
         summaries.append(summary)
         if k == 0:
             first = dataset
-    ensemble = mesh.ensemble_summary(summaries)
+    from memstribo.uncertainty.intervals import ensemble_interval
+
+    ensemble = ensemble_interval(mesh.ensemble_summary(summaries))
     values: dict[str, Any] = {key: ensemble[key] for key in MAP_RESULTS if key in ensemble}
+    values["stiction_probability_nominal"] = ensemble["stiction_probability"]
+    values["stiction_probability_low"], values["stiction_probability_high"] = ensemble["stiction_probability_ci"]
+    values["uncertainty_samples"] = 0
+    if uncertainty:
+        from memstribo.uncertainty.study import uncertainty_study
+
+        study = uncertainty_study(params, surface, samples=int(uncertainty), realisations=int(params["realisations"]),
+                                  steps=steps, coating=coating, wear=wear, sensitivity=False)
+        values["stiction_probability"] = study["stiction_probability"]
+        values["stiction_probability_low"], values["stiction_probability_high"] = study["stiction_probability_ci"]
+        values["uncertainty_samples"] = study["samples"]
     values.update(cycles_to_failure=math.nan, cycles_to_stiction=math.nan, critical_wear=math.nan)
     note = ""
     if coating is None:
@@ -436,6 +471,8 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
     base = params.updated(study.parameters, origin=f"map spec {spec.source}")
     folder = ensure_directory(out)
     options = {"cycles_observed": spec.cycles_observed, "wear_sweep": list(spec.wear_sweep)}
+    if spec.uncertainty:  # only then: the hash of a map without it stays what it was
+        options["uncertainty"] = int(spec.uncertainty)
     map_hash = _hash({"function": "map_point", "points": [[p.id, p.inputs] for p in points], "options": options,
                       "parameters": params.to_dict(), "base": study.parameters, "axes": spec.axes})
     manifest_path = folder / MANIFEST
@@ -675,7 +712,11 @@ def map_figures(dataset, folder: str | Path, plot=(), *, stem_prefix: str = "", 
             selection = dict(zip(others, combo))
             panel = values.isel(selection).transpose(*plot)
             caption = ", ".join(f"{d} = {_coord_text(dataset, d, i)}" for d, i in selection.items())
-            mappable = _draw_panel(ax, dataset, panel, plot, key, levels)
+            band = None
+            if key == "stiction_probability" and "stiction_probability_low" in dataset:
+                band = tuple(dataset[b].isel(selection).transpose(*plot)
+                             for b in ("stiction_probability_low", "stiction_probability_high"))
+            mappable = _draw_panel(ax, dataset, panel, plot, key, levels, band)
             ax.set_title(caption or dataset.attrs.get("title", ""), fontsize=9)
         if mappable is not None and len(plot) == 2:
             bar = fig.colorbar(mappable, ax=list(axes[0]), format="%.4g")
@@ -704,13 +745,16 @@ def _levels(values) -> np.ndarray:
     return np.linspace(centre - half, centre + half, 3)
 
 
-def _draw_panel(ax, dataset, panel, plot, key, levels=None):
+def _draw_panel(ax, dataset, panel, plot, key, levels=None, band=None):
     x_factor, x_label = _display(dataset, plot[0])
     x = dataset[plot[0]].values.astype(float) * x_factor
     if len(plot) == 1:
         ax.plot(x, panel.values, marker="o")
         if key == "stiction_probability":
             ax.axhline(0.5, color="k", linestyle="--", linewidth=0.8, label="50 %")
+            if band is not None:  # the 95 % interval of each point's probability
+                ax.fill_between(x, band[0].values, band[1].values, color="C0", alpha=0.25, lw=0,
+                                label="95 % interval")
             ax.set_ylim(-0.05, 1.05)
         ax.set_xlabel(x_label)
         ax.set_ylabel(key.replace("_", " "))
@@ -725,6 +769,11 @@ def _draw_panel(ax, dataset, panel, plot, key, levels=None):
         if z.count() and z.min() < 0.5 < z.max():
             lines = ax.contour(x, y, z, levels=[0.5], colors="k", linewidths=1.5)
             ax.clabel(lines, fmt={0.5: "50 %"}, fontsize=8)
+        if band is not None:  # the band of the 50 % boundary: where either end of the 95 % interval crosses 0.5
+            for bound in band:
+                zb = np.ma.masked_invalid(bound.values.T)
+                if zb.count() and zb.min() < 0.5 < zb.max():
+                    ax.contour(x, y, zb, levels=[0.5], colors="k", linewidths=0.9, linestyles="--")
     else:
         mappable = ax.contourf(x, y, z, levels=levels, cmap="viridis")
     ax.plot(*np.meshgrid(x, y), "k.", markersize=2)

@@ -1,0 +1,121 @@
+"""Confidence intervals of a stiction probability estimated from a finite number of samples (MODEL 7d).
+
+"0 of 16 realisations stick" is compatible with a true probability up to about 19 % (Wilson score
+interval at 95 %): no probability without its interval, in text, JSON, report and maps.
+"""
+
+from __future__ import annotations
+
+
+from memstribo.errors import InputError
+from memstribo.references import cites
+
+__all__ = ["binomial_interval", "format_probability", "ensemble_interval", "half_width", "METHODS"]
+
+#: interval methods: memstribo's name -> scipy.stats.BinomTestResult.proportion_ci's
+METHODS = {"wilson": "wilson", "clopper-pearson": "exact", "exact": "exact", "wilsoncc": "wilsoncc"}
+
+
+def _check(k, n, confidence):
+    for name, value in (("k", k), ("n", n)):
+        if isinstance(value, bool) or not float(value).is_integer():
+            raise InputError(f"binomial interval: {name} must be a whole number, got {value!r}.")
+    k, n = int(k), int(n)
+    if n < 1:
+        raise InputError(f"binomial interval: n (the number of samples) must be at least 1, got {n}.")
+    if not 0 <= k <= n:
+        raise InputError(f"binomial interval: k = {k} must lie between 0 and n = {n}.")
+    if not 0.0 < float(confidence) < 1.0:
+        raise InputError(f"binomial interval: confidence must lie strictly between 0 and 1, got {confidence!r}.")
+    return k, n
+
+
+@cites("wilson_1927", "clopper_pearson_1934")
+def binomial_interval(k, n, confidence=0.95, method="wilson") -> tuple[float, float]:
+    """Confidence interval of a probability from ``k`` events in ``n`` independent samples [-].
+
+    Parameters
+    ----------
+    k : int
+        Samples that stick [-].
+    n : int
+        Samples [-], >= 1.
+    confidence : float
+        Confidence level in (0, 1) [-] (default 0.95).
+    method : {"wilson", "clopper-pearson", "wilsoncc"}
+        Wilson score interval (Wilson 1927; default: 0 of 16 gives 0-0.194), the exact
+        Clopper-Pearson interval (1934; 0 of 16 gives 0-0.206), or Wilson with continuity correction.
+        Computed by :meth:`scipy.stats.binomtest(k, n).proportion_ci`.
+
+    Returns
+    -------
+    (float, float)
+        Lower and upper bound of the probability [-].
+    """
+    from scipy.stats import binomtest
+
+    k, n = _check(k, n, confidence)
+    if method not in METHODS:
+        raise InputError(f"binomial interval: unknown method {method!r}; allowed: {', '.join(METHODS)}.")
+    ci = binomtest(k, n).proportion_ci(confidence_level=float(confidence), method=METHODS[method])
+    low, high = float(ci.low), float(ci.high)
+    return (0.0 if k == 0 else low), (1.0 if k == n else high)
+
+
+def half_width(k, n, confidence=0.95, method="wilson") -> float:
+    """Half the width of :func:`binomial_interval` [-] (the adaptive study stops below 0.05)."""
+    low, high = binomial_interval(k, n, confidence, method)
+    return 0.5 * (high - low)
+
+
+def _percent(x: float) -> str:
+    p = 100.0 * x
+    if p == 0.0 or p == 100.0:
+        return f"{p:.0f}"
+    if p < 1.0 or p > 99.0:
+        return f"{p:.1g}" if p < 1.0 else f"{p:.3g}"
+    return f"{p:.0f}"
+
+
+def format_probability(k, n, confidence=0.95, method="wilson", interval=None) -> str:
+    """``"0 of 16 (95 % CI 0–19 %)"``: the count and its confidence interval in percent.
+
+    ``interval``: a (low, high) computed elsewhere (the study's, widened by failed samples);
+    default :func:`binomial_interval`.
+    """
+    k, n = _check(k, n, confidence)
+    low, high = interval if interval is not None else binomial_interval(k, n, confidence, method)
+    level = 100.0 * float(confidence)
+    level_text = f"{level:.0f}" if float(level).is_integer() else f"{level:g}"
+    return f"{k} of {n} ({level_text} % CI {_percent(low)}–{_percent(high)} %)"
+
+
+def ensemble_interval(summary, confidence=0.95, method="wilson") -> dict:
+    """The ensemble verdict (:func:`memstribo.simulations.mesh.ensemble_summary`) with its interval.
+
+    Parameters
+    ----------
+    summary : dict
+        With ``per_realisation`` (each with ``stiction``) or ``realisations`` and
+        ``stiction_probability``.
+
+    Returns
+    -------
+    dict
+        A copy of ``summary`` with ``stiction_count`` [-], ``stiction_probability_ci`` ([low, high],
+        [-]) and ``stiction_probability_text`` (``"0 of 16 (95 % CI 0–19 %)"``).
+    """
+    out = dict(summary)
+    if summary.get("per_realisation"):
+        flags = [bool(r["stiction"]) for r in summary["per_realisation"]]
+        n, k = len(flags), sum(flags)
+    else:
+        n = int(summary["realisations"])
+        k = int(round(float(summary["stiction_probability"]) * n))
+    if n < 1:
+        raise InputError("ensemble_interval: the ensemble has no realisation.")
+    low, high = binomial_interval(k, n, confidence, method)
+    out["stiction_count"] = k
+    out["stiction_probability_ci"] = [low, high]
+    out["stiction_probability_text"] = format_probability(k, n, confidence, method)
+    return out

@@ -1,0 +1,167 @@
+"""A new bond energy without a new contact solve (issue 27 item 6).
+
+Given the contact solution of a cycle, the bond counts of every step do not depend on the bond
+energies: ``N_chem`` counts overlaps of touching atomic blocks (3-10) and ``N_vdW`` the footprint
+inside the adhesive layer or at the local gap (3-12, MODEL 7c). The friction of the bonds is then
+linear in the energies (3.5, 3-1)::
+
+    F_chem = N_chem U_chem / D_chem,     F_vdW = N_vdW U_vdW / D_chem        (bare flanks)
+
+and everything after it is linear or a maximum: the sliding average over
+``friction_averaging_distance`` (MODEL 7b), the resisting force R(c) of all pairs in mesh, the
+margin ``F_t - max R``, the cycle's COF ``sum E / integral (F_N + F_adh) ds`` (the adhesion force
+does not involve the bond energies). :func:`rescale_cycle` recomputes these from one solved cycle's
+dataset; it agrees with a full rerun to round-off (tests/test_uncertainty.py).
+
+Not rescaled: a coated cycle's vdW energy (the dataset holds the vdW bond count of bare and coated
+blocks together; :data:`SPLIT_VARIABLES` would allow it), and anything that changes the contact
+solve or the block mechanics (moduli, Hamaker constant, D0, block geometry, threshold strain).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from memstribo.errors import InputError
+from memstribo.references import cites
+
+__all__ = ["RESCALED", "CYCLE_VARIABLES", "SPLIT_VARIABLES", "reduce_cycle", "rescalable", "rescale_cycle"]
+
+#: the constants that enter the cycle only through the bond energies (linear), per kind of cycle
+RESCALED = ("bond_energy", "vdw_bond_energy")
+
+#: per-step variables of the cycle's dataset that the rescaling reads
+CYCLE_VARIABLES = ("time", "sliding_distance", "normal_force", "adhesion_force", "bonds_chemical", "bonds_vdw",
+                   "friction_force_chemical", "friction_force_vdw", "friction_force_elastic",
+                   "friction_force_capillary", "contact_converged")
+
+#: per-step variables a coated cycle would need for its vdW energies to be rescaled (not written by the
+#: meshing cycle yet: the vdW bond count of the bare and of the coated gear blocks)
+SPLIT_VARIABLES = ("bonds_vdw_bare", "bonds_vdw_coated")
+
+
+def reduce_cycle(dataset):
+    """The cycle's dataset without the per-block tables: the variables :func:`rescale_cycle` and
+    :func:`memstribo.simulations.mesh.summarize` need, small enough to send between Dask workers."""
+    drop = [name for name in dataset.variables if "block" in dataset[name].dims]
+    return dataset.drop_vars(drop)
+
+
+def _coated(dataset) -> bool:
+    return not str(dataset.attrs.get("coating", "none")).startswith("none") and float(dataset.attrs.get("wear", 1.0)) < 1.0
+
+
+def rescalable(dataset) -> tuple[str, ...]:
+    """The constants :func:`rescale_cycle` can change on this cycle: both bond energies for bare
+    flanks; ``bond_energy`` only on a coated cycle (the dataset lacks :data:`SPLIT_VARIABLES`), and
+    the vdW energies too where it has them (then also ``coating_vdw_bond_energy``)."""
+    if not _coated(dataset):
+        return RESCALED
+    if all(name in dataset for name in SPLIT_VARIABLES):
+        return RESCALED + ("coating_vdw_bond_energy",)
+    return ("bond_energy",)
+
+
+@cites("thesis", "model")
+def rescale_cycle(dataset, params_nominal, overrides) -> dict:
+    """The summary of a solved cycle with other bond energies, without solving the contacts again.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A cycle of :func:`memstribo.simulations.mesh.simulate_mesh` (or its :func:`reduce_cycle`),
+        solved with ``params_nominal``.
+    params_nominal : memstribo.parameters.Parameters
+        The parameters of that cycle (gear geometry for R(c), the bond length D_chem [m] and the
+        bond energies it was solved with [J]).
+    overrides : Mapping[str, float]
+        New values [J] of constants of :func:`rescalable` (``bond_energy``, ``vdw_bond_energy``).
+
+    Returns
+    -------
+    dict
+        The keys of :func:`memstribo.simulations.mesh.summarize` that the bond energies change
+        (``stiction_margin`` [N], ``stiction``, ``resisting_force_max`` [N], ``cof_mean`` and its split
+        [-], ``friction_force_mean``/``_max`` [N], energies [J], ``mesh_efficiency`` [-]) and the others
+        of the cycle unchanged, with ``rescaled`` = True.
+
+    Raises
+    ------
+    InputError
+        A constant that this cycle cannot rescale (it changes the contact solve or the block
+        mechanics, or the cycle is coated), or a variable the dataset lacks.
+    """
+    from memstribo.physics.gear import GearPair
+    from memstribo.simulations.mesh import resisting_force, sliding_average, summarize
+
+    allowed = rescalable(dataset)
+    for name in overrides:
+        if name not in allowed:
+            raise InputError(f"rescale_cycle: '{name}' cannot be changed without a new cycle (allowed here: "
+                             f"{', '.join(allowed)}); run simulate_mesh with it.")
+    missing = [name for name in CYCLE_VARIABLES if name not in dataset and name != "friction_force_capillary"]
+    if missing:
+        raise InputError(f"rescale_cycle: the dataset lacks {', '.join(missing)}.")
+    bond = float(params_nominal["bond_length"])
+    f_chem = np.asarray(dataset["friction_force_chemical"], dtype=float)
+    f_vdw = np.asarray(dataset["friction_force_vdw"], dtype=float)
+    if "bond_energy" in overrides:  # (3-10), (3.5): F = N U / D_chem
+        f_chem = np.asarray(dataset["bonds_chemical"], dtype=float) * float(overrides["bond_energy"]) / bond
+    if "vdw_bond_energy" in overrides or "coating_vdw_bond_energy" in overrides:
+        if _coated(dataset):
+            from memstribo.physics.coating import get_coating
+
+            u_bare = overrides.get("vdw_bond_energy", params_nominal["vdw_bond_energy"])
+            u_coat = overrides.get("coating_vdw_bond_energy", params_nominal["coating_vdw_bond_energy"]
+                                   or get_coating(dataset.attrs["coating"]).vdw_bond_energy)
+            f_vdw = (np.asarray(dataset["bonds_vdw_bare"]) * float(u_bare)
+                     + np.asarray(dataset["bonds_vdw_coated"]) * float(u_coat)) / bond
+        else:
+            f_vdw = np.asarray(dataset["bonds_vdw"], dtype=float) * float(overrides["vdw_bond_energy"]) / bond
+    f_el = np.asarray(dataset["friction_force_elastic"], dtype=float)
+    f_cap = (np.asarray(dataset["friction_force_capillary"], dtype=float) if "friction_force_capillary" in dataset
+             else np.zeros_like(f_el))
+    sliding = np.asarray(dataset["sliding_distance"], dtype=float)
+    averaging = float(dataset.attrs["friction_averaging_distance"])
+    parts = [sliding_average(f, sliding, averaging) for f in (f_chem, f_vdw, f_el, f_cap)]
+    friction_avg = parts[0] + parts[1] + parts[2] + parts[3]  # the cycle's order of summation
+    pair = GearPair.from_parameters(params_nominal)
+    c = np.asarray(dataset["c"], dtype=float)
+    resisting = resisting_force(c, friction_avg, pair.first_contact, pair.last_contact, pair.base_pitch)
+    f_t = float(dataset.attrs["tangential_force_total"])
+    margin = f_t - float(resisting.max())
+
+    energy = {"energy_chemical": f_chem * sliding, "energy_vdw": f_vdw * sliding, "energy_elastic": f_el * sliding,
+              "energy_capillary": f_cap * sliding}
+    denominator = np.asarray(dataset["normal_force"] + dataset["adhesion_force"], dtype=float)
+    work = float((denominator * sliding).sum())
+    split = {f"cof_{k.split('_')[1]}": (float(v.sum()) / work if work > 0 else 0.0) for k, v in energy.items()}
+    time = np.asarray(dataset["time"], dtype=float)
+    weights = np.gradient(time) if time.size > 1 else np.ones(1)
+    weights = weights / weights.sum()
+    total_energy = sum(float(v.sum()) for v in energy.values())
+    input_power = float(dataset.attrs["input_power"])
+    period = pair.base_pitch / pair.contact_point_speed
+
+    base = summarize(dataset)  # the keys the bond energies do not change (adhesion, contact, warnings)
+    base.update({
+        "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split["cof_capillary"],
+        **split,
+        "cof_max": float(np.max(friction_avg / denominator)),
+        "friction_force_mean": float((friction_avg * weights).sum()),
+        "friction_force_max": float(friction_avg.max()),
+        "resisting_force_max": float(resisting.max()),
+        "stiction": bool(margin < 0),
+        "stiction_margin": margin,
+        "mesh_efficiency": 1.0 - total_energy / (input_power * period),
+        "energy_dissipated": total_energy,
+        **{k: float(v.sum()) for k, v in energy.items()},
+        "rescaled": True,
+    })
+    # the start-up verdict (peak instantaneous force at rest, MODEL 7d) is not rescaled yet: its keys would be the
+    # nominal energies' (stale), so they are blanked; its per-mechanism peak forces would make it rescalable
+    stale = [key for key in base if key.startswith("startup")]
+    for key in stale:
+        base[key] = None
+    base["not_rescaled"] = stale
+    return base

@@ -1,0 +1,585 @@
+"""The stiction verdict over what we do not know (MODEL 7d, issue 27).
+
+:func:`uncertainty_study` samples roughness realisations (aleatory: parts differ) times sets of
+the uncertain constants (epistemic: one true value nobody measured), both with low-discrepancy
+designs, and reports
+
+- P(stiction) at the nominal constants over the realisations, and over realisations x constants,
+  each with its 95 % confidence interval (Wilson; :mod:`memstribo.uncertainty.intervals`);
+- the 5/50/95 % quantiles of the margin (and of ``startup_margin`` where the cycle has it), of the
+  mean COF and of its split;
+- Sobol' first-order and total indices of the margin and of the mean COF (Saltelli's design and
+  estimators, SALib, with bootstrap intervals); the roughness realisation is one more factor, so
+  the ranking says whether the part-to-part spread or a constant decides;
+- for each constant with a total index above 0.1 its critical value: where the median margin over
+  the realisations crosses zero with the other constants at nominal (Brent's method), or "no
+  crossing within the prior";
+- one sentence a designer can act on.
+
+Speed: a cycle is solved once per (realisation, constants that enter the contact solve or the block
+mechanics); the bond energies are applied afterwards by :func:`memstribo.uncertainty.rescale.rescale_cycle`
+(exact: the friction is linear in them). The cycles run on Dask when a client is given.
+A sampled point that fails (an input the model refuses) or does not converge is counted and
+reported, never dropped: the interval of P(stiction) covers both outcomes of every failed point.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Mapping
+
+import numpy as np
+
+from memstribo.errors import InputError
+from memstribo.references import cites
+
+__all__ = ["uncertainty_study", "critical_value", "sobol_indices", "REALISATION_FACTOR", "designer_sentence",
+           "DEFAULT_REALISATIONS", "DEFAULT_BUDGET", "TARGET_HALF_WIDTH"]
+
+#: name of the roughness realisation as a factor of the sensitivity analysis (aleatory, not a constant)
+REALISATION_FACTOR = "roughness_realisation"
+#: realisations per constant set when not given
+DEFAULT_REALISATIONS = 16
+#: most samples (realisations x constant sets) that ``samples="auto"`` draws
+DEFAULT_BUDGET = 1024
+#: ``samples="auto"`` stops when the interval's half-width is below this [-]
+TARGET_HALF_WIDTH = 0.05
+#: bytes one stored cycle (reduced dataset) takes per step, for the memory estimate (about 45 variables)
+BYTES_PER_CYCLE_STEP = 45 * 8
+
+
+def _solve_cycle(params, roughness, steps, coating_name, wear, realisation):
+    """One meshing cycle, reduced for the rescaling; the error text where the model refuses the point."""
+    from memstribo.simulations.mesh import simulate_mesh
+    from memstribo.uncertainty.rescale import reduce_cycle
+
+    try:
+        coating = None
+        if coating_name:
+            from memstribo.physics.coating import get_coating
+
+            coating = get_coating(coating_name, params)
+        return reduce_cycle(simulate_mesh(params, roughness, steps=steps, coating=coating, wear=wear,
+                                          realisation=realisation))
+    except InputError as exc:
+        return str(exc)
+
+
+class _Runner:
+    """Cycles by (realisation, solve-relevant constants), solved once, rescaled for the bond energies."""
+
+    def __init__(self, params, roughness, steps, coating_name, wear, client, progress):
+        self.params, self.roughness, self.steps = params, roughness, steps
+        self.coating_name, self.wear, self.client, self.progress = coating_name, wear, client, progress
+        self.cache: dict = {}
+        self.solves = 0
+        self.rescalings = 0
+        self.solve_seconds = 0.0
+        self._rescalable = None
+
+    def rescalable(self) -> tuple[str, ...]:
+        if self._rescalable is None:
+            from memstribo.uncertainty.rescale import RESCALED
+
+            self._rescalable = RESCALED if not self.coating_name or self.wear >= 1.0 else ("bond_energy",)
+        return self._rescalable
+
+    def _split(self, constants: Mapping):
+        rescaled = {k: v for k, v in constants.items() if k in self.rescalable()}
+        solved = {k: v for k, v in constants.items() if k not in self.rescalable()}
+        return solved, rescaled
+
+    def _key(self, realisation, solved):
+        return (int(realisation), tuple(sorted((k, float(v)) for k, v in solved.items())))
+
+    def _params(self, solved):
+        return self.params.updated(solved, origin="uncertainty sample") if solved else self.params
+
+    def summaries(self, points) -> list[dict]:
+        """Summaries of ``points`` [(realisation, {constant: value})]; a failed point: {"failed": True, "error"}."""
+        from memstribo.simulations.mesh import summarize
+        from memstribo.uncertainty.rescale import rescale_cycle
+
+        todo = {}
+        for realisation, constants in points:
+            solved, _ = self._split(constants)
+            key = self._key(realisation, solved)
+            if key not in self.cache and key not in todo:
+                todo[key] = (realisation, solved)
+        if todo:
+            start = time.perf_counter()
+            keys = list(todo)
+            args = []
+            for key in keys:
+                realisation, solved = todo[key]
+                try:
+                    args.append((self._params(solved), realisation))
+                except InputError as exc:  # an inconsistent sample (e.g. blocks wider than the nanoblock)
+                    args.append((str(exc), realisation))
+            results = self._run([(p, r) for p, r in args if not isinstance(p, str)])
+            it = iter(results)
+            for key, (p, _) in zip(keys, args):
+                self.cache[key] = p if isinstance(p, str) else next(it)
+            self.solves += len(keys)
+            self.solve_seconds += time.perf_counter() - start
+        out = []
+        for realisation, constants in points:
+            solved, rescaled = self._split(constants)
+            cycle = self.cache[self._key(realisation, solved)]
+            if isinstance(cycle, str):
+                out.append({"failed": True, "error": cycle, "realisation": realisation})
+                continue
+            if rescaled:
+                summary = rescale_cycle(cycle, self._params(solved), rescaled)
+                self.rescalings += 1
+            else:
+                summary = summarize(cycle)
+            if "startup_margin" in cycle.attrs and not rescaled:
+                summary.setdefault("startup_margin", float(cycle.attrs["startup_margin"]))
+            summary["realisation"] = realisation
+            out.append(summary)
+        return out
+
+    def _run(self, args):
+        n = len(args)
+        common = (self.roughness, self.steps, self.coating_name, self.wear)
+        if self.client is not None and n > 1:
+            futures = self.client.map(_solve_cycle, [a[0] for a in args], *[[c] * n for c in common],
+                                      [a[1] for a in args], pure=False)
+            return self.client.gather(futures)
+        iterator = args
+        if self.progress:
+            from tqdm.auto import tqdm
+
+            iterator = tqdm(args, desc="uncertainty: meshing cycles", unit="cycle", leave=False)
+        return [_solve_cycle(p, *common, r) for p, r in iterator]
+
+
+def _client_of(client):
+    """A dask client from a client or a cluster (``local_cluster``); None stays None."""
+    if client is None or hasattr(client, "map"):
+        return client, False
+    from distributed import Client
+
+    return Client(client), True
+
+
+def _probability(summaries, confidence):
+    from memstribo.uncertainty.intervals import binomial_interval, format_probability
+
+    n = len(summaries)
+    failed = sum(1 for s in summaries if s.get("failed"))
+    k = sum(1 for s in summaries if not s.get("failed") and s["stiction"])
+    low = binomial_interval(k, n, confidence)[0]
+    high = binomial_interval(k + failed, n, confidence)[1]  # a failed point may stick or not: both covered
+    estimate = k / (n - failed) if n > failed else float("nan")
+    return {"count": k, "samples": n, "failed": failed, "probability": estimate, "ci": [low, high],
+            "text": format_probability(k, n, confidence, interval=(low, high))
+            + (f", {failed} failed" if failed else "")}
+
+
+def _quantiles(values):
+    values = np.asarray([v for v in values if v is not None and np.isfinite(v)], dtype=float)
+    if values.size == 0:
+        return None
+    p05, p50, p95 = np.quantile(values, [0.05, 0.5, 0.95])
+    return {"p05": float(p05), "p50": float(p50), "p95": float(p95), "median": float(p50)}
+
+
+@cites("sobol_2001", "saltelli_2010", "herman_usher_2017")
+def sobol_indices(names, outputs: Mapping[str, np.ndarray], base_samples: int, seed: int = 0,
+                  confidence: float = 0.95, resamples: int = 200) -> dict:
+    """Sobol' first-order and total indices with bootstrap intervals (SALib, Saltelli 2010 estimators).
+
+    Parameters
+    ----------
+    names : list of str
+        The factors, in the columns of the design of :func:`_saltelli_design`.
+    outputs : Mapping[str, ndarray]
+        Model output per name of output (``"margin"``, ``"cof"``), at the design's rows [any unit].
+    base_samples : int
+        N of the design [-].
+
+    Returns
+    -------
+    dict
+        ``{output: {factor: {"first", "first_ci", "total", "total_ci"}}}`` [-]; an interval is
+        [index - half-width, index + half-width] of the bootstrap at ``confidence``.
+    """
+    from SALib.analyze import sobol as sobol_analyze
+
+    problem = {"num_vars": len(names), "names": list(names), "bounds": [[0.0, 1.0]] * len(names)}
+    result = {}
+    for output, y in outputs.items():
+        y = np.asarray(y, dtype=float)
+        if np.ptp(y) == 0.0:  # a constant output has no variance to share
+            result[output] = {n: {"first": 0.0, "first_ci": [0.0, 0.0], "total": 0.0, "total_ci": [0.0, 0.0]}
+                              for n in names}
+            continue
+        si = sobol_analyze.analyze(problem, y, calc_second_order=False, num_resamples=resamples,
+                                   conf_level=confidence, seed=seed)
+        result[output] = {
+            n: {"first": float(si["S1"][j]), "first_ci": [float(si["S1"][j] - si["S1_conf"][j]),
+                                                          float(si["S1"][j] + si["S1_conf"][j])],
+                "total": float(si["ST"][j]), "total_ci": [float(si["ST"][j] - si["ST_conf"][j]),
+                                                          float(si["ST"][j] + si["ST_conf"][j])]}
+            for j, n in enumerate(names)}
+    return result
+
+
+def _saltelli_design(dimensions: int, base_samples: int, seed: int):
+    """Saltelli's design of N (D + 2) rows in [0, 1]^D (SALib, first-order and total indices only)."""
+    import warnings
+
+    from SALib.sample import sobol as sobol_sample
+
+    if base_samples < 2 or base_samples & (base_samples - 1):
+        raise InputError(f"the Sobol' analysis needs a power of two of base samples (>= 2), got {base_samples}.")
+    problem = {"num_vars": dimensions, "names": [f"x{j}" for j in range(dimensions)],
+               "bounds": [[0.0, 1.0]] * dimensions}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return sobol_sample.sample(problem, base_samples, calc_second_order=False, scramble=True, seed=seed)
+
+
+@cites("model")
+def critical_value(margin_of, prior, *, tolerance=1e-3) -> dict:
+    """Where ``margin_of(value)`` (the median margin [N]) crosses zero within ``prior`` (Brent's method).
+
+    Parameters
+    ----------
+    margin_of : callable
+        value [unit of the constant] -> median margin [N].
+    prior : Prior
+        Searched between ``low`` and ``high`` (on a log scale for a log-uniform prior).
+    tolerance : float
+        Relative tolerance on the value (of the searched interval's width) [-].
+
+    Returns
+    -------
+    dict
+        ``critical_value`` [unit of the constant] or None, ``stiction_above`` (True: stiction
+        for values above it), ``margin_at_low``, ``margin_at_high`` [N], ``note``.
+    """
+    from scipy.optimize import brentq
+
+    forward = math.log if prior.log_scale else (lambda x: x)
+    back = math.exp if prior.log_scale else (lambda t: t)
+    t_lo, t_hi = forward(prior.low), forward(prior.high)
+    m_lo, m_hi = float(margin_of(prior.low)), float(margin_of(prior.high))
+    out = {"margin_at_low": m_lo, "margin_at_high": m_hi, "critical_value": None, "stiction_above": None}
+    if not (np.isfinite(m_lo) and np.isfinite(m_hi)):
+        out["note"] = "the margin could not be computed at an end of the prior"
+        return out
+    if (m_lo < 0) == (m_hi < 0):
+        state = "stiction" if m_lo < 0 else "no stiction"
+        out["note"] = (f"no crossing within the prior: the median margin is {m_lo:+.3g} N at {prior.low:.4g} and "
+                       f"{m_hi:+.3g} N at {prior.high:.4g} ({state} over the whole range)")
+        return out
+    root = brentq(lambda t: float(margin_of(back(t))), t_lo, t_hi, xtol=tolerance * abs(t_hi - t_lo), maxiter=60)
+    out["critical_value"] = float(back(root))
+    out["stiction_above"] = bool(m_hi < 0)
+    out["note"] = f"the median margin crosses zero at {back(root):.4g} (stiction {'above' if m_hi < 0 else 'below'})"
+    return out
+
+
+def designer_sentence(name, entry, prior, nominal) -> str:
+    """One sentence: "stiction if vdw_bond_energy > 8.1e-21 J (nominal 5.43e-21 J); measure ..."."""
+    from memstribo.parameters import SPECS
+
+    unit = SPECS[name].unit if name in SPECS else ""
+    unit = f" {unit}" if unit else ""
+    measure = f"; measure {prior.measure}" if prior.measure else ""
+    value = entry.get("critical_value")
+    if value is None:
+        return (f"The verdict does not flip within the prior of {name} ({prior.low:.3g}–{prior.high:.3g}{unit}), "
+                f"its most influential constant{measure}.")
+    sign = ">" if entry.get("stiction_above") else "<"
+    return f"Stiction if {name} {sign} {value:.3g}{unit} (nominal {nominal:.3g}{unit}){measure}."
+
+
+def _design(sampled, realisations, sets, solve_sets, rescalable, seed):
+    """The points [(realisation, constants)] of ``realisations`` x ``sets`` samples.
+
+    One low-discrepancy design of ``realisations * sets`` points over the priors; point
+    ``i = j * realisations + r`` goes to realisation ``r`` (so a doubled ``sets`` extends the design).
+    With ``solve_sets`` < ``sets``, the constants that need a new contact solve take only ``solve_sets``
+    values per realisation (each group of ``sets / solve_sets`` points shares its first point's), while the
+    rescaled bond energies keep all their values: fewer solves, each sample still drawn from the priors.
+    """
+    from memstribo.uncertainty.sampling import sample_constants
+
+    design = sample_constants(sampled, realisations * sets, seed=seed)
+    points = []
+    group = 1 if not solve_sets or solve_sets >= sets else int(math.ceil(sets / int(solve_sets)))
+    for i, constants in enumerate(design):
+        r, j = i % realisations, i // realisations
+        if group > 1:
+            first = design[(j - j % group) * realisations + r]
+            constants = {k: (v if k in rescalable else first[k]) for k, v in constants.items()}
+        points.append((r, constants))
+    return points
+
+
+def _check_samples(samples, realisations, steps_of_cycle):
+    from memstribo.parameters.definitions import MEMORY_LIMIT_BYTES
+
+    if samples != "auto":
+        if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
+            raise InputError(f"samples must be a whole number >= 1 or 'auto', got {samples!r}.")
+    if isinstance(realisations, bool) or not isinstance(realisations, (int, np.integer)) or realisations < 1:
+        raise InputError(f"realisations must be a whole number >= 1, got {realisations!r}.")
+    n = DEFAULT_BUDGET if samples == "auto" else int(samples)
+    need = n * steps_of_cycle * BYTES_PER_CYCLE_STEP
+    if need > MEMORY_LIMIT_BYTES / 2:
+        raise InputError(f"{n} samples of {steps_of_cycle}-step cycles would keep about {need / 2**30:.1f} GiB of "
+                         f"cycles in memory, more than the {MEMORY_LIMIT_BYTES / 2**31:.0f} GiB an uncertainty study "
+                         "may use: use fewer samples or fewer steps.")
+
+
+@cites("model", "wilson_1927", "sobol_2001", "saltelli_2010")
+def uncertainty_study(params, roughness=None, *, samples="auto", realisations=None, steps=None, coating=None,
+                      wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
+                      sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
+                      threshold=0.1, curve_points=9, priors=None, solve_sets=None) -> dict:
+    """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters
+        Nominal parameters; constants set by the user are fixed (:func:`memstribo.uncertainty.priors.priors_for`).
+    roughness, steps, wear
+        As for :func:`memstribo.simulations.mesh.simulate_mesh` (steps [-], wear Omega [-]).
+    samples : int or "auto"
+        Realisations x constant sets [-]; ``"auto"`` doubles the constant sets (from 16 per
+        realisation set) until the interval's half-width is below 0.05 or ``budget`` samples.
+    realisations : int, optional
+        Roughness realisations per constant set [-] (default ``min(16, samples)``).
+    coating : str or Coating, optional
+        The teeth's coating (its fitted constants are sampled too).
+    client : distributed.Client or a dask cluster, optional
+        Run the cycles on its workers (:func:`memstribo.simulations.study.local_cluster`).
+    seed : int
+        Seed of the designs (the roughness realisations have their own seeds).
+    fixed : iterable of str
+        Constants kept at their nominal value (each must have a prior).
+    sensitivity : bool
+        Compute the Sobol' indices (and the critical values of the influential constants).
+    sobol_samples : int, optional
+        Base samples N of Saltelli's design (a power of two; default 32): N (D + 3) cycles or
+        rescalings for D constants and the realisation.
+    sobol_steps : int, optional
+        Steps of the cycles of the Sobol' design (default ``steps``); a coarser cycle ranks the
+        constants at lower cost (the probabilities and critical values keep ``steps``).
+    critical : bool
+        Critical values of the constants whose total index of the margin exceeds ``threshold`` [-].
+    confidence : float
+        Level of the intervals [-].
+    curve_points : int
+        Values of the dominant constant for the curve P(stiction) against it.
+    priors : Mapping[str, Prior], optional
+        Priors to use instead of the parameter set's.
+    solve_sets : int, optional
+        Distinct values per realisation of the constants that need a new contact solve (default:
+        every constant set its own); the bond energies are rescaled and keep every set's value
+        (:func:`_design`). Fewer solves; the samples of a group share their contact solution, so they
+        are correlated and the interval (which counts them as independent) is then optimistic.
+
+    Returns
+    -------
+    dict
+        ``stiction_probability`` [-], ``stiction_probability_ci`` ([low, high], [-]),
+        ``stiction_count``, ``samples``, ``stiction_probability_text``,
+        ``stiction_probability_nominal`` and ``_nominal_ci`` / ``_nominal_text`` (the realisations at
+        nominal constants), ``margin_quantiles`` [N] (``p05``, ``p50``, ``p95``, ``median``) and
+        ``margin_quantiles_nominal``, ``startup_margin_quantiles`` (where the cycle has it),
+        ``cof_quantiles`` and ``cof_split_quantiles`` [-], ``sensitivity`` ({constant: {first, first_ci,
+        total, total_ci, cof_first, cof_first_ci, cof_total, cof_total_ci, critical_value, note}}),
+        ``dominant``, ``critical_curve``, ``designer_sentence``, ``priors``, ``sampled_constants``,
+        ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
+        ``elapsed`` [s], ``warnings``.
+
+    Raises
+    ------
+    InputError
+        Bad sample counts, a fixed constant without a prior or named twice, a sample count above
+        the memory estimate, bad priors.
+    """
+    from memstribo.uncertainty.priors import priors_for
+    from memstribo.uncertainty.sampling import _check_fixed
+    from memstribo.uncertainty.intervals import half_width
+
+    start = time.perf_counter()
+    coating_name = getattr(coating, "name", coating) if coating is not None else None
+    if priors is None:  # a fully worn coating (wear 1) leaves bare blocks only: its constants do not act
+        priors = priors_for(params, coating_name if float(wear) < 1.0 else None)
+    fixed_names = _check_fixed(priors, fixed)
+    sampled = {name: p for name, p in priors.items() if name not in fixed_names}
+    if realisations is None:
+        realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
+    n_steps = int(params["mesh_steps"] if steps is None else steps)
+    _check_samples(samples, realisations, n_steps)
+    if samples == "auto" and (isinstance(budget, bool) or int(budget) < realisations):
+        raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
+    client, own_client = _client_of(client)
+    try:
+        runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
+        R = int(realisations)
+        nominal_points = [(r, {}) for r in range(R)]
+        nominal = runner.summaries(nominal_points)
+        if samples == "auto":
+            sets_count = max(1, 16)
+            while True:
+                points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+                summaries = runner.summaries(points)
+                p = _probability(summaries, confidence)
+                if (half_width(p["count"], p["samples"], confidence) < TARGET_HALF_WIDTH and not p["failed"]) \
+                        or 2 * R * sets_count > int(budget):
+                    break
+                sets_count *= 2
+        else:
+            sets_count = max(1, int(samples) // R)
+            points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+            summaries = runner.summaries(points)
+        sets = range(sets_count)
+        p_all = _probability(summaries, confidence)
+        p_nom = _probability(nominal, confidence)
+        ok = [s for s in summaries if not s.get("failed")]
+        ok_nominal = [s for s in nominal if not s.get("failed")]
+        result = {
+            "stiction_probability": p_all["probability"],
+            "stiction_probability_ci": p_all["ci"],
+            "stiction_count": p_all["count"],
+            "samples": p_all["samples"],
+            "stiction_probability_text": p_all["text"],
+            "stiction_probability_nominal": p_nom["probability"],
+            "stiction_probability_nominal_ci": p_nom["ci"],
+            "stiction_count_nominal": p_nom["count"],
+            "stiction_probability_nominal_text": p_nom["text"],
+            "realisations": R,
+            "constant_sets": len(sets),
+            "solve_sets": solve_sets,
+            "confidence": confidence,
+            "margin_quantiles": _quantiles([s["stiction_margin"] for s in ok]),
+            "margin_quantiles_nominal": _quantiles([s["stiction_margin"] for s in ok_nominal]),
+            "cof_quantiles": _quantiles([s["cof_mean"] for s in ok]),
+            "cof_split_quantiles": {k: _quantiles([s.get(k, 0.0) for s in ok])
+                                    for k in ("cof_chemical", "cof_vdw", "cof_elastic", "cof_capillary")},
+            "priors": {name: p.to_dict() for name, p in priors.items()},
+            "sampled_constants": list(sampled),
+            "fixed_constants": sorted(fixed_names),
+            "unconverged_samples": sum(1 for s in ok if s.get("unconverged_steps", 0) > 0),
+            "failed_samples": p_all["failed"] + p_nom["failed"],
+            "failures": sorted({s["error"] for s in summaries + nominal if s.get("failed")})[:10],
+        }
+        if any("startup_margin" in s for s in ok):
+            result["startup_margin_quantiles"] = _quantiles([s.get("startup_margin") for s in ok])
+        result["sensitivity"] = {}
+        result["dominant"] = None
+        result["critical_curve"] = None
+        result["designer_sentence"] = ""
+        if sensitivity and sampled:
+            _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear,
+                         client, progress, sobol_samples or 32, sobol_steps, critical, threshold, curve_points)
+        warnings = []
+        if result["failed_samples"]:
+            warnings.append(f"{result['failed_samples']} sampled point(s) failed (the model refused their inputs): "
+                            "counted, and the interval of P(stiction) covers both outcomes of each")
+        if result["unconverged_samples"]:
+            warnings.append(f"{result['unconverged_samples']} sampled cycle(s) have unconverged contact steps: counted "
+                            "as computed")
+        result["warnings"] = warnings
+        result["solves"] = runner.solves
+        result["rescalings"] = runner.rescalings
+        result["elapsed"] = time.perf_counter() - start
+        return result
+    finally:
+        if own_client:
+            client.close()
+
+
+def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear, client,
+                 progress, sobol_samples, sobol_steps, critical, threshold, curve_points):
+    names = list(sampled)
+    factors = names + [REALISATION_FACTOR]
+    design = _saltelli_design(len(factors), int(sobol_samples), seed)
+    sobol_runner = runner if sobol_steps is None or sobol_steps == steps else \
+        _Runner(params, roughness, sobol_steps, coating_name, wear, client, progress)
+    points = []
+    for row in design:
+        constants = {name: sampled[name].ppf(row[j]) for j, name in enumerate(names)}
+        points.append((min(int(row[-1] * R), R - 1), constants))
+    summaries = sobol_runner.summaries(points)
+    failed = [s.get("failed", False) for s in summaries]
+    margin = np.array([np.nan if f else s["stiction_margin"] for s, f in zip(summaries, failed)])
+    cof = np.array([np.nan if f else s["cof_mean"] for s, f in zip(summaries, failed)])
+    if any(failed):  # counted, and filled with the median so that the estimators run (reported)
+        margin[np.isnan(margin)] = np.nanmedian(margin)
+        cof[np.isnan(cof)] = np.nanmedian(cof)
+    indices = sobol_indices(factors, {"margin": margin, "cof": cof}, int(sobol_samples), seed, confidence)
+    sensitivity = {}
+    for name in factors:
+        m, c = indices["margin"][name], indices["cof"][name]
+        sensitivity[name] = {"first": m["first"], "first_ci": m["first_ci"], "total": m["total"],
+                             "total_ci": m["total_ci"], "cof_first": c["first"], "cof_first_ci": c["first_ci"],
+                             "cof_total": c["total"], "cof_total_ci": c["total_ci"], "critical_value": None,
+                             "note": ""}
+    sensitivity[REALISATION_FACTOR]["note"] = "aleatory (part-to-part roughness): no critical value"
+    ranked = sorted(factors, key=lambda n: -sensitivity[n]["total"])
+    result["sensitivity"] = {name: sensitivity[name] for name in ranked}
+    result["sobol_design"] = {"base_samples": int(sobol_samples), "rows": int(design.shape[0]),
+                              "steps": sobol_steps or steps or int(params["mesh_steps"]),
+                              "failed_rows": int(sum(failed))}
+    constants_ranked = [n for n in ranked if n != REALISATION_FACTOR]
+    if not constants_ranked:
+        return
+    dominant = constants_ranked[0]
+    result["dominant"] = dominant
+
+    def margin_function(name):
+        cache = {}
+        reals = R if name in runner.rescalable() else min(R, 8)
+
+        def median_margin(x):
+            if x not in cache:
+                out = runner.summaries([(r, {name: x}) for r in range(reals)])
+                values = [s["stiction_margin"] for s in out if not s.get("failed")]
+                cache[x] = float(np.median(values)) if values else float("nan")
+            return cache[x]
+        return median_margin, reals
+
+    for name in constants_ranked:
+        entry = sensitivity[name]
+        if not critical or entry["total"] <= threshold:
+            entry["note"] = entry["note"] or (f"total index {entry['total']:.2g} <= {threshold:g}: not searched"
+                                              if critical else "not searched")
+            continue
+        function, reals = margin_function(name)
+        found = critical_value(function, sampled[name])
+        entry["critical_value"] = found["critical_value"]
+        entry["stiction_above"] = found["stiction_above"]
+        entry["note"] = found["note"] + f" (median over {reals} realisations, others nominal)"
+    nominal_value = float(params[dominant]) if dominant in params and params[dominant] is not None else \
+        _coating_nominal(dominant, coating_name)
+    result["designer_sentence"] = designer_sentence(dominant, sensitivity[dominant], sampled[dominant], nominal_value)
+    # P(stiction) at nominal constants but the dominant one, over the realisations (the figure's curve)
+    prior = sampled[dominant]
+    values = sorted(set([float(v) for v in prior.ppf(np.linspace(0.0, 1.0, max(2, int(curve_points))))]
+                        + ([sensitivity[dominant]["critical_value"]] if sensitivity[dominant]["critical_value"]
+                           else [])))
+    reals = R if dominant in runner.rescalable() else min(R, 8)
+    curve = {"name": dominant, "values": values, "probability": [], "ci_low": [], "ci_high": [], "realisations": reals,
+             "critical_value": sensitivity[dominant]["critical_value"], "nominal": nominal_value}
+    for x in values:
+        p = _probability(runner.summaries([(r, {dominant: x}) for r in range(reals)]), result["confidence"])
+        curve["probability"].append(p["probability"])
+        curve["ci_low"].append(p["ci"][0])
+        curve["ci_high"].append(p["ci"][1])
+    result["critical_curve"] = curve
+
+
+def _coating_nominal(name, coating_name):
+    from memstribo.physics.coating import get_coating
+
+    return float(getattr(get_coating(coating_name), name[len("coating_"):]))
