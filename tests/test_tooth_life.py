@@ -115,3 +115,25 @@ def test_probability_within_n_cycles_starts_at_the_first_load_and_reaches_one_pe
     assert fracture_probability_within(result, result["cycles_to_fracture_p01"]) == pytest.approx(0.01, rel=1e-9)
     curve = fracture_probability_within(result, np.logspace(0, 20, 21))
     assert np.all(np.diff(curve) >= 0) and curve[-1] > 0.01
+
+
+def test_the_meshing_cycle_reports_its_tooth_life(cli, params):
+    """`memstribo mesh --json` carries the tooth-life keys of the same cycle's tooth_life (MODEL §10)."""
+    from memstribo.simulations.mesh import simulate_mesh
+
+    result = cli.json("mesh", "--steps", "31", "--no-step-check")
+    for key in ("root_stress_max", "fracture_probability", "cycles_to_fracture_p01", "flash_temperature_max",
+                "bulk_temperature_rise"):
+        assert key in result
+    assert len(result["root_stress_max"]) == 2 and min(result["root_stress_max"]) > 0
+    direct = tooth_life(simulate_mesh(params, steps=31), params)
+    assert result["fracture_probability"] == pytest.approx(direct["fracture_probability"], rel=1e-9)
+    assert result["root_stress_max"] == pytest.approx(direct["root_stress_max"], rel=1e-9)
+
+
+def test_the_torque_sweep_shows_fracture_rising_with_torque(cli):
+    """A torque sweep gives the window between 'sticks' (low torque) and 'breaks' (high torque)."""
+    points = cli.json("sweep", "torque", "--values", "5e-8,1.5e-7", "--steps", "31")["points"]
+    low, high = points
+    assert high["fracture_probability"] > 10 * low["fracture_probability"] > 0
+    assert high["root_stress_max"][0] > low["root_stress_max"][0]

@@ -88,6 +88,8 @@ def run(args, params):
     extra = ["stiction_probability", "stiction_margin_p05", "stiction_margin_median", "stiction_margin_p95",
              "cof_mean_p05", "cof_mean_median", "cof_mean_p95"] if args.realisations > 1 else []
     extra += ["cof_capillary", "energy_capillary"] if args.parameter == "humidity" else []
+    # will a tooth break (MODEL §10): the torque window between "sticks" and "breaks"
+    extra += ["fracture_probability", "cycles_to_fracture_p01", "root_stress_max"] if args.parameter == "torque" else []
     points = [{key: point[key] for key in head + list(MESH_KEYS) + ["energy_dissipated", "energy_chemical",
                                                                      "energy_vdw", "energy_elastic",
                                                                      "unconverged_steps"] + extra}
@@ -105,16 +107,18 @@ def run(args, params):
         return CommandResult(values={"parameter": args.parameter, "points": points, **(critical or {})})
     lines = [f"  {head[0]:>13} {'cof_mean':>9} {'chemical':>9} {'vdW':>9} {'elastic':>9} {'F_f mean':>10} "
              f"{'F_adh mean':>11} {'energy':>10} {'margin':>10} {'efficiency':>10}"
-             + (f" {'P(stiction)':>11}" if args.realisations > 1 else "")]
+             + (f" {'P(stiction)':>11}" if args.realisations > 1 else "")
+             + (f" {'P(fracture)':>11}" if args.parameter == "torque" else "")]
     for p in points:
         swept = (f"{p['normal_load'] * 1e6:.4g} µN" if args.parameter == "load" else
                  f"RH {p['relative_humidity']:.2f}" if args.parameter == "humidity" else
                  f"{p['drive_torque']:.3g} N m" if args.parameter == "torque" else f"{p['area_multiple']} A_adh")
         lines.append(f"  {swept:>13} {p['cof_mean']:9.4g} {p['cof_chemical']:9.4g} {p['cof_vdw']:9.4g} "
-                     f"{p['cof_elastic']:9.2g} {p['friction_force_mean'] * 1e6:7.4g} uN "
-                     f"{p['adhesion_force_mean'] * 1e6:8.4g} uN {p['energy_dissipated'] * 1e12:7.4g} pJ "
+                     f"{p['cof_elastic']:9.2g} {p['friction_force_mean'] * 1e6:7.4g} µN "
+                     f"{p['adhesion_force_mean'] * 1e6:8.4g} µN {p['energy_dissipated'] * 1e12:7.4g} pJ "
                      f"{p['stiction_margin'] * 1e3:7.3g} mN {p['mesh_efficiency']:10.3g}"
-                     + (f" {p['stiction_probability']:11.2f}" if args.realisations > 1 else ""))
+                     + (f" {p['stiction_probability']:11.2f}" if args.realisations > 1 else "")
+                     + (f" {_probability(p['fracture_probability']):>11}" if args.parameter == "torque" else ""))
     if critical is not None:
         lines.append(f"  critical humidity ({critical['coating']}, wear {critical['wear']:g}): "
                      + (f"RH {critical['critical_humidity']:.3f}" if critical["critical_humidity"] is not None
@@ -141,7 +145,8 @@ def _write(parameter, points, folder, provenance=None, critical=None) -> list[st
     coordinate = np.array([p[dim] for p in points], dtype=float)
     keys = [k for k in points[0] if k not in ("normal_load", "drive_torque", "area_multiple", "area", "stiction", dim)
             and isinstance(points[0][k], (int, float)) and not isinstance(points[0][k], bool)]
-    data = {k: (dim, np.array([p[k] for p in points], dtype=float), attrs(k)) for k in keys}
+    data = {k: (dim, np.array([np.nan if p[k] is None else p[k] for p in points], dtype=float), attrs(k))
+            for k in keys}
     dataset = xr.Dataset(data, coords={dim: (dim, coordinate, {"units": _UNITS[parameter] or "1",
                                                               "long_name": dim.replace("_", " ")})})
     if critical is not None:  # NetCDF attributes: NaN and the note where no crossing lies in the range
@@ -169,4 +174,18 @@ def _write(parameter, points, folder, provenance=None, critical=None) -> list[st
     ax.set_xlabel(xlabel)
     ax.set_ylabel("energy dissipated per cycle [pJ]")
     written += save_figure(figure, folder, f"sweep_{parameter}_energy")
+    if "fracture_probability" in dataset:  # the torque window between "sticks" and "breaks" (MODEL §10)
+        figure, (ax_s, ax_f) = new_figure(nrows=2, sharex=True, figsize=(5.6, 5.4))
+        ax_s.plot(x, dataset["stiction_margin"] * 1e3, "o-")
+        ax_s.axhline(0.0, color="0.5", lw=0.8)
+        ax_s.set_ylabel("stiction margin [mN]")
+        ax_f.semilogy(x, np.clip(dataset["fracture_probability"], 1e-12, None), "o-", color="C3")
+        ax_f.set_ylabel("P(a tooth breaks on the first load) [-]")
+        ax_f.set_xlabel(xlabel)
+        written += save_figure(figure, folder, f"sweep_{parameter}_fracture")
     return ["  wrote " + ", ".join(str(p) for p in written)]
+
+
+def _probability(value) -> str:
+    """A probability for the table: '1.2e-05', or 'n/a' when the tooth strength was not computed."""
+    return "n/a" if value is None else f"{value:.2g}"

@@ -19,7 +19,7 @@ from memstribo.errors import InputError
 from memstribo.physics import strength, thermal, tooth_stress
 from memstribo.references import cites
 
-__all__ = ["TOOTH_LIFE_KEYS", "tooth_life", "fracture_probability_within", "root_effective_area", "synthetic_cycle"]
+__all__ = ["TOOTH_LIFE_KEYS", "tooth_life", "with_tooth_life", "fracture_probability_within", "root_effective_area", "synthetic_cycle"]
 
 #: keys of :func:`tooth_life` that are numbers (the mesh summary / JSON names; registered in memstribo.quantities)
 TOOTH_LIFE_KEYS = ("root_stress_max", "root_stress_compressive_min", "fracture_probability",
@@ -277,3 +277,38 @@ def synthetic_cycle(params, cof=0.3, steps=41):
     sliding = np.abs(pair.sliding_velocity(c)) * dt
     return {"c": c, "normal_force": fn, "friction_force": ff, "friction_force_instantaneous": ff,
             "hertz_half_width": np.asarray(hertz.half_width), "energy_dissipated": ff * sliding}
+
+
+def with_tooth_life(dataset, params, coating=None):
+    """The meshing-cycle dataset with its tooth strength and contact temperature (MODEL §10), in place.
+
+    Adds the per-step variables ``root_stress_pinion``, ``root_stress_gear`` [Pa] and
+    ``flash_temperature`` [K], the attribute ``tooth_life`` (JSON of the :data:`TOOTH_LIFE_KEYS`, read by
+    :func:`memstribo.simulations.mesh.summarize`), and the warnings of :func:`tooth_life` to the
+    dataset's ``warnings``. A tooth form that the root-stress method cannot draw (an InputError of
+    :func:`tooth_life`) leaves the keys null and says why in a warning: the friction verdict does not
+    depend on it.
+    """
+    import json
+
+    import xarray as xr
+
+    from memstribo.quantities import attrs as quantity_attrs
+
+    warnings = json.loads(dataset.attrs.get("warnings", "[]"))
+    try:
+        result = tooth_life(dataset, params, coating=coating)
+    except InputError as exc:
+        dataset.attrs["tooth_life"] = json.dumps({key: None for key in TOOTH_LIFE_KEYS})
+        dataset.attrs["warnings"] = json.dumps(warnings + [f"tooth strength and temperature not computed: {exc}"])
+        return dataset
+    for name, values in (("root_stress_pinion", result["root_stress"]["pinion"]),
+                         ("root_stress_gear", result["root_stress"]["gear"]),
+                         ("flash_temperature", result["flash_temperature"])):
+        attrs = quantity_attrs("root_stress" if name.startswith("root_stress") else name)
+        if name.startswith("root_stress"):
+            attrs = {**attrs, "long_name": f"{attrs['long_name']} ({name.rsplit('_', 1)[1]})"}
+        dataset[name] = xr.Variable(("step",), np.asarray(values, dtype=float), attrs=attrs)
+    dataset.attrs["tooth_life"] = json.dumps({key: result[key] for key in TOOTH_LIFE_KEYS})
+    dataset.attrs["warnings"] = json.dumps(warnings + list(result["warnings"]))
+    return dataset

@@ -11,6 +11,7 @@ from memstribo.simulations.mesh.record import cycle_dataset
 from memstribo.simulations.mesh.setup import _prepare
 from memstribo.simulations.mesh.steps import _run_cycle
 from memstribo.simulations.mesh.verdict import cycle_verdict, summarize
+from memstribo.simulations.tooth_life import with_tooth_life
 
 
 @cites("thesis", "model", "johnson_1985", "polonsky_keer_1999", "hu_1986")
@@ -73,7 +74,8 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     setup = _prepare(params, roughness, steps, realisation, sliding_axis)           # set-up: geometry, rows, lines
     cycle = _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start)  # the steps
     verdict = cycle_verdict(params, setup, cycle)                                   # forces, margin, efficiency
-    return cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, realisation, sliding_axis)
+    dataset = cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, realisation, sliding_axis)
+    return with_tooth_life(dataset, params, coating)                                # root stress, temperature
 
 
 def _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start):

@@ -231,5 +231,6 @@ def summarize(dataset) -> dict:
         "contact_adhesion": str(dataset.attrs["contact_adhesion"]),
         "mesh_contact": str(dataset.attrs.get("mesh_contact", "line")),
         "roughness_rows": str(dataset.attrs["roughness_rows"]),
+        **json.loads(dataset.attrs.get("tooth_life", "{}")),  # root stress, fracture, temperature (MODEL §10)
         "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
     }
