@@ -312,3 +312,20 @@ def test_water_surface_tension_and_kelvin_radius_follow_the_temperature():
     for bad in (200.0, 700.0):
         with pytest.raises(InputError, match="liquid range of water"):
             kelvin_radius(0.4, bad)
+
+
+def test_the_meshing_cycle_takes_the_ambient_temperature_in_air():
+    """ambient_temperature reaches the menisci (Kelvin radius, Laplace pressure, rupture energy): hotter water has a
+    lower surface tension and a larger R T ln(1/RH) / V_m, so the capillary attraction changes; 298.15 K is the
+    default, bit for bit."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+
+    air = get_parameter_values().updated({"environment": "air", "relative_humidity": 0.5})
+    default = summarize(simulate_mesh(air, steps=21))
+    explicit = summarize(simulate_mesh(air.updated({"ambient_temperature": 298.15}), steps=21))
+    hot = summarize(simulate_mesh(air.updated({"ambient_temperature": 330.0}), steps=21))
+    assert explicit["adhesion_force_mean"] == default["adhesion_force_mean"]
+    assert hot["adhesion_force_mean"] != pytest.approx(default["adhesion_force_mean"], rel=1e-3)
+    with pytest.raises(InputError, match="liquid range of water"):
+        simulate_mesh(air.updated({"ambient_temperature": 700.0}), steps=21)

@@ -222,11 +222,12 @@ def user_set(params, name: str) -> bool:
 def check_unused_values(params) -> None:
     """Refuse values the user set that the model would ignore without a word.
 
-    ``relative_humidity`` and ``temperature`` act only in air (``environment = 'air'``);
-    as ``--wear`` without ``--coating`` is refused, a humidity in vacuum is too.
+    ``relative_humidity`` acts only in air (``environment = 'air'``); as ``--wear`` without ``--coating``
+    is refused, a humidity in vacuum is too. (``ambient_temperature`` acts in vacuum as well: the tooth's
+    temperature and the coating's stability, docs/thermal.md.)
     """
     if params["environment"] == "vacuum":
-        for name in ("relative_humidity", "temperature"):
+        for name in ("relative_humidity",):
             if user_set(params, name):
                 raise InputError(f"{name} is used only in air, but environment is 'vacuum' (the default): add "
                                  f"--set environment=air, or leave {name} out.")

@@ -676,7 +676,7 @@ class RunChain:
             summary[label] = part
         self.summaries["humidity"] = summary
         self._json(summary, "humidity_sweep")
-        self._figure(plot_humidity(summary, f"environment air, T = {float(self.model_params['temperature']):.4g} K"),
+        self._figure(plot_humidity(summary, f"environment air, T = {float(self.model_params['ambient_temperature']):.4g} K"),
                      "humidity_cof_margin",
                      "COF over the cycle with its capillary part (breaking menisci), and the stiction margin "
                      "F_t - max R(c), versus relative humidity, bare silicon and the coated pair (Omega = 0); dotted: "

@@ -397,7 +397,7 @@ def _humidity_html(result) -> str:
         if record is None:
             return ""
         return (f"<h2>Humid air</h2><p class='bad'>The humid-air section did not finish: {_e(record.message)}</p>")
-    temperature = float(result.params["temperature"])
+    temperature = float(result.params["ambient_temperature"])
     model_rh = float(result.params["relative_humidity"])
     parts = ["<h2>Humid air: capillary adhesion and the critical humidity</h2>",
              f"<p>Environment air at T = {temperature:.4g} K (the model's "

@@ -244,7 +244,7 @@ def beam_work_of_separation(gap, params, relative_humidity):
     cap = 0.0
     if relative_humidity > 0:
         theta = params["water_contact_angle"]
-        r_k = capillary.kelvin_radius(relative_humidity, params["temperature"])
+        r_k = capillary.kelvin_radius(relative_humidity, params["ambient_temperature"])
         h_c = capillary.condensation_height(r_k, theta, theta)
         if h_c > 0:
             sc = np.linspace(0.0, h_c, 801)

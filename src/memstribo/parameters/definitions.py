@@ -248,8 +248,6 @@ _SPECS = [
                   "narrow gaps: capillary menisci, issue #17)", kind="str", choices=("vacuum", "air")),
     _range("relative_humidity", "", "Relative humidity of the air (environment 'air')", 0.0, 0.99,
            "0 (dry) to 0.99 (the Kelvin radius diverges at saturation)", exclusive_minimum=False),
-    _range("temperature", "K", "Temperature of the air and the teeth (environment 'air')", 200.0, 400.0,
-           "liquid water at the surfaces: -73 to 127 degC"),
     _range("water_contact_angle", "rad", "Water contact angle of the bare (oxidised) silicon surface; a coating's "
            "own angle replaces it on coated blocks", 0.0, math.pi, "0 to 180 deg", exclusive_minimum=False),
     _range("meniscus_renewal_distance", "m", "Sliding distance after which a meniscus has broken and re-formed "
@@ -329,10 +327,11 @@ _SPECS = [
                   "reason": "fatigue stops in high vacuum (Alsem 2005) and runs faster in humid air; no study "
                             "gives one number per unit RH, so the prior spans none to a strong effect"}),
     # --- temperature (MODEL §10, issue #30; docs/thermal.md) ---------------------------------------
-    _range("ambient_temperature", "K", "Temperature of the surroundings and of the teeth away from the contact",
-           0.0, 1687.0, "above 0 K and below the melting point of silicon (1687 K)", exclusive_maximum=True,
-           prior={"distribution": "uniform", "bounds": (288.15, 308.15), "source": "laboratory conditions",
-                  "reason": "a packaged MEMS at room temperature, 15-35 degC"}),
+    # a measured input (the environment), not sampled (MODEL 7d); in air also the menisci's Kelvin radius and
+    # surface tension, which need liquid water (physics/capillary.py refuses temperatures outside its range)
+    _range("ambient_temperature", "K", "Temperature of the surroundings and of the teeth away from the contact "
+           "(in air also of the water of the menisci)", 0.0, 1687.0,
+           "above 0 K and below the melting point of silicon (1687 K)", exclusive_maximum=True),
     _range("thermal_conductivity", "W/(m*K)", "Thermal conductivity k of the tooth material (polysilicon)", 0.1,
            3000.0, "from a porous insulator to diamond",
            prior={"distribution": "uniform", "bounds": (15.0, 80.0),

@@ -120,7 +120,7 @@ def _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar):
     return pressure, gap, info
 
 
-def _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coating, wear):
+def _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coating, wear, surface_tension=None):
     """(Laplace pressure gamma / r_K [Pa], h_c [m] per step, or per step and element) of a row's menisci, or None.
 
     The traction of the menisci inside the line-contact solve (issue #17, docs/humidity.md;
@@ -130,7 +130,8 @@ def _capillary_zone(r_kelvin, theta_bare, theta_coat, s2, grid, w_adh, row, coat
     """
     from memstribo.physics import capillary
 
-    stress = float(capillary.laplace_pressure(r_kelvin))
+    gamma = capillary.WATER["surface_tension"] if surface_tension is None else surface_tension
+    stress = float(capillary.laplace_pressure(r_kelvin, gamma))
     if coating is None:  # one height per step (a number: the plain Maugis-Dugdale iteration of the solver)
         height = float(capillary.condensation_height(r_kelvin, theta_bare))
         return (stress, np.full(s2.size, height)) if stress > 0.0 and height > 0.0 else None

@@ -99,7 +99,11 @@ def _context(setup, params, coating, wear, modulus):
     if ctx.humid:
         from memstribo.physics import capillary
 
-        ctx.r_kelvin = capillary.kelvin_radius(params["relative_humidity"], params["temperature"])
+        # water at the ambient temperature: its surface tension sets the Kelvin radius, the Laplace pressure
+        # and the rupture energy alike (docs/thermal.md; 0.072 N/m exactly at 298.15 K)
+        ctx.surface_tension = float(capillary.water_surface_tension(params["ambient_temperature"]))
+        ctx.r_kelvin = capillary.kelvin_radius(params["relative_humidity"], params["ambient_temperature"],
+                                               ctx.surface_tension)
         ctx.theta_bare = float(params["water_contact_angle"])
         ctx.theta_coat = ctx.theta_bare
         if coating is not None and math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
@@ -135,7 +139,7 @@ def _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row
     zone = None
     if ctx.humid and strip is None:  # the menisci's Laplace pressure inside the contact solve (docs/humidity.md)
         zone = _capillary_zone(ctx.r_kelvin, ctx.theta_bare, ctx.theta_coat, s2, ctx.grid, ctx.w_adh, row,
-                               ctx.coating, ctx.wear)
+                               ctx.coating, ctx.wear, ctx.surface_tension)
     if strip is not None:
         strip_pressure, strip_gap, strip_info = strip
         return strip_pressure[row], strip_gap[row], strip_info, zone  # one solve for all rows
@@ -280,9 +284,9 @@ def _menisci(out, ctx, gap, info, zone, bare_x):
     out["wetted"] += area.sum(axis=1)
     # attraction: the contact solve's meniscus line load over the row (line contact), else the wetted area's
     out["f_cap_adh"] += (info[:, 5] * ctx.w_adh if zone is not None
-                         else capillary.laplace_pressure(ctx.r_kelvin) * area.sum(axis=1))
+                         else capillary.laplace_pressure(ctx.r_kelvin, ctx.surface_tension) * area.sum(axis=1))
     # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
-    rupture = capillary.WATER["surface_tension"] * (np.cos(theta_bare) + np.cos(theta_gear))
+    rupture = ctx.surface_tension * (np.cos(theta_bare) + np.cos(theta_gear))
     out["f_cap"] += (area * rupture).sum(axis=1) / ctx.renewal
 
 

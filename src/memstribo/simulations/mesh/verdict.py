@@ -168,7 +168,7 @@ def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converge
         from memstribo.physics.capillary import kelvin_radius
 
         warnings.append(f"relative humidity {params['relative_humidity']:g} is below {_LOWEST_MENISCUS_HUMIDITY:g}: the "
-                        f"Kelvin radius ({kelvin_radius(params['relative_humidity'], params['temperature']) * 1e9:.2g} "
+                        f"Kelvin radius ({kelvin_radius(params['relative_humidity'], params['ambient_temperature']) * 1e9:.2g} "
                         "nm) is about a molecular size, where adsorbed water films, not menisci, dominate; the capillary "
                         "terms are outside their validity (docs/humidity.md)")
     return warnings
