@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 from memstribo.errors import InputError
-from memstribo.laboratory import calibration, data, fitted, predict
+from memstribo.laboratory import calibration, data, predict
+from memstribo.parameters import fitted
 from memstribo.parameters import get_parameter_values
 from memstribo.physics.capillary import WATER, kelvin_radius
 from memstribo.physics.coating import get_coating

@@ -79,7 +79,7 @@ def _doi(key):
 
 def markdown(res, figure_name="figures/experiments.png") -> str:
     """The page (a pure function of the results: regenerates identically)."""
-    from memstribo.laboratory.fitted import fitted_constants
+    from memstribo.parameters.fitted import fitted_constants
     from memstribo.parameters import get_parameter_values
     from memstribo.references import REFERENCES
 
@@ -159,7 +159,7 @@ def markdown(res, figure_name="figures/experiments.png") -> str:
             "", "## What the comparison says", ""]
     out += _findings(res)
     out += ["", "## Fitted constants and their fit conditions", "",
-            "`memstribo.laboratory.fitted.fitted_constants(params, coating)` lists the fitted constants a run uses "
+            "`memstribo.parameters.fitted.fitted_constants(params, coating)` lists the fitted constants a run uses "
             "(from the `fitted = {conditions = ...}` markers of the parameter and coating TOMLs); "
             "`fit_condition_warnings(params, normal_force, coating)` warns when a run is far from them "
             "(normal force off by more than 3x, another environment, RH more than 0.3 away).", "",

@@ -75,7 +75,22 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     cycle = _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start)  # the steps
     verdict = cycle_verdict(params, setup, cycle)                                   # forces, margin, efficiency
     dataset = cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, realisation, sliding_axis)
-    return with_tooth_life(dataset, params, coating)                                # root stress, temperature
+    dataset = with_tooth_life(dataset, params, coating)                             # root stress, temperature
+    return _with_fitted_constants(dataset, params, coating)                         # what was fitted, and where
+
+
+def _with_fitted_constants(dataset, params, coating):
+    """The fitted constants the cycle used (attribute ``fitted_constants``, JSON) and a warning for each whose fit
+    conditions are far from this cycle's (another normal force, environment or humidity; issue #28)."""
+    import json
+
+    from memstribo.parameters.fitted import fit_condition_warnings, fitted_constants
+
+    dataset.attrs["fitted_constants"] = json.dumps(fitted_constants(params, coating))
+    far = fit_condition_warnings(params, float(dataset.attrs["normal_force_total"]), coating)
+    if far:
+        dataset.attrs["warnings"] = json.dumps(json.loads(dataset.attrs.get("warnings", "[]")) + far)
+    return dataset
 
 
 def _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start):

@@ -232,5 +232,6 @@ def summarize(dataset) -> dict:
         "mesh_contact": str(dataset.attrs.get("mesh_contact", "line")),
         "roughness_rows": str(dataset.attrs["roughness_rows"]),
         **json.loads(dataset.attrs.get("tooth_life", "{}")),  # root stress, fracture, temperature (MODEL §10)
+        "fitted_constants": json.loads(dataset.attrs.get("fitted_constants", "[]")),  # with their fit conditions
         "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
     }
