@@ -65,7 +65,11 @@ def simulate_ensemble(params, roughness=None, *, realisations=None, steps=None, 
 
 
 def ensemble_summary(summaries) -> dict:
-    """Stiction probability and 5/50/95 % quantiles over realisation summaries (MODEL 7b)."""
+    """Stiction probability with its 95 % confidence interval and 5/50/95 % quantiles over realisation summaries.
+
+    MODEL 7b and 7d: ``stiction_count`` of ``realisations`` stick; ``stiction_probability_ci`` is the Wilson
+    interval of that fraction and ``stiction_probability_text`` says it in words ("0 of 16 (95 % CI 0–19 %)").
+    """
     margins = np.array([s["stiction_margin"] for s in summaries])
     cofs = np.array([s["cof_mean"] for s in summaries])
     efficiency = np.array([s["mesh_efficiency"] for s in summaries])
@@ -77,4 +81,6 @@ def ensemble_summary(summaries) -> dict:
         out[f"{name}_p95"] = float(np.quantile(values, 0.95))
     out["per_realisation"] = [{key: s[key] for key in REALISATION_KEYS} for s in summaries]
     out["summaries"] = list(summaries)
-    return out
+    from memstribo.uncertainty.intervals import ensemble_interval
+
+    return ensemble_interval(out)  # no probability without its interval (MODEL 7d): count, 95 % CI, text
