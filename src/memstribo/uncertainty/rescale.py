@@ -102,22 +102,7 @@ def rescale_cycle(dataset, params_nominal, overrides) -> dict:
     missing = [name for name in CYCLE_VARIABLES if name not in dataset and name != "friction_force_capillary"]
     if missing:
         raise InputError(f"rescale_cycle: the dataset lacks {', '.join(missing)}.")
-    bond = float(params_nominal["bond_length"])
-    f_chem = np.asarray(dataset["friction_force_chemical"], dtype=float)
-    f_vdw = np.asarray(dataset["friction_force_vdw"], dtype=float)
-    if "bond_energy" in overrides:  # (3-10), (3.5): F = N U / D_chem
-        f_chem = np.asarray(dataset["bonds_chemical"], dtype=float) * float(overrides["bond_energy"]) / bond
-    if "vdw_bond_energy" in overrides or "coating_vdw_bond_energy" in overrides:
-        if _coated(dataset):
-            from memstribo.physics.coating import get_coating
-
-            u_bare = overrides.get("vdw_bond_energy", params_nominal["vdw_bond_energy"])
-            u_coat = overrides.get("coating_vdw_bond_energy", params_nominal["coating_vdw_bond_energy"]
-                                   or get_coating(dataset.attrs["coating"]).vdw_bond_energy)
-            f_vdw = (np.asarray(dataset["bonds_vdw_bare"]) * float(u_bare)
-                     + np.asarray(dataset["bonds_vdw_coated"]) * float(u_coat)) / bond
-        else:
-            f_vdw = np.asarray(dataset["bonds_vdw"], dtype=float) * float(overrides["vdw_bond_energy"]) / bond
+    f_chem, f_vdw = _bond_friction(dataset, params_nominal, overrides)
     f_el = np.asarray(dataset["friction_force_elastic"], dtype=float)
     f_cap = (np.asarray(dataset["friction_force_capillary"], dtype=float) if "friction_force_capillary" in dataset
              else np.zeros_like(f_el))
@@ -160,8 +145,32 @@ def rescale_cycle(dataset, params_nominal, overrides) -> dict:
     })
     # the start-up verdict (peak instantaneous force at rest, MODEL 7d) is not rescaled yet: its keys would be the
     # nominal energies' (stale), so they are blanked; its per-mechanism peak forces would make it rescalable
-    stale = [key for key in base if key.startswith("startup")]
+    # the tooth's strength and temperature follow the nominal friction force too: blanked likewise
+    from memstribo.simulations.tooth_life import TOOTH_LIFE_KEYS
+
+    stale = [key for key in base if key.startswith("startup") or key in TOOTH_LIFE_KEYS]
     for key in stale:
         base[key] = None
     base["not_rescaled"] = stale
     return base
+
+
+def _bond_friction(dataset, params_nominal, overrides):
+    """(chemical, vdW) friction force per step [N] with the overridden bond energies: F = N U / D_chem (3-10, 3.5)."""
+    bond = float(params_nominal["bond_length"])
+    f_chem = np.asarray(dataset["friction_force_chemical"], dtype=float)
+    f_vdw = np.asarray(dataset["friction_force_vdw"], dtype=float)
+    if "bond_energy" in overrides:  # (3-10), (3.5): F = N U / D_chem
+        f_chem = np.asarray(dataset["bonds_chemical"], dtype=float) * float(overrides["bond_energy"]) / bond
+    if "vdw_bond_energy" in overrides or "coating_vdw_bond_energy" in overrides:
+        if _coated(dataset):
+            from memstribo.physics.coating import get_coating
+
+            u_bare = overrides.get("vdw_bond_energy", params_nominal["vdw_bond_energy"])
+            u_coat = overrides.get("coating_vdw_bond_energy", params_nominal["coating_vdw_bond_energy"]
+                                   or get_coating(dataset.attrs["coating"]).vdw_bond_energy)
+            f_vdw = (np.asarray(dataset["bonds_vdw_bare"]) * float(u_bare)
+                     + np.asarray(dataset["bonds_vdw_coated"]) * float(u_coat)) / bond
+        else:
+            f_vdw = np.asarray(dataset["bonds_vdw"], dtype=float) * float(overrides["vdw_bond_energy"]) / bond
+    return f_chem, f_vdw

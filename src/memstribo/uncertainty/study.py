@@ -374,10 +374,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         constants at lower cost (the probabilities and critical values keep ``steps``).
     critical : bool
         Critical values of the constants whose total index of the margin exceeds ``threshold`` [-].
-    confidence : float
-        Level of the intervals [-].
-    curve_points : int
-        Values of the dominant constant for the curve P(stiction) against it.
+    confidence, curve_points
+        Level of the intervals [-]; values of the dominant constant for the curve P(stiction) against it.
     priors : Mapping[str, Prior], optional
         Priors to use instead of the parameter set's.
     solve_sets : int, optional
@@ -408,7 +406,6 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     """
     from memstribo.uncertainty.priors import priors_for
     from memstribo.uncertainty.sampling import _check_fixed
-    from memstribo.uncertainty.intervals import half_width
 
     start = time.perf_counter()
     coating_name = getattr(coating, "name", coating) if coating is not None else None
@@ -428,68 +425,12 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         R = int(realisations)
         nominal_points = [(r, {}) for r in range(R)]
         nominal = runner.summaries(nominal_points)
-        if samples == "auto":
-            sets_count = max(1, 16)
-            while True:
-                points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
-                summaries = runner.summaries(points)
-                p = _probability(summaries, confidence)
-                if (half_width(p["count"], p["samples"], confidence) < TARGET_HALF_WIDTH and not p["failed"]) \
-                        or 2 * R * sets_count > int(budget):
-                    break
-                sets_count *= 2
-        else:
-            sets_count = max(1, int(samples) // R)
-            points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
-            summaries = runner.summaries(points)
-        sets = range(sets_count)
-        p_all = _probability(summaries, confidence)
-        p_nom = _probability(nominal, confidence)
-        ok = [s for s in summaries if not s.get("failed")]
-        ok_nominal = [s for s in nominal if not s.get("failed")]
-        result = {
-            "stiction_probability": p_all["probability"],
-            "stiction_probability_ci": p_all["ci"],
-            "stiction_count": p_all["count"],
-            "samples": p_all["samples"],
-            "stiction_probability_text": p_all["text"],
-            "stiction_probability_nominal": p_nom["probability"],
-            "stiction_probability_nominal_ci": p_nom["ci"],
-            "stiction_count_nominal": p_nom["count"],
-            "stiction_probability_nominal_text": p_nom["text"],
-            "realisations": R,
-            "constant_sets": len(sets),
-            "solve_sets": solve_sets,
-            "confidence": confidence,
-            "margin_quantiles": _quantiles([s["stiction_margin"] for s in ok]),
-            "margin_quantiles_nominal": _quantiles([s["stiction_margin"] for s in ok_nominal]),
-            "cof_quantiles": _quantiles([s["cof_mean"] for s in ok]),
-            "cof_split_quantiles": {k: _quantiles([s.get(k, 0.0) for s in ok])
-                                    for k in ("cof_chemical", "cof_vdw", "cof_elastic", "cof_capillary")},
-            "priors": {name: p.to_dict() for name, p in priors.items()},
-            "sampled_constants": list(sampled),
-            "fixed_constants": sorted(fixed_names),
-            "unconverged_samples": sum(1 for s in ok if s.get("unconverged_steps", 0) > 0),
-            "failed_samples": p_all["failed"] + p_nom["failed"],
-            "failures": sorted({s["error"] for s in summaries + nominal if s.get("failed")})[:10],
-        }
-        if any("startup_margin" in s for s in ok):
-            result["startup_margin_quantiles"] = _quantiles([s.get("startup_margin") for s in ok])
-        result["sensitivity"] = {}
-        result["dominant"] = None
-        result["critical_curve"] = None
-        result["designer_sentence"] = ""
+        sets_count, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
+        result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
         if sensitivity and sampled:
             _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear,
                          client, progress, sobol_samples or 32, sobol_steps, critical, threshold, curve_points)
-        warnings = []
-        if result["failed_samples"]:
-            warnings.append(f"{result['failed_samples']} sampled point(s) failed (the model refused their inputs): "
-                            "counted, and the interval of P(stiction) covers both outcomes of each")
-        if result["unconverged_samples"]:
-            warnings.append(f"{result['unconverged_samples']} sampled cycle(s) have unconverged contact steps: counted "
-                            "as computed")
-        result["warnings"] = warnings
+        result["warnings"] = _warnings(result)
         result["solves"] = runner.solves
         result["rescalings"] = runner.rescalings
         result["elapsed"] = time.perf_counter() - start
@@ -497,6 +438,73 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     finally:
         if own_client:
             client.close()
+
+
+def _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget):
+    """(constant sets per realisation, summaries) of the design; ``samples="auto"`` doubles the sets until the
+    interval's half-width is below :data:`TARGET_HALF_WIDTH` or the budget is spent."""
+    from memstribo.uncertainty.intervals import half_width
+
+    if samples != "auto":
+        sets_count = max(1, int(samples) // R)
+        return sets_count, runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
+    sets_count = 16
+    while True:
+        summaries = runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
+        p = _probability(summaries, confidence)
+        if (half_width(p["count"], p["samples"], confidence) < TARGET_HALF_WIDTH and not p["failed"]) \
+                or 2 * R * sets_count > int(budget):
+            return sets_count, summaries
+        sets_count *= 2
+
+
+def _warnings(result) -> list[str]:
+    warnings = []
+    if result["failed_samples"]:
+        warnings.append(f"{result['failed_samples']} sampled point(s) failed (the model refused their inputs): "
+                        "counted, and the interval of P(stiction) covers both outcomes of each")
+    if result["unconverged_samples"]:
+        warnings.append(f"{result['unconverged_samples']} sampled cycle(s) have unconverged contact steps: counted "
+                        "as computed")
+    return warnings
+
+
+def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names) -> dict:
+    """The probabilities with their intervals and the quantiles of margin and COF (keys of uncertainty_study)."""
+    p_all = _probability(summaries, confidence)
+    p_nom = _probability(nominal, confidence)
+    ok = [s for s in summaries if not s.get("failed")]
+    ok_nominal = [s for s in nominal if not s.get("failed")]
+    result = {
+        "stiction_probability": p_all["probability"],
+        "stiction_probability_ci": p_all["ci"],
+        "stiction_count": p_all["count"],
+        "samples": p_all["samples"],
+        "stiction_probability_text": p_all["text"],
+        "stiction_probability_nominal": p_nom["probability"],
+        "stiction_probability_nominal_ci": p_nom["ci"],
+        "stiction_count_nominal": p_nom["count"],
+        "stiction_probability_nominal_text": p_nom["text"],
+        "realisations": R,
+        "constant_sets": sets_count,
+        "solve_sets": solve_sets,
+        "confidence": confidence,
+        "margin_quantiles": _quantiles([s["stiction_margin"] for s in ok]),
+        "margin_quantiles_nominal": _quantiles([s["stiction_margin"] for s in ok_nominal]),
+        "cof_quantiles": _quantiles([s["cof_mean"] for s in ok]),
+        "cof_split_quantiles": {k: _quantiles([s.get(k, 0.0) for s in ok])
+                                for k in ("cof_chemical", "cof_vdw", "cof_elastic", "cof_capillary")},
+        "priors": {name: p.to_dict() for name, p in priors.items()},
+        "sampled_constants": list(sampled),
+        "fixed_constants": sorted(fixed_names),
+        "unconverged_samples": sum(1 for s in ok if s.get("unconverged_steps", 0) > 0),
+        "failed_samples": p_all["failed"] + p_nom["failed"],
+        "failures": sorted({s["error"] for s in summaries + nominal if s.get("failed")})[:10],
+    }
+    if any("startup_margin" in s for s in ok):
+        result["startup_margin_quantiles"] = _quantiles([s.get("startup_margin") for s in ok])
+    result.update(sensitivity={}, dominant=None, critical_curve=None, designer_sentence="")
+    return result
 
 
 def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear, client,
