@@ -274,7 +274,7 @@ def test_run_refuses_a_non_empty_folder_and_overwrite_clears_stale_files(cli, tm
     config.write_text('[run]\nstages = ["gear"]\nvalidation = false\n')
     code, _, err = cli("run", config, "--out", out, "--overwrite", "--progress", "off")
     assert code == 0 and not (out / "data" / "old_stage.nc").exists()
-    assert "stage 4/10 gear: done" in err  # one log line per stage off a terminal
+    assert "stage 4/11 gear: done" in err  # one log line per stage off a terminal
     code, _, err = cli("run", config, "--out", tmp_path / "quiet", "--quiet", "--progress", "off")
     assert code == 0 and "stage" not in err
 
@@ -461,3 +461,22 @@ def test_a_run_in_air_adds_the_humid_air_section_and_a_vacuum_run_does_not(tmp_p
     html = (tmp_path / "air" / "report.html").read_text(encoding="utf-8")
     assert "Humid air: capillary adhesion and the critical humidity" in html and "humidity_cof_margin" in html
     assert run.ok  # the extra section is not a requested stage: it does not change the run's status
+
+
+def test_the_run_says_what_its_verdict_hangs_on(small_run):
+    """The uncertainty stage (MODEL 7d): a probability with its interval, the ranked constants, their figures, and
+    the box under the verdict in the report."""
+    summary = small_run.summaries["uncertainty"]
+    low, high = summary["stiction_probability_ci"]
+    assert low <= summary["stiction_probability"] <= high and 0 <= low < high <= 1
+    assert summary["samples"] == 4
+    assert summary["summary"].startswith("P(stiction) = ") and "95 % CI" in summary["summary"]
+    stems = {f.stem for f in small_run.figures if f.stage == "uncertainty"}
+    assert "uncertainty_sensitivity" in stems
+    page = (small_run.folder / "report.html").read_text(encoding="utf-8")
+    assert "id='uncertainty'" in page and "95 % CI" in page
+
+
+def test_no_uncertainty_samples_leaves_the_stage_out():
+    options = RunOptions.from_table({"uncertainty": 0})
+    assert "uncertainty" not in options.stages and "mesh" in options.stages

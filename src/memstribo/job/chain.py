@@ -523,6 +523,32 @@ class RunChain:
         self._figure(plot_energy(dataset, "bare silicon"), "mesh_bare_energy",
                      "Energy dissipated per step by chemical bonds, vdW bonds and elastic interlocking.")
 
+    def uncertainty(self):
+        """What the verdict hangs on (MODEL 7d, docs/uncertainty.md): P(stiction) with its 95 % interval over roughness
+        realisations x the uncertain constants drawn from their priors, Sobol' indices and critical values."""
+        from memstribo.uncertainty.figures import plot_sensitivity, plot_stiction_curve
+        from memstribo.uncertainty.study import uncertainty_study
+
+        samples = self.options.uncertainty
+        steps = self.options.steps
+        result = uncertainty_study(self.model_params, self.results["mesh_roughness"], samples=samples,
+                                   steps=steps, sobol_samples=8, sobol_steps=min(121, steps or 121),
+                                   progress=self.progress)
+        self._json(result, "uncertainty")
+        for stem, plot, caption in (
+                ("uncertainty_sensitivity", plot_sensitivity,
+                 "What the stiction verdict hangs on: Sobol' total indices of the stiction margin and of the mean COF "
+                 "(bars: 95 % bootstrap intervals; the dotted line at 0.1 marks the constants whose critical value is "
+                 "sought)."),
+                ("uncertainty_stiction_curve", plot_stiction_curve,
+                 "P(stiction) over the roughness realisations against the dominant constant, the others at their "
+                 "nominal values, with its 95 % interval; the critical value (median margin zero) is marked.")):
+            written = plot(result, self.folder / "figures", stem)
+            if written:
+                self._files(written)
+                self.figures.append(FigureRecord(stem, self._current.name, caption))
+        self.summaries["uncertainty"] = _uncertainty_summary(result)
+
     def load_sweep(self):
         """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
         from memstribo.simulations import mesh
@@ -814,6 +840,34 @@ class RunChain:
             "provenance": software_provenance()}))
         write_report(result, self.folder / "report.html", validation)
         return result
+
+
+def _uncertainty_summary(result) -> dict[str, Any]:
+    """The uncertainty stage's summary: its numbers, and the texts of the report's box under the verdict."""
+    from memstribo.parameters.definitions import SPECS
+
+    q = result["margin_quantiles"]
+    drivers = []
+    for name, entry in result["sensitivity"].items():
+        if entry["total"] < 0.05:
+            continue
+        critical = entry.get("critical_value")
+        unit = SPECS[name].unit if name in SPECS else ""
+        drivers.append({"name": name, "effect": f"Sobol' total index of the margin {entry['total']:.2f}",
+                        "note": (f"critical value {critical:.3g} {unit}".rstrip() if critical is not None
+                                 else entry.get("note", ""))})
+    return {
+        "summary": (f"P(stiction) = {result['stiction_probability_text']} over {result['realisations']} roughness "
+                    f"realisations x {result['constant_sets']} sets of the unmeasured constants drawn from their priors; "
+                    f"at the nominal constants {result['stiction_probability_nominal_text']}. "
+                    + result.get("designer_sentence", "")),
+        "interval": (f"stiction margin 5 / 50 / 95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / "
+                     f"{q['p95'] * 1e3:+.3g} mN (negative: stiction)"),
+        "drivers": drivers,
+        **{key: result[key] for key in ("stiction_probability", "stiction_probability_ci", "stiction_count", "samples",
+                                        "stiction_probability_nominal", "stiction_probability_nominal_ci",
+                                        "dominant", "designer_sentence", "solves", "rescalings", "elapsed")},
+    }
 
 
 def _toml_with_provenance(text: str) -> str:

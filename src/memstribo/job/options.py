@@ -21,6 +21,7 @@ STAGES: dict[str, str] = {
     "sliding": "Sliding of nanoblocks on a flat and on the rough surface",
     "gear": "Gear pair and macroscopic contact",
     "mesh": "Bare silicon meshing cycle",
+    "uncertainty": "What the verdict hangs on: stiction probability over roughness and the constants' priors",
     "load_sweep": "COF and dissipated energy versus external load (thesis load case)",
     "area_sweep": "COF and dissipated energy versus nominal contact area",
     "coated": "Coated pair (functionalised surfaces)",
@@ -31,7 +32,8 @@ STAGES: dict[str, str] = {
 #: What each stage needs.
 DEPENDS: dict[str, tuple[str, ...]] = {
     "roughness": (), "geometry": ("roughness",), "sliding": ("roughness",), "gear": (),
-    "mesh": ("roughness", "geometry"), "load_sweep": ("roughness", "geometry"), "area_sweep": ("roughness", "geometry"),
+    "mesh": ("roughness", "geometry"), "uncertainty": ("roughness", "geometry"),
+    "load_sweep": ("roughness", "geometry"), "area_sweep": ("roughness", "geometry"),
     "coated": ("roughness", "geometry"), "wear_sweep": ("roughness", "geometry"), "damage": ("coated",),
 }
 
@@ -79,6 +81,9 @@ class RunOptions:
         Put the validation table (every topic's rows, computed at the end) into the report.
     realisations : int
         Independent roughness realisations of the bare verdict (MODEL 7b).
+    uncertainty : int
+        Samples (roughness realisations x sets of the uncertain constants) of the ``uncertainty`` stage (MODEL 7d;
+        0: the stage is left out).
     map : str or None
         A design map spec file (absolute path; :func:`memstribo.simulations.design_map.load_map_spec`) run as
         the last stage (:meth:`RunChain.map_stage`); None: no map.
@@ -96,6 +101,7 @@ class RunOptions:
     sliding_distance: float | None = None
     validation: bool = True
     realisations: int = 16
+    uncertainty: int = 64
     map: str | None = None
 
     def check_with(self, params) -> None:
@@ -151,6 +157,12 @@ class RunOptions:
             if not isinstance(count, int) or isinstance(count, bool) or not 1 <= count <= 10000:
                 raise InputError(f"[run] realisations = {count!r}: give an integer from 1 to 10000.")
             options["realisations"] = count
+        if "uncertainty" in table:
+            count = table["uncertainty"]
+            if not isinstance(count, int) or isinstance(count, bool) or not 0 <= count <= 4096:
+                raise InputError(f"[run] uncertainty = {count!r}: give an integer from 0 (no uncertainty stage) to "
+                                 "4096 samples.")
+            options["uncertainty"] = count
 
         def number_list(key, unit, minimum, maximum=None):
             values = table[key]
@@ -195,6 +207,8 @@ class RunOptions:
                     raise InputError(f"[run] stages: unknown stage '{name}'; stages: {', '.join(STAGES)}."
                                      f"{did_you_mean(str(name), STAGES)}")
             options["stages"] = tuple(s for s in STAGES if s in stages)
+        if options.get("uncertainty", 1) == 0:  # no samples: the stage is left out
+            options["stages"] = tuple(s for s in options.get("stages", STAGES) if s != "uncertainty")
         if "cycles_observed" in table:
             cycles = to_si(table["cycles_observed"], "", "cycles_observed")
             if not cycles > 0:
@@ -342,4 +356,4 @@ class RunResult:
 def options_for_test(**changes) -> RunOptions:
     """Small, fast options (few steps and sweep points) exercising every stage."""
     return replace(RunOptions(steps=8, loads=(25e-6, 150e-6), areas=(1.0, 4.0), wear=(0.0, 1.0),
-                              sliding_distance=0.5e-6, validation=False, realisations=3), **changes)
+                              sliding_distance=0.5e-6, validation=False, realisations=3, uncertainty=4), **changes)

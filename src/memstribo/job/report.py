@@ -312,7 +312,7 @@ def _figure_html(folder, number, figure) -> str:
 
 
 #: figures shown open, under the verdict (the others are folded): those the verdict is read from
-KEY_FIGURES = ("mesh_bare_ensemble", "mesh_bare_forces_cof", "wear_sweep")
+KEY_FIGURES = ("mesh_bare_ensemble", "uncertainty_sensitivity", "mesh_bare_forces_cof", "wear_sweep")
 
 
 def _figure_numbers(result) -> dict[str, int]:

@@ -359,6 +359,8 @@ SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}
 
 #: Keys of the ``[run]`` table of a config file (the main job, ``memstribo run``), with what each sets.
 RUN_KEYS = {
+    "uncertainty": "samples (roughness realisations x sets of the uncertain constants) of the stage 'What the verdict "
+                   "hangs on' (MODEL 7d; default 64, 0 leaves the stage out)",
     "steps": "positions along the path of contact in each meshing simulation (default: the model's)",
     "loads": "external loads of the load sweep (default 25 to 300 uN in 25 uN steps, thesis 4.9.3)",
     "areas": "nominal contact areas of the area sweep, in multiples of A_adh = w_adh^2 (default 1, 2, 4, 8, 16)",
