@@ -445,8 +445,15 @@ def _validation_html(validation) -> str:
         from memstribo.validation.__main__ import format_number, format_value, summary
 
         counts = summary(rows)
+        known = sum(1 for r in rows if not r.agrees and r.expected == "differs")
+        unexpected = [r for r in rows if not r.as_expected]
         parts.append(f"<p><b>{counts['rows']} comparisons: {counts['agree']} agree, {counts['differ']} differ</b> "
-                     "(on purpose where the tolerance says 'differs'; the note says why).</p>")
+                     f"({known} of them known differences, each fixed as such in its source with the band it must stay "
+                     "in; the note says why).</p>")
+        if unexpected:
+            parts.append("<p class='bad'>Not as expected (a row that agreed no longer does, or a known difference "
+                         "left its band): " + "; ".join(f"{_e(r.topic)}: {_e(r.quantity)}" for r in unexpected)
+                         + ".</p>")
         differ = [r for r in rows if not r.agrees]
         if differ:
             parts.append("<p>Those that differ: " + "; ".join(f"{_e(r.topic)}: {_e(r.quantity)}" for r in differ)
@@ -456,7 +463,8 @@ def _validation_html(validation) -> str:
             f"<tr><td>{_e(r.topic)}</td><td>{_e(r.quantity)}</td><td>{_e(r.reference)}</td>"
             f"<td class='num'>{_e(format_number(r.reference_value))}</td><td class='num'>{_e(format_value(r))}</td>"
             f"<td>{_e(r.unit)}</td><td>{_e(r.tolerance)}</td>"
-            f"<td class='{'good' if r.agrees else 'bad'}'>{'yes' if r.agrees else 'no'}</td>"
+            f"<td class='{'good' if r.agrees else 'bad'}'>"
+            f"{'yes' if r.agrees else ('no (known: differs)' if r.expected == 'differs' else 'no')}</td>"
             f"<td><code>{_e(r.command)}</code></td><td>{_e(r.note)}</td></tr>" for r in rows)
         parts.append(f"<details id='validation-table'><summary>The table: {counts['rows']} rows with reference, "
                      "tolerance, command and note</summary><div class='wide'><table><tr><th>topic</th><th>quantity</th>"
