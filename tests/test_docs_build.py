@@ -32,12 +32,10 @@ def test_docs_build_as_one_site_without_warnings(tmp_path):
     pytest.importorskip("sphinx")
     pytest.importorskip("myst_nb")
     pytest.importorskip("ipykernel")
-    start = time.perf_counter()
     result = subprocess.run(
         [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-E", "-b", "html",
          "-d", str(tmp_path / "doctrees"), str(REPO / "docs"), str(tmp_path / "html")],
-        capture_output=True, text=True, timeout=600)
-    seconds = time.perf_counter() - start
+        capture_output=True, text=True, timeout=900)  # its time is a benchmark, not a test: bench/README.md
     stderr = "\n".join(line for line in result.stderr.splitlines() if not line.startswith(NOT_WARNINGS)).strip()
     assert result.returncode == 0 and not stderr, f"sphinx warnings:\n{result.stderr}"
     html = tmp_path / "html"
@@ -53,5 +51,4 @@ def test_docs_build_as_one_site_without_warnings(tmp_path):
     assert (html / "model.html").is_file() and (html / "validation.html").is_file()  # the Markdown pages
     notebook = (html / "examples" / "worked_example.html").read_text(encoding="utf-8")
     assert "OTS intact: COF" in notebook and "stiction returns at Omega" in notebook  # executed: its outputs
-    assert notebook.count("<img") >= 3  # and its three figures
-    assert seconds < 300, f"the docs build took {seconds:.0f} s"
+    assert notebook.count("<img") >= 3  # and its figures
