@@ -3,7 +3,6 @@ committed without outputs (so that diffs stay readable and no stale numbers are 
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 import pytest
@@ -26,11 +25,9 @@ def test_worked_example_runs(tmp_path):
     nbclient = pytest.importorskip("nbclient")
     pytest.importorskip("ipykernel")
     notebook = nbformat.read(NOTEBOOK, as_version=4)
-    start = time.perf_counter()
     client = nbclient.NotebookClient(notebook, timeout=120, kernel_name="python3",
                                      resources={"metadata": {"path": str(REPO / "examples")}})
     client.execute()  # raises CellExecutionError on the first cell that fails
-    seconds = time.perf_counter() - start
     errors = [output for cell in notebook.cells if cell.cell_type == "code" for output in cell.outputs
               if output.output_type == "error"]
     assert not errors, errors
@@ -40,4 +37,3 @@ def test_worked_example_runs(tmp_path):
     figures = sum("image/png" in output.get("data", {}) for cell in notebook.cells if cell.cell_type == "code"
                   for output in cell.outputs)
     assert figures == 4  # the AFM map, the cycle (by hand and by MeshCycle.plot), the wear sweep
-    assert seconds < 60, f"the notebook took {seconds:.0f} s"
