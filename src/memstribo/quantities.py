@@ -309,6 +309,10 @@ _ENTRIES = [
     ("root_stress", "Pa", "tooth root stress", "tensile stress in the loaded root fillet: ISO 6336-3 method B "
      "(30 deg tangent section, Y_S) with the moment and the direct stress of the normal and the friction force; "
      "as root_stress_max of a cycle [pinion, gear]"),
+    ("root_stress_pinion", "Pa", "tooth root stress (pinion)", "tensile root stress of the pinion tooth in mesh at "
+     "the step (ISO 6336-3 method B, the pair's normal and friction force)"),
+    ("root_stress_gear", "Pa", "tooth root stress (gear)", "tensile root stress of the gear tooth in mesh at the step "
+     "(ISO 6336-3 method B, the pair's normal and friction force)"),
     ("root_stress_compressive_min", "Pa", "most compressive root stress",
      "most compressive stress in the unloaded root fillet over the cycle, [pinion, gear]"),
     ("root_effective_area", "m^2", "effective stressed area of the root",

@@ -5,13 +5,13 @@ from __future__ import annotations
 from memstribo.cli.common import CommandResult
 
 NAME = "validate-lab"
-HELP = ("predict published MEMS friction and adhesion measurements at their conditions (median, 90 % band), "
+HELP = ("predict published MEMS friction and adhesion measurements at their conditions (median, 90 %% band), "
         "calibrate on the declared rows, and say which lie inside")
 ORDER = 95
 
 
 def register(subparsers, parents):
-    parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=HELP + ". The rows are "
+    parser = subparsers.add_parser(NAME, parents=parents, help=HELP, description=HELP.replace("%%", "%") + ". The rows are "
                                    "src/memstribo/laboratory/measurements.toml; the page is docs/experiments.md.")
     parser.add_argument("--write", metavar="FILE", default=None,
                         help="also write the page (docs/experiments.md), its figure and the calibrated parameter set")

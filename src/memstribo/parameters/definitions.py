@@ -332,7 +332,7 @@ _SPECS = [
     _range("ambient_temperature", "K", "Temperature of the surroundings and of the teeth away from the contact "
            "(in air also of the water of the menisci)", 0.0, 1687.0,
            "above 0 K and below the melting point of silicon (1687 K)", exclusive_maximum=True),
-    _range("thermal_conductivity", "W/(m*K)", "Thermal conductivity k of the tooth material (polysilicon)", 0.1,
+    _range("thermal_conductivity", "W/m/K", "Thermal conductivity k of the tooth material (polysilicon)", 0.1,
            3000.0, "from a porous insulator to diamond",
            prior={"distribution": "uniform", "bounds": (15.0, 80.0),
                   "source": "Tai, Mastrangelo and Muller 1987 (IEDM); McConnell et al. 2001 (J. Microelectromech. "
@@ -345,7 +345,7 @@ _SPECS = [
                   "source": "thermal_conductivity's range over rho c = 2330 kg/m^3 x 703 J/(kg K) (silicon, "
                             "Incropera et al. 2007, Table A.1)",
                   "reason": "the conductivity's uncertainty; rho c of silicon is known to 1 %"}),
-    _range("heat_transfer_coefficient", "W/(m^2*K)", "Heat conductance per unit area from a gear's face to its "
+    _range("heat_transfer_coefficient", "W/m^2/K", "Heat conductance per unit area from a gear's face to its "
            "surroundings (the bulk temperature rise is the mean friction power over h times the face area)", 1.0,
            1e7, "from still air to a bonded metal contact",
            prior={"distribution": "loguniform", "bounds": (1e3, 1e5),

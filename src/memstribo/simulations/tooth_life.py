@@ -305,10 +305,7 @@ def with_tooth_life(dataset, params, coating=None):
     for name, values in (("root_stress_pinion", result["root_stress"]["pinion"]),
                          ("root_stress_gear", result["root_stress"]["gear"]),
                          ("flash_temperature", result["flash_temperature"])):
-        attrs = quantity_attrs("root_stress" if name.startswith("root_stress") else name)
-        if name.startswith("root_stress"):
-            attrs = {**attrs, "long_name": f"{attrs['long_name']} ({name.rsplit('_', 1)[1]})"}
-        dataset[name] = xr.Variable(("step",), np.asarray(values, dtype=float), attrs=attrs)
+        dataset[name] = xr.Variable(("step",), np.asarray(values, dtype=float), attrs=quantity_attrs(name))
     dataset.attrs["tooth_life"] = json.dumps({key: result[key] for key in TOOTH_LIFE_KEYS})
     dataset.attrs["warnings"] = json.dumps(warnings + list(result["warnings"]))
     return dataset
