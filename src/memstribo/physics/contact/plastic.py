@@ -1,19 +1,20 @@
-"""Rough line contact with the pressure capped at the hardness: elastic-perfectly-plastic saturation.
+"""The line contact with the pressure capped at the hardness: elastic-perfectly-plastic saturation (MODEL 7d).
 
 Real scans are rougher than the thesis's statistics; their asperity pressures pass the elastic
 limit of silicon in nearly every step of a meshing cycle (MODEL 7d). Where the elastic solution
 would press harder than the hardness ``H`` of the softer body, the material flows: the pressure
 saturates at ``H`` and the surfaces close in by plastic flattening (the gap there would be
 negative, an interpenetration, which is the plastic deformation). This is the
-elastic-perfectly-plastic surface model of the peer BEM codes (Tamaas' ``KatoSaturated``,
-ContactMechanics' ``PlasticTopography``; Almqvist et al. 2007; Sahlin et al. 2010):
+elastic-perfectly-plastic surface model of the peer BEM codes (ContactMechanics' ``PlasticTopography``,
+Tamaas' ``KatoSaturated``; Almqvist et al. 2007):
 
     0 <= p <= H,   g = h + u(p) - delta,
     g = 0 where 0 < p < H (elastic contact),   g <= 0 where p = H (plastic),   g >= 0 where p = 0,
     dx * sum(p) = w.
 
 It is solved here by an active set on the plastic elements P around the elastic solver
-(:func:`memstribo.physics.contact.solve_line_contact`, unchanged): with P fixed at p = H, the
+(:func:`memstribo.physics.contact.solve_line_contact`, unchanged; at most
+``SolverSettings.max_plastic_updates`` updates): with P fixed at p = H, the
 rest is the elastic problem with the gap raised by the displacement of the plastic pressure,
 ``h + u(H 1_P)``, and the load ``w - H dx |P|`` (the elements of P are lifted out of reach);
 then elements of the elastic solution above H join P and elements of P whose gap opens
@@ -28,13 +29,12 @@ import dataclasses
 import numpy as np
 
 from memstribo.errors import InputError
+from memstribo.physics.contact.halfplane import elastic_displacement
+from memstribo.physics.contact.settings import resolve
+from memstribo.physics.contact.solve import solve_line_contact
 from memstribo.references import cites
 
 __all__ = ["PlasticContactSolution", "solve_line_contact_capped"]
-
-#: Updates of the plastic set before the capped solve gives up (converged=False).
-_MAX_PLASTIC_UPDATES = 60
-
 
 @dataclasses.dataclass(frozen=True)
 class PlasticContactSolution:
@@ -111,83 +111,80 @@ def solve_line_contact_capped(separation, dx, contact_modulus, *, hardness, load
     upper bound (module docstring). The elastic pressure field of each set is
     :func:`~memstribo.physics.contact.solve_line_contact`'s, so the tolerance and convergence
     report are the elastic solver's; the capped solve is converged when the last elastic solve
-    is and the plastic set has settled (checked against Tamaas' saturated solver in
-    docs/mesh.md).
+    is and the plastic set has settled. Checked against ContactMechanics' plastic constrained
+    conjugate gradient on the shipped line scan (bench/bench_plastic_contact.py, docs/mesh.md):
+    pressures agree to 1e-9, contact and plastic sets element for element.
     """
-    from memstribo.physics.contact import elastic_displacement, solve_line_contact
-
     h = np.asarray(separation, dtype=float)
     common = dict(periodic=periodic, reference_distance=reference_distance, **options)
-    if hardness is None:
-        sol = solve_line_contact(h, dx, contact_modulus, load=load, initial_pressure=initial_pressure, **common)
-        return PlasticContactSolution(sol, np.zeros(h.shape, bool), np.zeros(h.shape), 0.0, 0)
-    hardness = float(hardness)
-    if not np.isfinite(hardness) or hardness <= 0:
-        raise InputError(f"hardness must be a positive pressure [Pa], got {hardness!r}.")
     start = None if initial_pressure is None else np.asarray(initial_pressure, dtype=float)
     sol = solve_line_contact(h, dx, contact_modulus, load=load, initial_pressure=start, **common)
-    plastic = sol.pressure > hardness
-    if not plastic.any():
-        return PlasticContactSolution(sol, plastic, np.zeros(h.shape), 0.0, 0)
-    displacement = {}  # displacement of a unit pressure on a set, cached by the set's bytes
-
-    def lifted(mask):
-        """h + u(H 1_P), and the elements of P lifted out of reach (by the peak-to-valley, at least once)."""
-        key = mask.tobytes()
-        if key not in displacement:
-            displacement[key] = elastic_displacement(np.where(mask, hardness, 0.0), dx, contact_modulus,
-                                                     periodic=periodic, reference_distance=reference_distance)
-        raised = h + displacement[key]
-        free = ~mask
-        top = float(raised[free].max()) if free.any() else float(raised.max())
-        lift = max(float(np.ptp(raised)), 1e-12)
-        return raised, np.where(mask, np.maximum(raised, top) + lift, raised), displacement[key]
-
-    updates = 0
-    inner, gap_all, delta = sol, np.zeros(h.shape), float(sol.approach)
+    if hardness is None or not np.any(sol.pressure > float(hardness)):
+        if hardness is not None and not (np.isfinite(hardness) and hardness > 0):
+            raise InputError(f"hardness must be a positive pressure [Pa] or None, got {hardness!r}.")
+        return PlasticContactSolution(sol, np.zeros(h.shape, bool), np.zeros(h.shape), 0.0, 0)
+    problem = _Capped(h, float(dx), float(contact_modulus), float(hardness), float(load), common)
+    plastic, updates, note = sol.pressure > problem.hardness, 0, ""
     history = set()
-    converged = True
-    message = ""
     while True:
         updates += 1
-        raised, inner_h, u_plastic = lifted(plastic)
-        rest = float(load) - hardness * dx * int(np.count_nonzero(plastic))
-        if rest <= 0.0 and not any(options.get(k) for k in ("cohesive_stress", "capillary_stress")):
-            converged = False  # cannot happen from an elastic start (the joining elements carried more than H)
-            message = "; the plastic set carries the whole load"
-            break
-        guess = None if start is None else np.where(plastic, 0.0, np.clip(start, None, hardness))
-        inner = solve_line_contact(inner_h, dx, contact_modulus, load=rest, initial_pressure=guess, **common)
-        pressure = np.where(plastic, hardness, inner.pressure)
-        # the gap the elastic bodies would have everywhere (negative on P: plastic flattening)
-        u_inner = elastic_displacement(inner.pressure, dx, contact_modulus, periodic=periodic,
-                                       reference_distance=reference_distance)
-        elastic_contact = inner.contact & ~plastic
-        if elastic_contact.any():
-            delta = float(np.mean((raised + u_inner)[elastic_contact]))
-        else:  # every element in contact is plastic: the approach is where the last one just closes
-            delta = float(np.max((raised + u_inner)[plastic]))
-        gap_all = raised + u_inner - delta
-        joining = (inner.pressure > hardness) & ~plastic
-        leaving = plastic & (gap_all > 0.0)
+        inner, pressure, gap_all, delta = problem.solve(plastic, start)
         start = pressure
+        joining = (inner.pressure > problem.hardness) & ~plastic
+        leaving = plastic & (gap_all > 0.0)
         if not joining.any() and not leaving.any():
             break
-        state = (plastic | joining) & ~leaving
-        key = state.tobytes()
-        if key in history or updates >= _MAX_PLASTIC_UPDATES:
-            converged = False
-            message = (f"; the plastic set did not settle in {updates} updates (cycling)" if key in history
-                       else f"; the plastic set did not settle in {updates} updates")
-            break
         history.add(plastic.tobytes())
-        plastic = state
+        plastic = (plastic | joining) & ~leaving
+        if plastic.tobytes() in history or updates >= resolve(options.get("settings")).max_plastic_updates:
+            note = f"; NOT converged: the plastic set did not settle in {updates} updates"
+            break
     depth = np.where(plastic, np.maximum(-gap_all, 0.0), 0.0)
-    contact = inner.contact | plastic
-    gap = np.where(plastic, 0.0, inner.gap)
+    n_plastic = int(np.count_nonzero(plastic))
     result = dataclasses.replace(
-        inner, pressure=pressure, gap=gap, contact=contact, approach=delta, load=float(pressure.sum() * dx),
-        converged=bool(inner.converged and converged),
-        message=f"{inner.message}; pressure capped at the hardness {hardness / 1e9:.3g} GPa on "
-                f"{int(np.count_nonzero(plastic))} element(s) after {updates} plastic-set update(s){message}")
-    return PlasticContactSolution(result, plastic, depth, hardness * dx * float(np.count_nonzero(plastic)), updates)
+        inner, pressure=pressure, gap=np.where(plastic, 0.0, inner.gap), contact=inner.contact | plastic,
+        approach=delta, load=float(pressure.sum() * dx), converged=bool(inner.converged and not note),
+        message=f"{inner.message}; pressure capped at the hardness {problem.hardness / 1e9:.3g} GPa on {n_plastic} "
+                f"element(s) after {updates} plastic-set update(s){note}")
+    return PlasticContactSolution(result, plastic, depth, problem.hardness * float(dx) * n_plastic, updates)
+
+
+@dataclasses.dataclass
+class _Capped:
+    """One capped problem: the elastic solve with a given plastic set held at the hardness."""
+
+    h: np.ndarray
+    dx: float
+    modulus: float
+    hardness: float
+    load: float
+    common: dict
+    cache: dict = dataclasses.field(default_factory=dict)
+
+    def displacement(self, pressure):
+        """Elastic displacement of a pressure field [m] (the solver's operator and datum)."""
+        return elastic_displacement(pressure, self.dx, self.modulus, periodic=self.common["periodic"],
+                                    reference_distance=self.common["reference_distance"])
+
+    def solve(self, plastic, start):
+        """(elastic solution of the rest, pressure [Pa], gap of the elastic bodies [m], approach [m]) with p = H on P.
+
+        The gap is h + u(H 1_P) + u(p_rest); the elements of P are lifted out of reach of the elastic solve
+        (above the highest other element by the peak-to-valley), and the rest carries w - H dx |P|.
+        """
+        key = plastic.tobytes()
+        if key not in self.cache:
+            self.cache = {key: self.displacement(np.where(plastic, self.hardness, 0.0))}
+        raised = self.h + self.cache[key]
+        free = ~plastic
+        top = float(raised[free].max()) if free.any() else float(raised.max())
+        lifted = np.where(plastic, np.maximum(raised, top) + max(float(np.ptp(raised)), 1e-12), raised)
+        rest = self.load - self.hardness * self.dx * int(np.count_nonzero(plastic))
+        guess = None if start is None else np.where(plastic, 0.0, np.clip(start, None, self.hardness))
+        inner = solve_line_contact(lifted, self.dx, self.modulus, load=rest, initial_pressure=guess, **self.common)
+        pressure = np.where(plastic, self.hardness, inner.pressure)
+        total = raised + self.displacement(inner.pressure)
+        elastic_contact = inner.contact & free
+        # the approach from the elastic contact set; with every element in contact plastic, where the last closes
+        delta = float(np.mean(total[elastic_contact])) if elastic_contact.any() else float(np.max(total[plastic]))
+        return inner, pressure, total - delta, delta
