@@ -72,7 +72,8 @@ class PlasticContactSolution:
 
 @cites("johnson_1985", "almqvist_2007", "model")
 def solve_line_contact_capped(separation, dx, contact_modulus, *, hardness, load, periodic=False,
-                              reference_distance=None, initial_pressure=None, **options) -> PlasticContactSolution:
+                              reference_distance=None, initial_pressure=None, elastic=None,
+                              **options) -> PlasticContactSolution:
     """Rough line contact under a load with the pressure capped at the hardness (elastic-perfectly-plastic).
 
     Parameters
@@ -91,6 +92,8 @@ def solve_line_contact_capped(separation, dx, contact_modulus, *, hardness, load
     periodic, reference_distance, initial_pressure
         As for :func:`memstribo.physics.contact.solve_line_contact`; ``initial_pressure`` [Pa] is
         the warm start (e.g. the previous step's capped pressure).
+    elastic : ContactSolution, optional
+        The elastic solution of the same problem when the caller has it already (it is not solved again).
     **options
         Passed to the elastic solves (``tolerance``, ``cohesive_stress``, ``cohesive_range``,
         ``capillary_stress``, ``capillary_range``, ...).
@@ -118,13 +121,16 @@ def solve_line_contact_capped(separation, dx, contact_modulus, *, hardness, load
     h = np.asarray(separation, dtype=float)
     common = dict(periodic=periodic, reference_distance=reference_distance, **options)
     start = None if initial_pressure is None else np.asarray(initial_pressure, dtype=float)
-    sol = solve_line_contact(h, dx, contact_modulus, load=load, initial_pressure=start, **common)
+    sol = elastic if elastic is not None else solve_line_contact(h, dx, contact_modulus, load=load,
+                                                                 initial_pressure=start, **common)
     if hardness is None or not np.any(sol.pressure > float(hardness)):
         if hardness is not None and not (np.isfinite(hardness) and hardness > 0):
             raise InputError(f"hardness must be a positive pressure [Pa] or None, got {hardness!r}.")
         return PlasticContactSolution(sol, np.zeros(h.shape, bool), np.zeros(h.shape), 0.0, 0)
     problem = _Capped(h, float(dx), float(contact_modulus), float(hardness), float(load), common)
-    plastic, updates, note = sol.pressure > problem.hardness, 0, ""
+    # each set's solve starts from the last pressure: the elastic solution first (with adhesion the contact can
+    # have several states, and the capped one is the elastic one's neighbour)
+    plastic, updates, note, start = sol.pressure > problem.hardness, 0, "", sol.pressure
     history = set()
     while True:
         updates += 1
