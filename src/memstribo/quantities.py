@@ -119,7 +119,6 @@ _ENTRIES = [
     ("startup_resisting_force", "N", "start-up resisting force", "R(c) at start-up: the start-up friction forces of "
      "every pair in mesh when one pair rests at c"),
     ("static_cof", "1", "start-up COF", "start-up friction force / (F_N + F_adh) of the pair"),
-    ("static_cof_max", "1", "largest start-up COF", "largest start-up COF over the rest positions of the cycle"),
     ("startup_margin", "N", "start-up margin", "F_t - max R(c) at start-up (negative: the gear cannot start; "
      "MODEL 7d); never above stiction_margin"),
     ("startup_stiction", _TEXT, "start-up stiction", "true where the start-up resisting force exceeds F_t somewhere"),
@@ -143,7 +142,6 @@ _ENTRIES = [
      "atomic blocks of which one is past the threshold strain"),
     ("plastic_fraction", "1", "plastically loaded fraction", "share of the contact elements at the hardness (pressure "
      "capped, elastic-perfectly-plastic; MODEL 7d); as a scalar over the cycle's contact elements"),
-    ("plastic_fraction_max", "1", "largest plastic fraction", "largest plastically loaded fraction of a step"),
     ("plastic_steps", "1", "steps with plastic flow", "steps where some contact element reached the hardness"),
     ("stiction_margin_uncapped", "N", "stiction margin without the pressure cap", "the stiction margin of the same "
      "cycle solved purely elastically (no hardness cap)"),

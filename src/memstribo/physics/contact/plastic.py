@@ -118,14 +118,14 @@ def solve_line_contact_capped(separation, dx, contact_modulus, *, hardness, load
     conjugate gradient on the shipped line scan (bench/bench_plastic_contact.py, docs/mesh.md):
     pressures agree to 1e-9, contact and plastic sets element for element.
     """
+    if hardness is not None and not (np.isfinite(float(hardness)) and float(hardness) > 0):
+        raise InputError(f"hardness must be a positive pressure [Pa] or None, got {hardness!r}.")
     h = np.asarray(separation, dtype=float)
     common = dict(periodic=periodic, reference_distance=reference_distance, **options)
     start = None if initial_pressure is None else np.asarray(initial_pressure, dtype=float)
     sol = elastic if elastic is not None else solve_line_contact(h, dx, contact_modulus, load=load,
                                                                  initial_pressure=start, **common)
     if hardness is None or not np.any(sol.pressure > float(hardness)):
-        if hardness is not None and not (np.isfinite(hardness) and hardness > 0):
-            raise InputError(f"hardness must be a positive pressure [Pa] or None, got {hardness!r}.")
         return PlasticContactSolution(sol, np.zeros(h.shape, bool), np.zeros(h.shape), 0.0, 0)
     problem = _Capped(h, float(dx), float(contact_modulus), float(hardness), float(load), common)
     # each set's solve starts from the last pressure: the elastic solution first (with adhesion the contact can
