@@ -233,3 +233,17 @@ def test_a_bad_hardness_is_refused_by_the_solver():
     h, dx = _rough_gap(128)
     with pytest.raises(InputError, match="hardness"):
         solve_line_contact_capped(h, dx, 90e9, hardness=-1.0, load=1.0, periodic=True)
+
+
+def test_the_start_up_verdict_calls_the_bond_law(params, monkeypatch):
+    """The start-up force is the published relation's (friction.peak_bond_force): replacing it changes the verdict."""
+    before = summarize(simulate_mesh(params, steps=11))["startup_margin"]
+    real = friction.peak_bond_force
+    monkeypatch.setattr(friction, "peak_bond_force", lambda *a, **k: 2.0 * np.asarray(real(*a, **k)))
+    after = summarize(simulate_mesh(params, steps=11))["startup_margin"]
+    assert after < before
+
+
+def test_the_cap_is_switched_off_from_the_command_line(params):
+    assert params.updated({"hardness": "unset"})["hardness"] is None
+    assert params.updated({"hardness": "11 GPa"})["hardness"] == pytest.approx(11e9)

@@ -121,6 +121,8 @@ _ENTRIES = [
     ("static_cof", "1", "start-up COF", "start-up friction force / (F_N + F_adh) of the pair"),
     ("startup_margin", "N", "start-up margin", "F_t - max R(c) at start-up (negative: the gear cannot start; "
      "MODEL 7d); never above stiction_margin"),
+    ("startup_stiction_probability", "1", "start-up stiction probability", "fraction of roughness realisations "
+     "whose gear cannot start from rest (MODEL 7d)"),
     ("startup_stiction", _TEXT, "start-up stiction", "true where the start-up resisting force exceeds F_t somewhere"),
     ("stiction_mode", _TEXT, "which verdict fails", "running (the kinetic friction exceeds F_t), start-up (only the "
      "start from rest fails) or none"),

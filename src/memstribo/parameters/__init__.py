@@ -67,6 +67,8 @@ def coerce_value(name: str, value: Any, spec: ParameterSpec | None = None) -> An
     if spec is None:
         raise InputError(f"unknown parameter '{printable(name)}'.{did_you_mean(name, SPECS)} "
                          f"Run 'memstribo parameters' to list them.")
+    if spec.optional and isinstance(value, str) and value.strip().lower() in ("unset", "none"):
+        value = None  # '--set hardness=unset' from the command line: derive it, or switch it off
     if value is None:
         if spec.optional:
             return None

@@ -366,7 +366,8 @@ _SPECS = [
            "the bonds has formed after a dwell; 0: bonds form on contact (thesis 3.5)", 0.0, 1e9,
            "no negative time; up to 30 years", exclusive_minimum=False),
     _range("hardness", "Pa", "Indentation hardness of the teeth: the rough contact's pressure is capped at it "
-           "(elastic-perfectly-plastic; MODEL 7d); unset: no cap (purely elastic, the thesis); at most 6 times "
+           "(elastic-perfectly-plastic; MODEL 7d); unset (--set hardness=unset): no cap (purely elastic, the thesis); "
+           "at most 6 times "
            "ideal_shear_strength (Tabor H = 3 Y, Tresca Y = 2 tau)", 1e6, 1e12,
            "1 MPa to 1 TPa (above the strength of any solid)", optional=True),
 ]

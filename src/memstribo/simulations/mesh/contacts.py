@@ -30,8 +30,8 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar,
     (:func:`memstribo.physics.contact.solve_line_contact`, docs/humidity.md); the sixth info column is
     then the menisci's line load [N/m], the seventh the elements at the hardness (pressure capped where
     ``hardness`` is set, :func:`memstribo.physics.contact.solve_line_contact_capped`). ``warm_start``: a dict
-    of each row's pressures (steps, n) of a previous cycle, the initial pressure of each step's solve where present (:func:`simulate_mesh`);
-    this row's pressures are stored in it.
+    of each row's pressures (steps, n) of a previous cycle, the initial pressure of each step's solve where
+    present (:func:`simulate_mesh`); this row's pressures are stored in it.
     """
     from memstribo.physics.contact import solve_line_contact, solve_line_contact_capped
 

@@ -97,7 +97,8 @@ def _sized_cycle(setup, params, roughness, steps, realisation, sliding_axis, coa
     for _ in range(_WINDOW_GROWTHS + 1):
         cycle = _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start)
         out = cycle["out"]
-        short = (out["window_exceeded"] > 0).any() or (params["interface_model"] == "gap" and (out["vdw_edge"] > 0).any())
+        short = (out["window_exceeded"] > 0).any() or (params["interface_model"] == "gap"
+                                                        and (out["vdw_edge"] > 0).any())
         if params["mesh_window"] is not None or not short:
             break
         try:

@@ -75,6 +75,12 @@ def ensemble_summary(summaries) -> dict:
         out[f"{name}_median"] = float(np.median(values))
         out[f"{name}_p05"] = float(np.quantile(values, 0.05))
         out[f"{name}_p95"] = float(np.quantile(values, 0.95))
+    if all("startup_margin" in s for s in summaries):  # the start-up verdict (MODEL 7d)
+        startup = np.array([s["startup_margin"] for s in summaries])
+        out["startup_stiction_probability"] = float(np.mean(startup < 0))
+        out["startup_margin_median"] = float(np.median(startup))
+        out["startup_margin_p05"] = float(np.quantile(startup, 0.05))
+        out["startup_margin_p95"] = float(np.quantile(startup, 0.95))
     out["per_realisation"] = [{key: s[key] for key in REALISATION_KEYS} for s in summaries]
     out["summaries"] = list(summaries)
     return out

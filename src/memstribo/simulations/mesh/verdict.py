@@ -67,7 +67,8 @@ SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic",
                 "stiction_mode", "stiction_margin_capped", "startup_margin_capped", "stiction_mode_capped",
                 "friction_share_rigid", "friction_share_overstrength", "plastic_fraction", "plastic_fraction_max",
                 "plastic_steps", "stiction_margin_uncapped", "startup_margin_uncapped", "cof_mean_uncapped",
-                "hardness", "window", "lattice_registry")
+                "hardness", "window", "lattice_registry", "startup_stiction_probability", "startup_margin_median",
+                "startup_margin_p05", "startup_margin_p95")
 
 
 SUMMARY_UNITS = {key: quantity_unit(key) for key in SUMMARY_KEYS}
