@@ -247,3 +247,18 @@ def test_the_start_up_verdict_calls_the_bond_law(params, monkeypatch):
 def test_the_cap_is_switched_off_from_the_command_line(params):
     assert params.updated({"hardness": "unset"})["hardness"] is None
     assert params.updated({"hardness": "11 GPa"})["hardness"] == pytest.approx(11e9)
+
+
+def test_the_report_gives_both_verdicts_and_the_limits():
+    from memstribo.job.chain import verdict
+    from memstribo.job.report import _startup_items
+
+    summary = {"load_case": "torque", "resisting_force_max": 1.9e-3, "stiction_margin": 0.9e-3, "cof_mean": 0.48,
+               "startup_margin": -3.3e-3, "startup_stiction": True, "static_cof_max": 2.3, "stiction_mode": "start-up",
+               "stiction_margin_capped": 1.4e-3, "startup_margin_capped": -1.0e-3, "stiction_mode_capped": "start-up",
+               "plastic_fraction": 0.07, "stiction_margin_uncapped": 0.95e-3}
+    items = " ".join(_startup_items(verdict({"mesh": summary})))
+    assert "does NOT start" in items and "start-up margin -3.3 mN" in items
+    assert "capped" in items and "Plastic flow: 7 %" in items and "purely elastic" in items
+    assert _startup_items(verdict({"mesh": {**summary, "startup_stiction": False, "startup_margin": 1e-4}}))[0].count(
+        "starts") == 1
