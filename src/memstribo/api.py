@@ -260,7 +260,7 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     >>> cycle.dataset["position"].attrs["units"], cycle.dataset.sizes["step"]
     ('m', 31)
     >>> sorted(k for k in cycle.summary if k.startswith("cof_m"))
-    ['cof_max', 'cof_mean']
+    ['cof_max', 'cof_mean', 'cof_mean_uncapped']
     """
     from memstribo.checks import check_coating_wear, check_mesh_arguments, check_unused_values
     check_mesh_arguments(params, steps, realisations, wear)

@@ -112,6 +112,47 @@ _ENTRIES = [
     ("max_shear_stress", "Pa", "largest friction shear stress", "largest friction stress on the real contact area, "
      "against the ideal shear strength of silicon (MODEL 7c)"),
     ("max_contact_pressure", "Pa", "largest contact pressure", "largest element pressure of the rough contact"),
+    # --- what the verdict hangs on (MODEL 7d, issue #26) --------------------------------------------------------
+    ("static_friction_force", "N", "start-up friction force", "the force that starts a pair at rest: the peak lateral "
+     "force of its bonds, every bond formed (peak_bond_force, 2.69 x the kinetic force), plus its elastic and "
+     "capillary friction; never below the kinetic friction force"),
+    ("startup_resisting_force", "N", "start-up resisting force", "R(c) at start-up: the start-up friction forces of "
+     "every pair in mesh when one pair rests at c"),
+    ("static_cof", "1", "start-up COF", "start-up friction force / (F_N + F_adh) of the pair"),
+    ("startup_margin", "N", "start-up margin", "F_t - max R(c) at start-up (negative: the gear cannot start; "
+     "MODEL 7d); never above stiction_margin"),
+    ("startup_stiction_probability", "1", "start-up stiction probability", "fraction of roughness realisations "
+     "whose gear cannot start from rest (MODEL 7d)"),
+    ("startup_stiction", _TEXT, "start-up stiction", "true where the start-up resisting force exceeds F_t somewhere"),
+    ("stiction_mode", _TEXT, "which verdict fails", "running (the kinetic friction exceeds F_t), start-up (only the "
+     "start from rest fails) or none"),
+    ("resisting_force_capped", "N", "resisting force, bond stress capped", "R(c) with each bond population's shear "
+     "stress capped at the ideal shear strength of silicon (local limits, MODEL 7d)"),
+    ("startup_resisting_force_capped", "N", "start-up resisting force, bond stress capped", "start-up R(c) with the "
+     "bonds' shear stress capped at the ideal shear strength"),
+    ("stiction_margin_capped", "N", "stiction margin, bond stress capped", "F_t - max R(c) with the bonds' shear stress "
+     "capped at the ideal shear strength of silicon"),
+    ("startup_margin_capped", "N", "start-up margin, bond stress capped", "start-up margin with the bonds' shear stress "
+     "capped at the ideal shear strength of silicon"),
+    ("stiction_mode_capped", _TEXT, "which verdict fails, capped", "stiction_mode with the bonds' shear stress capped "
+     "at the ideal shear strength"),
+    ("friction_share_rigid", "1", "friction share of rigid blocks", "share of the cycle's friction energy from the "
+     "chemical bonds of atomic blocks past the threshold strain of the bilinear law"),
+    ("friction_share_overstrength", "1", "friction share beyond the ideal strength", "share of the cycle's friction "
+     "energy from bond populations whose shear stress exceeds the ideal shear strength of silicon"),
+    ("friction_force_chemical_rigid", "N", "chemical friction of rigid blocks", "chemical friction force from pairs of "
+     "atomic blocks of which one is past the threshold strain"),
+    ("plastic_fraction", "1", "plastically loaded fraction", "share of the contact elements at the hardness (pressure "
+     "capped, elastic-perfectly-plastic; MODEL 7d); as a scalar over the cycle's contact elements"),
+    ("plastic_steps", "1", "steps with plastic flow", "steps where some contact element reached the hardness"),
+    ("stiction_margin_uncapped", "N", "stiction margin without the pressure cap", "the stiction margin of the same "
+     "cycle solved purely elastically (no hardness cap)"),
+    ("startup_margin_uncapped", "N", "start-up margin without the pressure cap", "the start-up margin of the same "
+     "cycle solved purely elastically"),
+    ("cof_mean_uncapped", "1", "mean COF without the pressure cap", "cof_mean of the same cycle solved purely "
+     "elastically"),
+    ("window", "m", "contact window", "length of the contact window solved at each step (sized to hold the contact "
+     "and the vdW range unless mesh_window is set)"),
     ("step_converged", _TEXT, "converged in the steps", "true when doubling the steps changes the margin and the mean "
      "COF by less than 2 %"),
     ("step_change_margin", "1", "change of the margin with the steps", "relative change of the stiction margin (of "
@@ -348,6 +389,13 @@ _ENTRIES = [
      "95 % confidence interval [low, high] of the stiction probability from the number of samples (Wilson)"),
     ("stiction_probability_text", _TEXT, "stiction probability with interval",
      "the count and its interval, e.g. '0 of 16 (95 % CI 0-19 %)'"),
+    ("startup_stiction_count", "1", "start-up stiction count", "roughness realisations whose start-up margin is "
+     "negative (the gear cannot start from rest)"),
+    ("startup_stiction_probability_ci", "1", "start-up stiction probability interval",
+     "95 % confidence interval [low, high] of the start-up stiction probability from the number of realisations "
+     "(Wilson)"),
+    ("startup_stiction_probability_text", _TEXT, "start-up stiction probability with interval",
+     "the count and its interval, e.g. '16 of 16 (95 % CI 81-100 %)'"),
     ("stiction_probability_nominal", "1", "stiction probability at nominal constants",
      "fraction of roughness realisations that stick with every constant at its nominal value"),
     ("stiction_probability_nominal_ci", "1", "stiction probability interval at nominal constants",

@@ -279,6 +279,20 @@ REFERENCES: dict[str, str] = {
         "Proc. ASME IMECE 2000, MEMS, 255-259. doi:10.1115/IMECE2000-1100"
     ),
     "kittel_2005": "C. Kittel, Introduction to Solid State Physics, 8th ed., Wiley, 2005 (Table 3.1, cohesive energies).",
+    "almqvist_2007": (
+        "A. Almqvist, F. Sahlin, R. Larsson, S. Glavatskih, 'On the dry elasto-plastic contact of nominally flat "
+        "surfaces', Tribol. Int. 40 (2007) 574-579. doi:10.1016/j.triboint.2005.11.008"
+    ),
+    "bhushan_li_1997": (
+        "B. Bhushan, X. Li, 'Micromechanical and tribological characterization of doped single-crystal silicon and "
+        "polysilicon films for microelectromechanical systems devices', J. Mater. Res. 12 (1997) 54-63. "
+        "doi:10.1557/JMR.1997.0010"
+    ),
+    "tabor_1951": "D. Tabor, The Hardness of Metals, Clarendon Press, Oxford, 1951.",
+    "roundy_cohen_2001": (
+        "D. Roundy, M. L. Cohen, 'Ideal strength of diamond, Si, and Ge', Phys. Rev. B 64 (2001) 212103. "
+        "doi:10.1103/PhysRevB.64.212103"
+    ),
 }
 
 _used: dict[str, None] = {}

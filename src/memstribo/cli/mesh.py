@@ -21,6 +21,11 @@ ENSEMBLE_KEYS = ("realisations", "stiction_probability", "stiction_margin_median
                  "stiction_margin_p95", "cof_mean_median", "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median",
                  "mesh_efficiency_p05", "mesh_efficiency_p95", "per_realisation")
 
+#: ... and of its start-up verdict (MODEL 7d).
+STARTUP_ENSEMBLE_KEYS = ("startup_stiction_probability", "startup_stiction_count", "startup_stiction_probability_ci",
+                         "startup_stiction_probability_text", "startup_margin_median", "startup_margin_p05",
+                         "startup_margin_p95")
+
 
 def register(subparsers, parents):
     parser = subparsers.add_parser(
@@ -155,6 +160,7 @@ def run(args, params):
         ensemble = ensemble_interval(ensemble)  # no probability without its interval (MODEL 7d)
         values.update({key: ensemble[key] for key in ENSEMBLE_KEYS})
         values.update({key: ensemble[key] for key in ENSEMBLE_INTERVAL_KEYS})
+        values.update({key: ensemble[key] for key in STARTUP_ENSEMBLE_KEYS if key in ensemble})
     notes = [
         f"  load case '{summary['load_case']}': normal force {summary['normal_force_total'] * 1e3:.4g} mN on the "
         f"teeth, F_t {summary['tangential_force'] * 1e3:.4g} mN"
@@ -162,6 +168,10 @@ def run(args, params):
         f"  verdict: {'STICTION' if summary['stiction'] else 'no stiction'}: largest resisting force R(c) "
         f"{summary['resisting_force_max'] * 1e3:.4g} mN (friction of every pair in mesh) against F_t "
         f"{summary['tangential_force'] * 1e3:.4g} mN, margin {summary['stiction_margin'] * 1e3:+.4g} mN",
+        f"  start-up verdict (every bond formed after a dwell, MODEL 7d): "
+        f"{'STICTION' if summary['startup_stiction'] else 'starts'}: start-up margin "
+        f"{summary['startup_margin'] * 1e3:+.4g} mN, largest start-up COF {summary['static_cof_max']:.3g}; "
+        f"stiction_mode '{summary['stiction_mode']}'",
         f"  interface: vdW '{summary['interface_model']}', contact adhesion '{summary['contact_adhesion']}'; "
         f"rows: {summary['roughness_rows']}",
         f"  roughness: {dataset.attrs['roughness']}"
@@ -183,7 +193,9 @@ def run(args, params):
         notes.append(f"  ensemble of {values['realisations']} roughness realisations: stiction probability "
                      f"{values['stiction_probability_text']}, margin {values['stiction_margin_p05'] * 1e3:+.3g} .. "
                      f"{values['stiction_margin_p95'] * 1e3:+.3g} mN (5-95 %), mean COF {values['cof_mean_p05']:.3g} .. "
-                     f"{values['cof_mean_p95']:.3g}")
+                     f"{values['cof_mean_p95']:.3g}"
+                     + (f"; start-up stiction probability {values['startup_stiction_probability_text']}"
+                        if "startup_stiction_probability_text" in values else ""))
     for text in summary["warnings"]:
         notes.append(f"  WARNING: {text}.")
     if args.out:

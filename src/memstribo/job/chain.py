@@ -94,7 +94,12 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
                 out[f"{label}_roughness_rows"] = summary["roughness_rows"]
             for key in ("step_converged", "step_change_margin", "step_change_cof", "realisations",
                         "stiction_probability", "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95",
-                        "cof_mean_median", "cof_mean_p05", "cof_mean_p95"):
+                        "cof_mean_median", "cof_mean_p05", "cof_mean_p95",
+                        # what the verdict hangs on (MODEL 7d): start-up, local limits, the hardness cap
+                        "startup_margin", "startup_stiction", "static_cof_max", "stiction_mode",
+                        "stiction_margin_capped", "startup_margin_capped", "stiction_mode_capped", "plastic_fraction",
+                        "stiction_margin_uncapped", "startup_margin_uncapped", "startup_stiction_probability",
+                        "startup_margin_median", "startup_margin_p05", "startup_margin_p95"):
                 if key in summary:
                     out[f"{label}_{key}"] = summary[key]
     geometry = summaries.get("geometry")

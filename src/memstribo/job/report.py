@@ -106,6 +106,31 @@ def validation_rows() -> tuple[list, str | None]:
     return rows, None
 
 
+def _startup_items(v) -> list[str]:
+    """The start-up verdict, the local limits' capped margins and the plastic fraction of the bare pair (MODEL 7d)."""
+    if "bare_startup_margin" not in v:
+        return []
+    cls = "bad" if v["bare_startup_stiction"] else "good"
+    word = "does NOT start" if v["bare_startup_stiction"] else "starts"
+    text = (f"<li>Bare silicon at rest, every bond formed: <span class='{cls}'>{word}</span>: start-up margin "
+            f"{_quantity(v['bare_startup_margin'], 'N')}, largest start-up COF {_quantity(v.get('bare_static_cof_max'))}"
+            f"; failing verdict: {_e(str(v.get('bare_stiction_mode')))}")
+    if "bare_startup_stiction_probability" in v:
+        text += (f"; start-up stiction probability {v['bare_startup_stiction_probability'] * 100:.0f} % over the "
+                 "realisations")
+    items = [text + ".</li>"]
+    if "bare_stiction_margin_capped" in v:
+        items.append(f"<li>Local limits: with every bond population's shear stress capped at the ideal shear strength "
+                     f"of silicon the margins are {_quantity(v['bare_stiction_margin_capped'], 'N')} (running) and "
+                     f"{_quantity(v['bare_startup_margin_capped'], 'N')} (start-up); failing verdict: "
+                     f"{_e(str(v.get('bare_stiction_mode_capped')))}.</li>")
+    if v.get("bare_plastic_fraction"):
+        items.append(f"<li>Plastic flow: {v['bare_plastic_fraction'] * 100:.3g} % of the contact at the hardness; "
+                     f"margin {_quantity(v['bare_stiction_margin'], 'N')} with the cap, "
+                     f"{_quantity(v.get('bare_stiction_margin_uncapped'), 'N')} purely elastic.</li>")
+    return items
+
+
 def _verdict_html(result) -> str:
     v = result.verdict
     items = []
@@ -130,6 +155,7 @@ def _verdict_html(result) -> str:
                      f"against the tangential force F<sub>t</sub> = {_quantity(v.get('tangential_force'), 'N')}; margin "
                      f"F<sub>t</sub> &minus; R = {_quantity(v['bare_stiction_margin'], 'N')}; mean COF "
                      f"{_quantity(v['bare_cof_mean'])}; mesh efficiency {_quantity(v.get('bare_mesh_efficiency'))}.</li>")
+        items.extend(_startup_items(v))
         if "bare_step_converged" in v:
             items.append(f"<li>Numerics: at twice the steps the margin changes by "
                          f"{v['bare_step_change_margin'] * 100:.2g} % of F<sub>t</sub> and the mean COF by "

@@ -67,6 +67,8 @@ def coerce_value(name: str, value: Any, spec: ParameterSpec | None = None) -> An
     if spec is None:
         raise InputError(f"unknown parameter '{printable(name)}'.{did_you_mean(name, SPECS)} "
                          f"Run 'memstribo parameters' to list them.")
+    if spec.optional and isinstance(value, str) and value.strip().lower() in ("unset", "none"):
+        value = None  # '--set hardness=unset' from the command line: derive it, or switch it off
     if value is None:
         if spec.optional:
             return None
@@ -243,6 +245,13 @@ def _check_consistency(values: Mapping[str, Any]) -> None:
         raise InputError(
             f"sliding_gap = {gap:.4g} m is an interference deeper than the nanoblock (adhesive_height "
             f"{block:.4g} m): it would crush the block; allowed: sliding_gap >= -adhesive_height.")
+    if values.get("hardness") and values.get("ideal_shear_strength"):
+        bound = 6.0 * values["ideal_shear_strength"]  # Tabor H = 3 Y, Tresca Y = 2 tau (MODEL 7d)
+        if values["hardness"] > bound:
+            raise InputError(
+                f"hardness ({values['hardness'] / 1e9:.4g} GPa) is above what the ideal shear strength allows "
+                f"(6 x ideal_shear_strength = {bound / 1e9:.4g} GPa: Tabor's H = 3 Y with Tresca's Y = 2 tau): no "
+                "solid is harder than its ideal strength; use a hardness at most that, or unset it for no cap.")
     if values.get("atomic_width") and values.get("adhesive_width"):
         if values["atomic_width"] > values["adhesive_width"]:
             raise InputError(

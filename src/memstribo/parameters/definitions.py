@@ -352,6 +352,23 @@ _SPECS = [
                   "source": "conduction across the air gap to the substrate, k_air / g with k_air = 0.026 W/(m K) "
                             "(Incropera et al. 2007, Table A.4)",
                   "reason": "gaps of 0.3 to 20 um between a released gear and its substrate"}),
+    # --- version 3: what the verdict hangs on (MODEL 7d, issue #26) ------------------------------
+    ParameterSpec("lattice_registry", "", "Registry of the atomic-block lattices of the two flanks along the sliding "
+                  "direction: 'random' (each nanoblock row its own phase and orientation, seeded like the roughness "
+                  "lines: polysilicon grains, flanks cut across crystal planes; MODEL 7d) or 'shared' (every row in "
+                  "the same registry: a commensurate single-crystal contact, version 2)", kind="str",
+                  choices=("random", "shared")),
+    _range("startup_dwell", "s", "Dwell of the teeth at rest before start-up (the start-up verdict); unset: long "
+           "enough for every bond to form", 0.0, 1e9, "no negative time; up to 30 years at rest", optional=True,
+           exclusive_minimum=False),
+    _range("bond_formation_time", "s", "Time constant of bond formation at rest: a share 1 - exp(-dwell / time) of "
+           "the bonds has formed after a dwell; 0: bonds form on contact (thesis 3.5)", 0.0, 1e9,
+           "no negative time; up to 30 years", exclusive_minimum=False),
+    _range("hardness", "Pa", "Indentation hardness of the teeth: the rough contact's pressure is capped at it "
+           "(elastic-perfectly-plastic; MODEL 7d); unset (--set hardness=unset): no cap (purely elastic, the thesis); "
+           "at most 6 times "
+           "ideal_shear_strength (Tabor H = 3 Y, Tresca Y = 2 tau)", 1e6, 1e12,
+           "1 MPa to 1 TPa (above the strength of any solid)", optional=True),
 ]
 
 SPECS: dict[str, ParameterSpec] = {spec.name: spec for spec in _SPECS}

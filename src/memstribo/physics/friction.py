@@ -18,6 +18,7 @@ import numpy as np
 
 from memstribo.checks import as_array
 from memstribo.errors import InputError
+from memstribo.physics.potentials import lennard_jones_force, lennard_jones_sigma
 from memstribo.references import cites
 
 __all__ = [
@@ -26,6 +27,7 @@ __all__ = [
     "full_overlap_bond_count",
     "bond_breaking_energy",
     "friction_force",
+    "peak_bond_force",
     "friction_coefficient",
     "friction_coefficient_split",
     "adhesion_force",
@@ -174,6 +176,51 @@ def friction_force(dissipated_energy, distance):
     u = as_array(dissipated_energy, "dissipated_energy", "J", nonnegative=True)
     x = as_array(distance, "distance", "m", positive=True)
     return _result(u / x)
+
+
+@cites("thesis", "model")
+def peak_bond_force(bond_count, bond_energy, bond_length):
+    """Peak lateral force of a formed bond population at start-up: N times the largest slope of the bond law [N].
+
+    A bond is the Lennard-Jones 12-6 pair (3-14) with well depth ``U`` (its energy) and its
+    equilibrium distance at the bond length, sigma = D_chem 2^(-1/6) (3-16). Pulled along the
+    sliding direction from rest it resists with -dU/dr, whose largest value lies at
+    r* = (26/7)^(1/6) sigma (the inflection point of U):
+
+        F_peak = N |F(r*)| = N (24 U / sigma) (7/26)^(7/6) (12/26) = 2.6899 N U / D_chem,
+
+    against the kinetic force N U / D_chem of the same bonds (3-1, 3.5: the energy U given up
+    once per bond length of sliding). A population at rest, every bond formed, must be pulled
+    past this peak before sliding begins (MODEL 7d, the start-up verdict). The force is taken
+    from :func:`memstribo.physics.potentials.lennard_jones_force`, so the start-up force follows
+    the bond law.
+
+    Parameters
+    ----------
+    bond_count : numeric
+        Bonds N formed at rest [-], >= 0.
+    bond_energy : numeric
+        Energy of one bond U_chem or U_vdW [J], >= 0 (the LJ well depth).
+    bond_length : numeric
+        D_chem [m], > 0 (the LJ equilibrium distance).
+
+    Returns
+    -------
+    numeric
+        Peak lateral force [N], >= 0.
+
+    Examples
+    --------
+    >>> round(peak_bond_force(1.0, 1.0, 1.0), 4)
+    2.6899
+    """
+    n = as_array(bond_count, "bond_count", "-", nonnegative=True)
+    u = as_array(bond_energy, "bond_energy", "J", nonnegative=True)
+    d = as_array(bond_length, "bond_length", "m", positive=True)
+    sigma = lennard_jones_sigma(d)
+    inflection = (26.0 / 7.0) ** (1.0 / 6.0) * sigma
+    per_unit_energy = np.abs(lennard_jones_force(inflection, 1.0, sigma))  # |F(r*)| per joule of well depth [1/m]
+    return _result(n * u * per_unit_energy)
 
 
 @cites("thesis")

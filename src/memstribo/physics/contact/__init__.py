@@ -9,6 +9,7 @@ The package's rooms (each module opens with one line on what it is):
 ``dense``      the small-grid dense path (Cholesky on contact sets; the compiled zone loop, physics/_zone_kernel.py)
 ``cohesive``   the cohesive-zone fixed point: Maugis-Dugdale and capillary, load or approach control
 ``solve``      :func:`solve_line_contact`, the public entry that picks one of the above
+``plastic``    :func:`solve_line_contact_capped`, the pressure capped at the hardness (elastic-perfectly-plastic)
 
 The normal contact of two elastic bodies with a rough gap is solved on the half-plane
 (docs/model.md, section 7): the combined undeformed gap ``separation`` h(x) [m] is given on a
@@ -64,6 +65,8 @@ from memstribo.physics.contact.halfplane import (ContactSolution, ContactSolve, 
                                                  strip_influence)
 from memstribo.physics.contact.line import cylinder_on_flat
 from memstribo.physics.contact.solve import solve_line_contact
+from memstribo.physics.contact.plastic import PlasticContactSolution, solve_line_contact_capped
 
 __all__ = ["ContactSolution", "ContactSolve", "solve_line_contact", "elastic_displacement", "strip_influence",
-           "HalfPlane", "cylinder_on_flat", "SolverSettings", "DEFAULTS"]
+           "HalfPlane", "cylinder_on_flat", "SolverSettings", "DEFAULTS",
+           "PlasticContactSolution", "solve_line_contact_capped"]

@@ -166,6 +166,13 @@ class SolverSettings:
     bench/bench_zone_updates.py."""
 
 
+    # ---------------------------------------------------------------- pressure capped at the hardness (plastic.py)
+    max_plastic_updates: int = 60
+    """Updates of the plastic set (elements at the hardness) before the capped solve gives up, converged=False
+    [count]. The shipped line scan settles in 3-4 updates per solve; more only delays the report of a set that
+    cycles. Set by bench/bench_plastic_contact.py."""
+
+
 #: The settings every solve uses unless given its own (read at call time, so a test may swap it).
 DEFAULTS = SolverSettings()
 

@@ -7,6 +7,7 @@ The package's rooms, in the order a cycle runs (each module opens with one line 
 ``interface``  nanoblock lattices, the vdW share at a gap, the lattice overlap, interlocking
 ``steps``      the step loop: contact, bonds, menisci, interlocking, adhesion of every row and step
 ``verdict``    friction averaged over sliding, R(c), stiction margin, efficiency, warnings, :func:`summarize`
+``limits``     what the verdict hangs on (MODEL 7d): the start-up verdict, the local limits and their margins
 ``record``     the cycle as an xarray Dataset
 ``cycle``      :func:`simulate_mesh` top-down, the friction fixed point, :func:`step_convergence`
 ``ensemble``   :func:`simulate_ensemble` over roughness realisations

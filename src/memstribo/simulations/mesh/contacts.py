@@ -28,11 +28,12 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar,
     ``capillary``: (Laplace pressure [Pa], condensation height per step and element [m], shape
     (steps, n)) of the menisci in humid air, a second Dugdale-type traction inside the solve
     (:func:`memstribo.physics.contact.solve_line_contact`, docs/humidity.md); the sixth info column is
-    then the menisci's line load [N/m]. ``warm_start``: a dict of each row's pressures (steps, n) of
-    a previous cycle, the initial pressure of each step's solve where present (:func:`simulate_mesh`);
-    this row's pressures are stored in it.
+    then the menisci's line load [N/m], the seventh the elements at the hardness (pressure capped where
+    ``hardness`` is set, :func:`memstribo.physics.contact.solve_line_contact_capped`). ``warm_start``: a dict
+    of each row's pressures (steps, n) of a previous cycle, the initial pressure of each step's solve where
+    present (:func:`simulate_mesh`); this row's pressures are stored in it.
     """
-    from memstribo.physics.contact import solve_line_contact
+    from memstribo.physics.contact import solve_line_contact, solve_line_contact_capped
 
     grid = setup.grid
     dx = setup.grid_spacing
@@ -45,8 +46,10 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar,
     n_steps = separation.shape[0]
     pressure = np.zeros_like(separation)
     gap = np.zeros_like(separation)
-    info = np.zeros((n_steps, 5 if capillary is None else 6))  # converged, residual, iterations, approach,
-    sigma0, h0 = _cohesive_zone(params)                            # cohesive line load (, capillary line load)
+    # converged, residual, iterations, approach, cohesive line load, capillary line load, plastic elements
+    info = np.zeros((n_steps, 7))
+    sigma0, h0 = _cohesive_zone(params)
+    hardness = params["hardness"]
     adhesive = {} if sigma0 is None else {"cohesive_stress": sigma0, "cohesive_range": h0}
     previous = None
     start = None
@@ -65,6 +68,12 @@ def _solve_contacts(setup, params, modulus, r_ef, s1, s2, row, shear_term, pbar,
         solution = solve_line_contact(separation[i], dx, modulus, load=line_load[i],
                                       tolerance=params["mesh_contact_tolerance"], initial_pressure=previous,
                                       **adhesive)
+        if hardness is not None and solution.pressure.max() > hardness:  # plastic flow (MODEL 7d)
+            capped = solve_line_contact_capped(separation[i], dx, modulus, hardness=hardness, load=line_load[i],
+                                               tolerance=params["mesh_contact_tolerance"], elastic=solution,
+                                               initial_pressure=previous, **adhesive)
+            solution = capped.solution
+            info[i, 6] = np.count_nonzero(capped.plastic)
         pressure[i], gap[i] = solution.pressure, solution.gap
         info[i, :5] = (solution.converged, solution.residual, solution.iterations, solution.approach,
                        getattr(solution, "adhesive_load", 0.0))

@@ -10,6 +10,7 @@ from memstribo.references import cites
 from memstribo.simulations.mesh.record import cycle_dataset
 from memstribo.simulations.mesh.setup import _prepare
 from memstribo.simulations.mesh.steps import _run_cycle
+from memstribo.simulations.mesh.limits import apply_limits
 from memstribo.simulations.mesh.verdict import cycle_verdict, summarize
 from memstribo.simulations.tooth_life import with_tooth_life
 
@@ -72,11 +73,70 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
                         params["counter_poisson_ratio"])
     setup = _prepare(params, roughness, steps, realisation, sliding_axis)           # set-up: geometry, rows, lines
-    cycle = _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start)  # the steps
+    setup, cycle = _sized_cycle(setup, params, roughness, steps, realisation, sliding_axis,  # the steps, in a
+                                coating, wear, modulus, beta, progress, warm_start)         # window that holds them
     verdict = cycle_verdict(params, setup, cycle)                                   # forces, margin, efficiency
+    apply_limits(params, setup, cycle, verdict)                                     # start-up, local limits
     dataset = cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, realisation, sliding_axis)
+    dataset = _with_the_elastic_margins(dataset, params, roughness, steps, coating, wear, realisation, sliding_axis)
     dataset = with_tooth_life(dataset, params, coating)                             # root stress, temperature
     return _with_fitted_constants(dataset, params, coating)                         # what was fitted, and where
+
+
+#: The window grows by this factor when the contact or the vdW range reaches its ends, at most _WINDOW_GROWTHS times.
+_WINDOW_GROWTH = 1.6
+_WINDOW_GROWTHS = 5
+
+
+def _sized_cycle(setup, params, roughness, steps, realisation, sliding_axis, coating, wear, modulus, beta, progress,
+                 warm_start):
+    """(set-up, cycle) in a window that holds the contact and the vdW range at every step (MODEL 7d).
+
+    Unless ``mesh_window`` is set, a cycle whose contact reached the ends of its window (5 % margin) or whose gap at
+    the ends is inside ``vdw_cutoff`` (interface model 'gap') is run again in a window 1.6 times longer (the same grid
+    spacing and roughness lines), up to 5 times or until the memory bound (``check_mesh_size``) stops it; what
+    remains is warned about.
+    """
+    for _ in range(_WINDOW_GROWTHS + 1):
+        cycle = _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start)
+        out = cycle["out"]
+        short = (out["window_exceeded"] > 0).any() or (params["interface_model"] == "gap"
+                                                        and (out["vdw_edge"] > 0).any())
+        if params["mesh_window"] is not None or not short:
+            break
+        try:
+            setup = _prepare(params, roughness, steps, realisation, sliding_axis, lines=setup.row_roughness,
+                             window=_WINDOW_GROWTH * setup.grid.size * setup.grid_spacing)
+        except InputError:  # no memory for a longer window: the warnings say so
+            break
+    return setup, cycle
+
+
+def _with_the_elastic_margins(dataset, params, roughness, steps, coating, wear, realisation, sliding_axis):
+    """The margins and COF of the same cycle without the hardness cap (attributes ``*_uncapped``), solved again
+    purely elastically where some element reached the hardness, and one sentence on the plastic flow (MODEL 7d)."""
+    import json
+
+    summary = summarize(dataset)
+    elastic = summary
+    if dataset.attrs["plastic_elements"] > 0:
+        elastic = summarize(simulate_mesh(params.updated({"hardness": None}, origin="the margin without the cap"),
+                                          roughness, steps=steps, coating=coating, wear=wear, realisation=realisation,
+                                          sliding_axis=sliding_axis))
+        warnings = json.loads(dataset.attrs["warnings"])
+        warnings.append(
+            f"the rough contact reaches the hardness of silicon ({params['hardness'] / 1e9:.3g} GPa) in "
+            f"{summary['plastic_steps']} of {summary['steps']} steps: {100 * summary['plastic_fraction']:.3g} % of the "
+            f"contact over the cycle flows plastically (up to {100 * summary['plastic_fraction_max']:.3g} % in a step; "
+            f"pressure capped, elastic-perfectly-plastic); the stiction margin is "
+            f"{summary['stiction_margin'] * 1e6:.4g} µN with the cap and {elastic['stiction_margin'] * 1e6:.4g} µN "
+            f"purely elastic, the start-up margin {summary['startup_margin'] * 1e6:.4g} µN and "
+            f"{elastic['startup_margin'] * 1e6:.4g} µN")
+        dataset.attrs["warnings"] = json.dumps(warnings)
+    dataset.attrs["stiction_margin_uncapped"] = elastic["stiction_margin"]
+    dataset.attrs["startup_margin_uncapped"] = elastic["startup_margin"]
+    dataset.attrs["cof_mean_uncapped"] = elastic["cof_mean"]
+    return dataset
 
 
 def _with_fitted_constants(dataset, params, coating):

@@ -79,6 +79,18 @@ def ensemble_summary(summaries) -> dict:
         out[f"{name}_median"] = float(np.median(values))
         out[f"{name}_p05"] = float(np.quantile(values, 0.05))
         out[f"{name}_p95"] = float(np.quantile(values, 0.95))
+    if all("startup_margin" in s for s in summaries):  # the start-up verdict (MODEL 7d)
+        startup = np.array([s["startup_margin"] for s in summaries])
+        out["startup_stiction_probability"] = float(np.mean(startup < 0))
+        from memstribo.uncertainty.intervals import binomial_interval, format_probability
+
+        count = int((startup < 0).sum())  # no probability without its interval (MODEL 7d)
+        out["startup_stiction_count"] = count
+        out["startup_stiction_probability_ci"] = list(binomial_interval(count, startup.size))
+        out["startup_stiction_probability_text"] = format_probability(count, startup.size)
+        out["startup_margin_median"] = float(np.median(startup))
+        out["startup_margin_p05"] = float(np.quantile(startup, 0.05))
+        out["startup_margin_p95"] = float(np.quantile(startup, 0.95))
     out["per_realisation"] = [{key: s[key] for key in REALISATION_KEYS} for s in summaries]
     out["summaries"] = list(summaries)
     from memstribo.uncertainty.intervals import ensemble_interval

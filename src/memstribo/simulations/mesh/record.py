@@ -110,6 +110,22 @@ def _variables(params, setup, cycle, verdict, step) -> dict:
         "mesh_efficiency": v["efficiency"],
         "friction_shear_stress": v["shear_stress"],
         "rigid_atomic_blocks": out["rigid_atomic_blocks"],
+        **_limit_variables(cycle, verdict, denominator),
+    }
+
+
+def _limit_variables(cycle, verdict, denominator) -> dict:
+    """The start-up verdict, the local limits and the plastic fraction per step (MODEL 7d)."""
+    out, limits = cycle["out"], verdict["limits"]
+    return {
+        "static_friction_force": limits["static"],
+        "static_cof": limits["static"] / denominator,
+        "startup_resisting_force": limits["startup_resisting"],
+        "resisting_force_capped": limits["resisting_capped"],
+        "startup_resisting_force_capped": limits["startup_resisting_capped"],
+        "friction_force_chemical_rigid": out["f_chem_rigid"],
+        "plastic_fraction": np.divide(out["plastic_elements"], out["contact_elements"],
+                                      out=np.zeros_like(out["plastic_elements"]), where=out["contact_elements"] > 0),
     }
 
 
@@ -154,6 +170,12 @@ def _attributes(params, setup, cycle, verdict, modulus, beta, coating, wear, rea
         "mesh_efficiency_mean": verdict["efficiency_mean"],
         "elastic_limit_pressure": params["elastic_limit_pressure"],
         "ideal_shear_strength": params["ideal_shear_strength"],
+        "hardness": float(params["hardness"]) if params["hardness"] is not None else float("nan"),
+        "lattice_registry": params["lattice_registry"],
+        "friction_share_rigid": verdict["limits"]["share_rigid"],
+        "friction_share_overstrength": verdict["limits"]["share_overstrength"],
+        "plastic_elements": float(cycle["out"]["plastic_elements"].sum()),
+        "contact_elements": float(cycle["out"]["contact_elements"].sum()),
         "warnings": json.dumps(verdict["warnings"]),
     }
 

@@ -82,6 +82,9 @@ class MeshSetup:
     hertz_width_ratio : float
         Largest Hertz half-width over the radius of relative curvature a / R_ef of the cycle [-]
         (the half-space model needs a << R; refused above :data:`HERTZ_RATIO_LIMIT`, warned above 0.2).
+    registry : LatticeRegistry or None
+        Each row's lattice phase and orientation along the sliding direction (:func:`lattice_registry`);
+        None: every row in the same registry.
     """
 
     pair: GearPair
@@ -100,6 +103,67 @@ class MeshSetup:
     row_roughness: object
     realisation: int
     hertz_width_ratio: float = 0.0
+    registry: object = None
+
+
+@dataclass(frozen=True)
+class LatticeRegistry:
+    """Where each row's atomic-block lattices sit along the sliding direction (MODEL 7d).
+
+    Attributes
+    ----------
+    pinion_phase, gear_phase : ndarray
+        Shift of each row's nanoblock lattice along its flank's roll coordinate [m], in [0, w_adh): block k
+        of row r spans [k w_adh + phase_r, (k + 1) w_adh + phase_r).
+    gear_pitch_scale : ndarray
+        Each row's gear atomic pitch along the sliding direction over the pinion's, 1 / cos(theta_r) [-]: the
+        gear's lattice turned by theta_r in the plane of the flank (a square lattice: |theta| <= 45 deg).
+    mode : str
+        ``random`` or ``shared``.
+    """
+
+    pinion_phase: np.ndarray
+    gear_phase: np.ndarray
+    gear_pitch_scale: np.ndarray
+    mode: str
+
+
+#: Stream of the seed sequence that draws the lattice registry, apart from the roughness lines' (so 'shared' leaves
+#: every line as it was).
+_REGISTRY_STREAM = 26
+
+
+def lattice_registry(params, rows: int, realisation: int = 0) -> LatticeRegistry:
+    """Each row's lattice phase and orientation along the sliding direction, seeded like the roughness lines.
+
+    ``lattice_registry = 'random'`` (MODEL 7d): polysilicon grains, and involute flanks cut across crystal planes,
+    have no common registry across the face width. Each row's pinion and gear lattices are shifted by phases
+    uniform in [0, w_adh) and the gear's is turned by an angle uniform in [-45, 45] deg (all orientations of a
+    square lattice), which stretches its atomic pitch along the sliding direction by 1 / cos(theta). The draws
+    come from the seed sequence (``roughness_seed``, realisation, 26), apart from the roughness lines' stream.
+    ``'shared'``: no shift, no turn: every row in the registry of a commensurate single-crystal contact.
+
+    Parameters
+    ----------
+    params : Parameters
+        ``lattice_registry``, ``roughness_seed``, ``adhesive_width`` [m].
+    rows : int
+        Rows of nanoblocks across the face width.
+    realisation : int
+        Index of the roughness realisation.
+
+    Returns
+    -------
+    LatticeRegistry
+    """
+    if params["lattice_registry"] == "shared":
+        return LatticeRegistry(np.zeros(rows), np.zeros(rows), np.ones(rows), "shared")
+    rng = np.random.default_rng(np.random.SeedSequence([int(params["roughness_seed"]), int(realisation),
+                                                        _REGISTRY_STREAM]))
+    w_adh = float(params["adhesive_width"])
+    pinion, gear = rng.random(rows) * w_adh, rng.random(rows) * w_adh
+    theta = rng.uniform(-0.25 * math.pi, 0.25 * math.pi, rows)
+    return LatticeRegistry(pinion, gear, 1.0 / np.cos(theta), "random")
 
 
 def _positions(pair: GearPair, steps: int) -> np.ndarray:
@@ -164,7 +228,9 @@ def normal_force_of_load_case(params, pair: GearPair) -> float:
     return f_t / math.cos(pair.pressure_angle)
 
 
-def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshSetup:
+def _prepare(params, roughness, steps, realisation=0, sliding_axis="x", window=None, lines=None) -> MeshSetup:
+    """The set-up of a cycle; ``window`` [m] overrides the sized window (the cycle's self-sizing), ``lines``
+    (a :class:`~memstribo.surfaces.roughness.RowRoughness`) are reused where they are long enough."""
     from memstribo.surfaces import roughness as rough
 
     pair = GearPair.from_parameters(params)
@@ -204,9 +270,8 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
     dx = params["mesh_grid_spacing"]
     if dx is None:
         dx = 2 * a_max / int(params["mesh_elements_across_contact"])
-    window = params["mesh_window"]
     if window is None:
-        window = 2.4 * a_max + 6 * w_adh
+        window = params["mesh_window"] or 2.4 * a_max + 6 * w_adh
     if params["mesh_grid_spacing"] is None:
         dx = min(dx, window / 64)  # a sized grid always has the 64 elements the solver needs
     n = int(round(window / dx))
@@ -218,7 +283,8 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
     grid = (np.arange(n) - 0.5 * (n - 1)) * dx
     _, _, (lo1, hi1), (lo2, hi2) = _flank_ranges(pair, positions, n * dx + 2 * w_adh)
     needed = max(hi1 - lo1, hi2 - lo2)
-    lines = rough.row_roughness(_read_roughness(roughness, sliding_axis), params, rows, needed, realisation)
+    if lines is None or min(float(p.x[-1] - p.x[0]) for p in lines.pinion + lines.gear) < needed:
+        lines = rough.row_roughness(_read_roughness(roughness, sliding_axis), params, rows, needed, realisation)
     pinion, gear = [], []
     for scan_p, scan_g in zip(lines.pinion, lines.gear):
         for scan in (scan_p, scan_g):
@@ -232,7 +298,8 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x") -> MeshS
         zg = rough.level_profile(scan_g)
         gear.append((zg.x - 0.5 * (zg.x[0] + zg.x[-1]) + 0.5 * (lo2 + hi2), zg.z))
     return MeshSetup(pair, positions, step_time, load, rows, rows * w_adh, grid, pinion, gear, lines.name,
-                     lines.synthetic, lines.source, float(dx), lines, realisation, ratio)
+                     lines.synthetic, lines.source, float(dx), lines, realisation, ratio,
+                     lattice_registry(params, rows, realisation))
 
 
 def _heights(profile, coordinate):

@@ -35,11 +35,12 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         pressure, gap, info, zone = _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row,
                                                  strip, pbar, warm_start)
         _record_solve(out, ctx, pressure, gap, info, n_rows_solved)
-        k1, k2, flank_states = _flank_blocks(out, ctx, pressure, gap, kinematics)
+        rolls = _row_rolls(setup, kinematics, row)
+        k1, k2, flank_states = _flank_blocks(out, ctx, pressure, gap, rolls)
         block_loads.append((k1, flank_states[0][2], k2, flank_states[1][2]))
         bare2 = ctx.gear_bare(k2, row)
         _chemical_bonds(out, ctx, setup, flank_states, bare2, row)
-        inside, w_x, k1_at_x = _vdw_and_menisci(out, ctx, gap, info, zone, kinematics, row)
+        inside, w_x, k1_at_x = _vdw_and_menisci(out, ctx, gap, info, zone, rolls, row)
         _interlocking_energy(out, ctx, (k1, k2), flank_states, kinematics["sliding_fraction"])
         if ctx.with_cohesive_zone:  # the attraction is the contact solve's cohesive line load over the row
             out["f_adh"] += info[:, 4] * ctx.w_adh
@@ -53,7 +54,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
 #: The per-step totals of a cycle, summed over the rows.
 _TOTALS = ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh", "contact_width", "max_pressure",
            "unconverged", "residual", "iterations", "window_exceeded", "approach", "rigid_atomic_blocks", "vdw_edge",
-           "f_cap", "f_cap_adh", "wetted")
+           "f_cap", "f_cap_adh", "wetted", "f_chem_rigid", "f_vdw_capped", "f_vdw_over", "f_vdw_static_capped",
+           "plastic_elements", "contact_elements")
 
 
 def _kinematics(setup):
@@ -69,6 +71,16 @@ def _kinematics(setup):
     sliding = np.abs(slip) * setup.step_time
     sliding_fraction = np.abs(slip) / (u1 + u2)
     return dict(r_ef=r_ef, s1=s1, s2=s2, u1=u1, u2=u2, slip=slip, sliding=sliding, sliding_fraction=sliding_fraction)
+
+
+def _row_rolls(setup, kinematics, row):
+    """(s1, s2, gear pitch scale) of a row: the roll coordinates less the row's lattice phases (MODEL 7d), so that
+    block k of the row spans [k w_adh, (k + 1) w_adh) in them, and its gear lattice's stretch along the sliding."""
+    registry = setup.registry
+    if registry is None:
+        return kinematics["s1"], kinematics["s2"], 1.0
+    return (kinematics["s1"] - registry.pinion_phase[row], kinematics["s2"] - registry.gear_phase[row],
+            float(registry.gear_pitch_scale[row]))
 
 
 def _context(setup, params, coating, wear, modulus):
@@ -95,6 +107,10 @@ def _context(setup, params, coating, wear, modulus):
     if coating is not None:
         ctx.w_coat, ctx.u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
     ctx.c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
+    ctx.ideal_shear = float(params["ideal_shear_strength"])
+    from memstribo.physics import friction
+
+    ctx.peak_ratio = float(friction.peak_bond_force(1.0, 1.0, ctx.bond)) * ctx.bond  # start-up / kinetic, per bond
     ctx.humid = params["environment"] == "air"
     if ctx.humid:
         from memstribo.physics import capillary
@@ -138,8 +154,8 @@ def _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row
     r_ef, s1, s2 = kinematics["r_ef"], kinematics["s1"], kinematics["s2"]
     zone = None
     if ctx.humid and strip is None:  # the menisci's Laplace pressure inside the contact solve (docs/humidity.md)
-        zone = _capillary_zone(ctx.r_kelvin, ctx.theta_bare, ctx.theta_coat, s2, ctx.grid, ctx.w_adh, row,
-                               ctx.coating, ctx.wear, ctx.surface_tension)
+        zone = _capillary_zone(ctx.r_kelvin, ctx.theta_bare, ctx.theta_coat, _row_rolls(setup, kinematics, row)[1],
+                               ctx.grid, ctx.w_adh, row, ctx.coating, ctx.wear, ctx.surface_tension)
     if strip is not None:
         strip_pressure, strip_gap, strip_info = strip
         return strip_pressure[row], strip_gap[row], strip_info, zone  # one solve for all rows
@@ -166,13 +182,18 @@ def _record_solve(out, ctx, pressure, gap, info, n_rows_solved):
     out["vdw_edge"] += (np.minimum(gap[:, 0], gap[:, -1]) < ctx.params["vdw_cutoff"]) if ctx.gap_model else 0
     # in contact: the gap closed under a non-zero pressure (with the Maugis-Dugdale zone the pressure is
     # tensile, down to -sigma0, near the contact's edges; the zone outside has an open gap)
-    out["contact_width"] += ((gap <= 0.0) & (pressure != 0.0)).sum(axis=1) * dx / n_rows_solved
+    in_contact = ((gap <= 0.0) & (pressure != 0.0)).sum(axis=1)
+    out["contact_width"] += in_contact * dx / n_rows_solved
+    out["contact_elements"] += in_contact
+    if info.shape[1] > 6:  # elements at the hardness (the line solve's pressure cap, MODEL 7d)
+        out["plastic_elements"] += info[:, 6]
     out["max_pressure"] = np.maximum(out["max_pressure"], pressure.max(axis=1))
 
 
-def _flank_blocks(out, ctx, pressure, gap, kinematics):
+def _flank_blocks(out, ctx, pressure, gap, rolls):
     """The nanoblock lattices of both flanks on a row's contact: (k1, k2, per flank (x_blocks, x_atoms, loads,
-    atomic force, atomic compression, adhesive compression)) by the fixed-load structure model (3.4.2)."""
+    atomic force, atomic compression, adhesive compression, rigid mask)) by the fixed-load structure model (3.4.2).
+    ``rolls``: the row's (s1, s2, gear pitch scale) in its lattice registry (:func:`_row_rolls`)."""
     from memstribo.physics.nanoblock.mechanics import structure_fixed_load
 
     n_steps = pressure.shape[0]
@@ -195,30 +216,31 @@ def _flank_blocks(out, ctx, pressure, gap, kinematics):
         return values.reshape(x.shape)
 
     # lattices: pinion block k centred at sigma = (k + 1/2) w_adh -> x = s1 - sigma; gear: x = sigma - s2
-    s1, s2 = kinematics["s1"], kinematics["s2"]
+    s1, s2, scale = rolls
     k1 = _lattice(s1, w_adh, ctx.half)
     k2 = _lattice(s2, w_adh, ctx.half)
     x1 = s1[:, None] - (k1 + 0.5) * w_adh
     x2 = (k2 + 0.5) * w_adh - s2[:, None]
     flank_states = []
-    for x_blocks in (x1, x2):
+    for x_blocks, stretch in ((x1, 1.0), (x2, scale)):
         loads = footprint_load(x_blocks)
-        x_atoms = x_blocks[..., None] - ctx.offsets  # pinion: sigma increases -> x decreases; symmetric offsets
+        # pinion: sigma increases -> x decreases; symmetric offsets; the gear's pitch stretched by its turn
+        x_atoms = x_blocks[..., None] - ctx.offsets * stretch
         overlap_row = -local_gap(x_atoms)  # (steps, slots, m)
         overlap = np.repeat(overlap_row, m, axis=-1)  # m x m atomic blocks, rows across the width alike
         loaded = loads > 0
         atomic_force = np.zeros(overlap.shape)
         atomic_comp = np.zeros(overlap.shape)
         adhesive_comp = np.zeros(loads.shape)
+        rigid_mask = np.zeros(overlap.shape, dtype=bool)
         if loaded.any():
             state = structure_fixed_load(overlap[loaded][:, None, :], ctx.stiffness, loads[loaded])
             atomic_force[loaded] = state.atomic_force[:, 0, :]
             atomic_comp[loaded] = state.atomic_compression[:, 0, :]
             adhesive_comp[loaded] = state.adhesive_compression[:, 0]
-            rigid = np.zeros(loads.shape)
-            rigid[loaded] = np.asarray(state.rigid).reshape(int(loaded.sum()), -1).sum(axis=1)
-            out["rigid_atomic_blocks"] += rigid.sum(axis=1)
-        flank_states.append((x_blocks, x_atoms, loads, atomic_force, atomic_comp, adhesive_comp))
+            rigid_mask[loaded] = np.asarray(state.rigid).reshape(int(loaded.sum()), -1)
+            out["rigid_atomic_blocks"] += rigid_mask.sum(axis=(1, 2))
+        flank_states.append((x_blocks, x_atoms, loads, atomic_force, atomic_comp, adhesive_comp, rigid_mask))
     return k1, k2, flank_states
 
 
@@ -245,17 +267,24 @@ def _chemical_bonds(out, ctx, setup, flank_states, bare2, row):
     # all bonds break once per bond length of sliding (3.5): the force is that energy per bond length (3-1)
     out["f_chem"] += friction.friction_force(friction.bond_breaking_energy(chem, ctx.params["bond_energy"], bond, bond),
                                              bond)
+    # local limits (MODEL 7d): the bonds of pairs of which one atomic block is past the threshold strain
+    rigid = (flank_states[0][6][..., :m].reshape(n_steps, -1)[:, :, None]
+             | flank_states[1][6][..., :m].reshape(n_steps, -1)[:, None, :])
+    rigid_bonds = friction.chemical_bond_count(across, (overlap_len * rigid).sum(axis=(1, 2)), bond)
+    out["f_chem_rigid"] += friction.friction_force(
+        friction.bond_breaking_energy(rigid_bonds, ctx.params["bond_energy"], bond, bond), bond)
 
 
-def _vdw_and_menisci(out, ctx, gap, info, zone, kinematics, row):
+def _vdw_and_menisci(out, ctx, gap, info, zone, rolls, row):
     """vdW bonds (3-12) over the adhesive layer and, in humid air, the menisci of a row; returns (the share of each
-    element inside the layer, w12 at each element [J/m^2], the pinion block at each element) for the pull-off."""
+    element inside the layer, w12 at each element [J/m^2], the pinion block at each element) for the pull-off.
+    ``rolls``: the row's roll coordinates in its lattice registry (:func:`_row_rolls`)."""
     from memstribo.physics import friction
 
     params, grid, dx, w_adh, bond = ctx.params, ctx.grid, ctx.dx, ctx.w_adh, ctx.bond
     coating = ctx.coating
-    k1_at_x = np.floor((kinematics["s1"][:, None] - grid[None, :]) / w_adh).astype(int)  # pinion block per element
-    k2_at_x = np.floor((kinematics["s2"][:, None] + grid[None, :]) / w_adh).astype(int)
+    k1_at_x = np.floor((rolls[0][:, None] - grid[None, :]) / w_adh).astype(int)  # pinion block per element
+    k2_at_x = np.floor((rolls[1][:, None] + grid[None, :]) / w_adh).astype(int)
     bare_x = ctx.gear_bare(k2_at_x, row)
     # vdW: the share of a block's contact energy at the local gap (MODEL 7c), or the thesis's band
     inside = vdw_gap_factor(gap, params["cutoff_distance"], params["vdw_cutoff"]) if ctx.gap_model \
@@ -265,8 +294,13 @@ def _vdw_and_menisci(out, ctx, gap, info, zone, kinematics, row):
     w_x = np.where(bare_x, ctx.w_si, ctx.w_coat) if coating is not None else ctx.w_si
     n_vdw = friction.vdw_bond_count(w_adh, dx, bond) * inside  # (3-12), bonds per element
     out["vdw_bonds"] += n_vdw.sum(axis=1)
-    out["f_vdw"] += friction.friction_force(
-        friction.bond_breaking_energy(n_vdw, u_vdw_x, bond, bond).sum(axis=1), bond)
+    per_element = friction.friction_force(friction.bond_breaking_energy(n_vdw, u_vdw_x, bond, bond), bond)
+    out["f_vdw"] += per_element.sum(axis=1)
+    # local limits (MODEL 7d): an element's bonds transmit at most the ideal shear strength over its area
+    strongest = ctx.ideal_shear * w_adh * dx
+    out["f_vdw_capped"] += np.minimum(per_element, strongest).sum(axis=1)
+    out["f_vdw_over"] += np.where(per_element > strongest, per_element, 0.0).sum(axis=1)
+    out["f_vdw_static_capped"] += np.minimum(ctx.peak_ratio * per_element, strongest).sum(axis=1)
     if ctx.humid:  # capillary menisci where the gap is below the condensation height (docs/humidity.md)
         _menisci(out, ctx, gap, info, zone, bare_x)
     return inside, w_x, k1_at_x
@@ -295,7 +329,7 @@ def _interlocking_energy(out, ctx, lattices, flank_states, sliding_fraction):
     from memstribo.physics.nanoblock import mechanics
 
     e_el = np.zeros(sliding_fraction.size)
-    for (k, (_, _, _, _, comp_at, comp_adh)) in zip(lattices, flank_states):
+    for (k, (_, _, _, _, comp_at, comp_adh, _)) in zip(lattices, flank_states):
         e_el += _interlocking(k, comp_at, comp_adh, ctx.stiffness, mechanics.elastic_interlocking_energy)
     out["e_el"] += e_el * sliding_fraction
 

@@ -64,7 +64,13 @@ SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic",
                 "stiction_probability_ci", "stiction_probability_text",
                 "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95", "cof_mean_median",
                 "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median", "mesh_efficiency_p05",
-                "mesh_efficiency_p95", "per_realisation")
+                "mesh_efficiency_p95", "per_realisation", "startup_margin", "startup_stiction", "static_cof_max",
+                "stiction_mode", "stiction_margin_capped", "startup_margin_capped", "stiction_mode_capped",
+                "friction_share_rigid", "friction_share_overstrength", "plastic_fraction", "plastic_fraction_max",
+                "plastic_steps", "stiction_margin_uncapped", "startup_margin_uncapped", "cof_mean_uncapped",
+                "hardness", "window", "lattice_registry", "startup_stiction_probability", "startup_stiction_count",
+                "startup_stiction_probability_ci", "startup_stiction_probability_text", "startup_margin_median",
+                "startup_margin_p05", "startup_margin_p95")
 
 
 SUMMARY_UNITS = {key: quantity_unit(key) for key in SUMMARY_KEYS}
@@ -130,6 +136,13 @@ def resisting_force(positions, friction_force, first_contact, last_contact, base
     return total
 
 
+def _window_advice(params) -> str:
+    """What to do about a window too short: a set ``mesh_window`` stays as set, a sized one grew until memory."""
+    if params["mesh_window"] is not None:
+        return "mesh_window is set; unset it and the window sizes itself"
+    return "the window grew as far as the memory bound allows (use a coarser mesh_grid_spacing)"
+
+
 def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta) -> list[str]:
     """Physical limits and numerical trouble of a cycle, as sentences (MODEL 7c)."""
     warnings = []
@@ -142,18 +155,16 @@ def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converge
     exceeded = int((out["window_exceeded"] > 0).sum())
     if exceeded:
         warnings.append(f"the contact reached the ends of the {setup.grid.size * setup.grid_spacing * 1e6:.3g} um window "
-                        f"in {exceeded} step(s): raise mesh_window")
+                        f"in {exceeded} step(s): {_window_advice(params)}")
     if params["interface_model"] == "gap" and (out["vdw_edge"] > 0).any():
         warnings.append(f"the gap at the window's ends is below vdw_cutoff in {int((out['vdw_edge'] > 0).sum())} "
-                        "step(s): vdW beyond the window is missed; raise mesh_window")
+                        f"step(s): vdW beyond the window is missed; {_window_advice(params)}")
     above = int((out["max_pressure"] > params["elastic_limit_pressure"]).sum())
-    if above:
+    if above and not out["plastic_elements"].any():  # with plastic flow: the hardness cap's sentence (limits)
         warnings.append(f"the rough contact's peak pressure exceeds the elastic limit of silicon "
                         f"({params['elastic_limit_pressure'] / 1e9:.3g} GPa) in {above} step(s)")
-    rigid = int((out["rigid_atomic_blocks"] > 0).sum())
-    if rigid:
-        warnings.append(f"atomic blocks are past the threshold strain of the bilinear law "
-                        f"({params['threshold_strain']:g}) in {rigid} step(s): they carry load rigidly")
+    # atomic blocks past the threshold strain: one sentence for the cycle with what they do to the verdict
+    # (memstribo.simulations.mesh.limits.local_limits_warning, MODEL 7d)
     peak_shear = float(np.max(shear_stress)) if shear_stress.size else 0.0
     if peak_shear > params["ideal_shear_strength"]:
         warnings.append(f"the friction stress over the real contact reaches {peak_shear / 1e9:.3g} GPa, above the ideal "
@@ -232,7 +243,41 @@ def summarize(dataset) -> dict:
         "contact_adhesion": str(dataset.attrs["contact_adhesion"]),
         "mesh_contact": str(dataset.attrs.get("mesh_contact", "line")),
         "roughness_rows": str(dataset.attrs["roughness_rows"]),
+        **_limit_summary(dataset, f_t, margin),
         **json.loads(dataset.attrs.get("tooth_life", "{}")),  # root stress, fracture, temperature (MODEL §10)
         "fitted_constants": json.loads(dataset.attrs.get("fitted_constants", "[]")),  # with their fit conditions
         "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
     }
+
+
+def _limit_summary(dataset, f_t, margin) -> dict:
+    """The start-up verdict, the margins with the bond stress capped, the plastic fraction (MODEL 7d); empty for a
+    dataset written before them."""
+    if "startup_resisting_force" not in dataset:
+        return {}
+    startup = f_t - float(dataset["startup_resisting_force"].max())
+    running_capped = f_t - float(dataset["resisting_force_capped"].max())
+    startup_capped = f_t - float(dataset["startup_resisting_force_capped"].max())
+    plastic = np.asarray(dataset["plastic_fraction"])
+    contact = float(dataset.attrs.get("contact_elements", 0.0))
+
+    def mode(running, start):
+        return "running" if running < 0 else ("start-up" if start < 0 else "none")
+
+    summary = {
+        "startup_margin": startup, "startup_stiction": bool(startup < 0),
+        "static_cof_max": float(dataset["static_cof"].max()), "stiction_mode": mode(margin, startup),
+        "stiction_margin_capped": running_capped, "startup_margin_capped": startup_capped,
+        "stiction_mode_capped": mode(running_capped, startup_capped),
+        "friction_share_rigid": float(dataset.attrs["friction_share_rigid"]),
+        "friction_share_overstrength": float(dataset.attrs["friction_share_overstrength"]),
+        "plastic_fraction": float(dataset.attrs["plastic_elements"]) / contact if contact > 0 else 0.0,
+        "plastic_fraction_max": float(plastic.max()), "plastic_steps": int((plastic > 0).sum()),
+        "hardness": None if math.isnan(float(dataset.attrs["hardness"])) else float(dataset.attrs["hardness"]),
+        "window": float(dataset.attrs["window"]),
+        "lattice_registry": str(dataset.attrs["lattice_registry"]),
+    }
+    for key in ("stiction_margin_uncapped", "startup_margin_uncapped", "cof_mean_uncapped"):
+        if key in dataset.attrs:
+            summary[key] = float(dataset.attrs[key])
+    return summary
