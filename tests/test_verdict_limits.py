@@ -105,7 +105,7 @@ def test_local_limits_are_one_warning_with_the_capped_margins(default_cycle, par
     assert 0 < summary["friction_share_rigid"] <= summary["cof_chemical"] / summary["cof_mean"] + 1e-12
     assert summary["stiction_margin_capped"] >= summary["stiction_margin"]
     assert summary["startup_margin_capped"] >= summary["startup_margin"]
-    assert f"{summary['stiction_margin_capped'] * 1e6:.4g} uN" in about[0]
+    assert f"{summary['stiction_margin_capped'] * 1e6:.4g} µN" in about[0]
 
 
 # ----------------------------------------------------------------------------------------------- lattice registry

@@ -178,7 +178,7 @@ def run(args, params):
         + (" (synthetic: the thesis's scan is not published)" if dataset.attrs["roughness_synthetic"] else ""),
         f"  block loads: {dataset.attrs['block_load_variant']}",
         f"  {dataset.attrs['rows']} rows of nanoblocks across the face width; contact grid "
-        f"{dataset.attrs['grid_spacing'] * 1e9:.3g} nm over a {dataset.attrs['window'] * 1e6:.3g} Âµm window",
+        f"{dataset.attrs['grid_spacing'] * 1e9:.3g} nm over a {dataset.attrs['window'] * 1e6:.3g} µm window",
         f"  Dundurs beta {dataset.attrs['dundurs_beta']:.3g}: "
         + ("identical materials, one pass is exact" if dataset.attrs["dundurs_beta"] == 0
            else f"F_t/F_f iteration, {dataset.attrs['friction_passes']} passes"),

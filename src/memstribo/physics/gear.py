@@ -224,8 +224,8 @@ def last_contact_point(base_radius_pinion, tip_radius_pinion, pressure_angle):
 
 def _check_tip_above_base(tip_radius, base_radius, name):
     if np.any(np.asarray(tip_radius) <= np.asarray(base_radius)):
-        raise InputError(f"the {name}'s tip radius ({np.max(tip_radius) * 1e6:.4g} Âµm) is not above its base radius "
-                         f"({np.max(base_radius) * 1e6:.4g} Âµm): the tooth has no involute flank to make contact.")
+        raise InputError(f"the {name}'s tip radius ({np.max(tip_radius) * 1e6:.4g} µm) is not above its base radius "
+                         f"({np.max(base_radius) * 1e6:.4g} µm): the tooth has no involute flank to make contact.")
 
 
 def contact_ratio(first_contact, last_contact, base_pitch):
@@ -506,8 +506,8 @@ class GearPair:
         for name, tip, base in (("pinion", self.tip_radii[0], self.base_radii[0]),
                                 ("gear", self.tip_radii[1], self.base_radii[1])):
             if tip <= base:
-                raise InputError(f"the {name}'s tip radius ({tip * 1e6:.4g} Âµm) is not above its base radius "
-                                 f"({base * 1e6:.4g} Âµm): no involute flank. Raise the addendum or lower the "
+                raise InputError(f"the {name}'s tip radius ({tip * 1e6:.4g} µm) is not above its base radius "
+                                 f"({base * 1e6:.4g} µm): no involute flank. Raise the addendum or lower the "
                                  f"pressure angle.")
         for name, thickness in zip(("pinion", "gear"), self.tip_thickness):
             if not thickness > 0.0:
@@ -518,9 +518,9 @@ class GearPair:
                                  f"({math.degrees(self.pressure_angle):.4g}°).")
         r1, r2 = self.base_radii * math.tan(self.pressure_angle)
         if -self.first_contact > r1 or self.last_contact > r2:
-            raise InputError(f"interference: the path of contact ({self.first_contact * 1e6:.4g} Âµm to "
-                             f"{self.last_contact * 1e6:.4g} Âµm about the pitch point) runs past the base-circle "
-                             f"tangency points (-{r1 * 1e6:.4g} Âµm, {r2 * 1e6:.4g} Âµm).")
+            raise InputError(f"interference: the path of contact ({self.first_contact * 1e6:.4g} µm to "
+                             f"{self.last_contact * 1e6:.4g} µm about the pitch point) runs past the base-circle "
+                             f"tangency points (-{r1 * 1e6:.4g} µm, {r2 * 1e6:.4g} µm).")
         z_min = minimum_teeth_without_undercut(self.pressure_angle, self.addendum_coefficient)
         for name, teeth in (("pinion", self.teeth_pinion), ("gear", self.teeth_gear)):
             if teeth < z_min:

@@ -339,8 +339,8 @@ def row_roughness(roughness, params, rows: int, length: float, realisation: int 
                             ("the measured profile for the first pinion row, " if measured else "")
                             + f"{n_lines - measured} lines synthesised from its power spectrum (random phases, "
                             f"realisation {realisation})"
-                            + ("" if usable else f"; the scan ({(roughness.x[-1] - roughness.x[0]) * 1e6:.3g} Âµm) "
-                               f"is shorter than the {length * 1e6:.3g} Âµm of flank travel"),
+                            + ("" if usable else f"; the scan ({(roughness.x[-1] - roughness.x[0]) * 1e6:.3g} µm) "
+                               f"is shorter than the {length * 1e6:.3g} µm of flank travel"),
                             roughness.name, roughness.source, bool(roughness.synthetic))
     if hasattr(roughness, "line_scans"):
         scans = list(roughness.line_scans())
@@ -364,7 +364,7 @@ def row_roughness(roughness, params, rows: int, length: float, realisation: int 
         note = (f"{measured} measured scan lines ({stride} map rows apart, one nanoblock width) and "
                 f"{n_lines - measured} lines synthesised from the map's power spectrum (realisation {realisation})")
         if not long_enough:
-            note += f"; the map's lines are shorter than the {length * 1e6:.3g} Âµm of flank travel"
+            note += f"; the map's lines are shorter than the {length * 1e6:.3g} µm of flank travel"
         return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured, note, name, source,
                             False)
     raise InputError(f"roughness must be None, 'thesis', a file path, a Profile or a SurfaceMap; got "

@@ -104,8 +104,8 @@ def local_limits_warning(params, out, limits, margins) -> str | None:
             f"transmits U_chem / D_chem^3 = {limits['bond_stress'] / 1e9:.3g} GPa, "
             f"{limits['peak_ratio'] * limits['bond_stress'] / 1e9:.3g} GPa at start-up); with every bond "
             f"population's shear stress capped at that strength the stiction margin is "
-            f"{margins['running_capped'] * 1e6:.4g} ÂµN (uncapped {margins['running'] * 1e6:.4g} ÂµN) and the start-up "
-            f"margin {margins['startup_capped'] * 1e6:.4g} ÂµN (uncapped {margins['startup'] * 1e6:.4g} ÂµN): {change}")
+            f"{margins['running_capped'] * 1e6:.4g} µN (uncapped {margins['running'] * 1e6:.4g} µN) and the start-up "
+            f"margin {margins['startup_capped'] * 1e6:.4g} µN (uncapped {margins['startup'] * 1e6:.4g} µN): {change}")
 
 
 def apply_limits(params, setup, cycle, verdict) -> None:

@@ -254,15 +254,15 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x", window=N
     hertz_peak = hertz.peak_pressure
     if hertz_peak.max() > params["elastic_limit_pressure"]:
         i = int(np.argmax(hertz_peak))
-        raise InputError(f"the tooth load ({load[i] * 1e6:.4g} ÂµN, load case '{params['load_case']}') is beyond "
+        raise InputError(f"the tooth load ({load[i] * 1e6:.4g} µN, load case '{params['load_case']}') is beyond "
                          f"the elastic range: the Hertz peak pressure reaches {hertz_peak[i] / 1e9:.3g} GPa at c = "
-                         f"{positions[i] * 1e6:.3g} Âµm, above the elastic limit of silicon "
+                         f"{positions[i] * 1e6:.3g} µm, above the elastic limit of silicon "
                          f"({params['elastic_limit_pressure'] / 1e9:.3g} GPa, elastic_limit_pressure); the elastic "
                          "model of the thesis no longer holds.")
     ratio = float(np.max(hertz.half_width / pair.effective_radius(positions)))
     if ratio > HERTZ_RATIO_LIMIT:  # a contact as wide as the teeth's curvature: no half-space, no Hertz, no answer
         raise InputError(
-            f"the contact of the teeth would be {a_max * 1e6:.3g} Âµm wide on each side, {ratio:.2g} times their radius "
+            f"the contact of the teeth would be {a_max * 1e6:.3g} µm wide on each side, {ratio:.2g} times their radius "
             f"of relative curvature (E* = {modulus / 1e9:.3g} GPa under {float(np.max(load)) * 1e3:.3g} mN): the "
             f"elastic half-space contact model needs a half-width well below the radius (allowed: a/R_ef <= "
             f"{HERTZ_RATIO_LIMIT:g}). A counter body this soft, or this load, is outside the model; use a stiffer "
@@ -290,8 +290,8 @@ def _prepare(params, roughness, steps, realisation=0, sliding_axis="x", window=N
         for scan in (scan_p, scan_g):
             span = float(scan.x[-1] - scan.x[0])
             if span < needed:  # pragma: no cover - row_roughness synthesises long enough lines
-                raise InputError(f"roughness line '{scan.name}' is {span * 1e6:.4g} Âµm long, but the flank travel "
-                                 f"needs {needed * 1e6:.4g} Âµm.")
+                raise InputError(f"roughness line '{scan.name}' is {span * 1e6:.4g} µm long, but the flank travel "
+                                 f"needs {needed * 1e6:.4g} µm.")
         # each line's middle sits at the middle of its flank's travel (independent of the window)
         zp = rough.level_profile(scan_p)
         pinion.append((zp.x - 0.5 * (zp.x[0] + zp.x[-1]) + 0.5 * (lo1 + hi1), zp.z))

@@ -144,7 +144,7 @@ def critical_humidity(points) -> dict:
         low_note = ""
     if value is None:
         note = (f"no stiction in the swept range RH {low:g}-{high:g}: the stiction margin stays positive (smallest "
-                f"{margin.min() * 1e6:.4g} ÂµN at RH {humidity[int(np.argmin(margin))]:g}); the critical humidity, if "
+                f"{margin.min() * 1e6:.4g} µN at RH {humidity[int(np.argmin(margin))]:g}); the critical humidity, if "
                 "any, lies above the range")
     elif value == low and margin[0] <= 0.0:
         note = (f"stiction already at the lowest swept humidity RH {low:g}: the critical humidity is at or below it "

@@ -154,7 +154,7 @@ def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converge
         warnings.append(f"the contact solve did not converge in {unconverged} step(s) (flagged in contact_converged)")
     exceeded = int((out["window_exceeded"] > 0).sum())
     if exceeded:
-        warnings.append(f"the contact reached the ends of the {setup.grid.size * setup.grid_spacing * 1e6:.3g} Âµm window "
+        warnings.append(f"the contact reached the ends of the {setup.grid.size * setup.grid_spacing * 1e6:.3g} µm window "
                         f"in {exceeded} step(s): {_window_advice(params)}")
     if params["interface_model"] == "gap" and (out["vdw_edge"] > 0).any():
         warnings.append(f"the gap at the window's ends is below vdw_cutoff in {int((out['vdw_edge'] > 0).sum())} "
