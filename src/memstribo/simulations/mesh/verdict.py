@@ -45,9 +45,21 @@ def cycle_verdict(params, setup, cycle) -> dict:
     v["shear_stress"] = np.divide(friction_avg, contact_area, out=np.zeros_like(friction_avg), where=contact_area > 0)
     beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
                         params["counter_poisson_ratio"])
-    v["warnings"] = _warnings(params, out, setup, v["shear_stress"], v["efficiency"], cycle["converged"],
-                              cycle["passes"], beta)
+    v["undetermined"] = _undetermined(params, cycle, beta)
+    v["warnings"] = _warnings(params, out, setup, v["shear_stress"], v["efficiency"], v["undetermined"])
     return v
+
+
+def _undetermined(params, cycle, beta) -> str:
+    """Why the cycle gives no verdict (an unsettled friction fixed point of dissimilar teeth), or "" (issue #25)."""
+    if cycle["converged"]:
+        return ""
+    changes = cycle.get("changes")
+    by = (f": between the last two passes the margin changes by {changes[0] * 100:.2g} % of itself and the mean COF by "
+          f"{changes[1] * 100:.2g} %" if changes else "")
+    return (f"the F_t/F_f fixed point of dissimilar materials (Dundurs beta {beta:.3g}) did not settle within "
+            f"mesh_friction_passes = {int(params['mesh_friction_passes'])} passes{by} (goal < 0.1 %): the verdict is "
+            "undetermined, no COF or stiction flag is a result; raise mesh_friction_passes")
 
 
 #: The keys of the summary (``memstribo mesh --json``) and of the ensemble verdict, with their units from the
@@ -143,7 +155,7 @@ def _window_advice(params) -> str:
     return "the window grew as far as the memory bound allows (use a coarser mesh_grid_spacing)"
 
 
-def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta) -> list[str]:
+def _warnings(params, out, setup, shear_stress, efficiency, undetermined="") -> list[str]:
     """Physical limits and numerical trouble of a cycle, as sentences (MODEL 7c)."""
     warnings = []
     if setup.hertz_width_ratio > 0.2:
@@ -170,9 +182,8 @@ def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converge
         warnings.append(f"the friction stress over the real contact reaches {peak_shear / 1e9:.3g} GPa, above the ideal "
                         f"shear strength of silicon ({params['ideal_shear_strength'] / 1e9:.3g} GPa): the teeth "
                         "would shear and wear rather than slide")
-    if not fixed_point_converged:
-        warnings.append(f"the F_t/F_f fixed point of dissimilar materials (Dundurs beta {beta:.3g}) did not converge "
-                        f"in {passes} passes: the friction is not reliable")
+    if undetermined:
+        warnings.append(undetermined)
     if (efficiency <= 0).any():
         warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
                         "step(s): friction takes more power than the drive supplies there")
@@ -193,7 +204,9 @@ def summarize(dataset) -> dict:
     ``integral (F_N + F_adh) ds`` (3-7 over the cycle), and its split by mechanism
     (``cof_chemical``, ``cof_vdw``, ``cof_elastic``) is the same ratio per mechanism, so the
     parts add up to ``cof_mean`` exactly. The stiction verdict: ``resisting_force_max`` is the
-    largest R(c), ``stiction_margin`` = ``tangential_force`` - ``resisting_force_max`` (MODEL 7b).
+    largest R(c), ``stiction_margin`` = ``tangential_force`` - ``resisting_force_max`` (MODEL 7b). ``verdict`` is
+    "stiction", "no stiction" or "undetermined" (an unsettled fixed point of dissimilar teeth: ``stiction`` is then
+    None and ``undetermined_reason`` says why; the numbers are the last pass's, not a result).
     """
     import json
 
@@ -211,7 +224,10 @@ def summarize(dataset) -> dict:
     f_t = float(dataset.attrs["tangential_force_total"])
     margin = f_t - float(resisting.max())
     efficiency = np.asarray(dataset["mesh_efficiency"])
+    undetermined = str(dataset.attrs.get("undetermined_reason", ""))
     return {
+        "verdict": "undetermined" if undetermined else ("stiction" if margin < 0 else "no stiction"),
+        "undetermined_reason": undetermined,
         "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split.get("cof_capillary", 0.0),
         "cof_max": float(dataset["cof"].max()),
         **split,
@@ -222,7 +238,7 @@ def summarize(dataset) -> dict:
         "normal_force_max": float(dataset["normal_force"].max()),
         "normal_force_total": float(dataset.attrs["normal_force_total"]),
         "tangential_force": f_t,
-        "stiction": bool(margin < 0),
+        "stiction": None if undetermined else bool(margin < 0),
         "stiction_margin": margin,
         "mesh_efficiency": float(dataset.attrs["mesh_efficiency_mean"]),
         "mesh_efficiency_min": float(efficiency.min()),

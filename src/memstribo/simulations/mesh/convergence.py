@@ -1,0 +1,215 @@
+"""Convergence of a meshing cycle on what it decides: the self-refining cycle (MODEL 7d, issue #25).
+
+A verdict must not depend on the numerics. The cycle is compared with itself at twice the steps
+(``2 N - 1``: the same positions and one more between each pair) and, once the steps hold, at
+twice the contact grid's resolution (``mesh_elements_across_contact`` doubled, or
+``mesh_grid_spacing`` halved where it is set). A comparison passes when the stiction margin
+changes by less than 2 % of |margin| and the mean COF by less than 2 % of itself (MODEL 7d; the
+former check divided the margin's change by F_t, which let a margin drift by 8-14 % over 4x the
+steps pass). Each failed comparison refines once more (steps first, then the grid), up to the
+caps ``mesh_step_refinements`` and ``mesh_grid_refinements``; the result is the finest cycle
+computed, and a cycle that does not converge within its caps says so (``converged: false`` and a
+warning naming what did not converge and by how much), never fails.
+
+The reported adhesion force is checked on the grid too (< 5 % on grid halving, MODEL 7d); it
+does not decide the verdict (it enters the COF, which is checked), so it is reported as resolved
+or not (``adhesion_force_resolved``), and does not refine the grid by itself.
+"""
+
+from __future__ import annotations
+
+from memstribo.errors import InputError
+from memstribo.references import cites
+
+__all__ = ["TOLERANCE", "ADHESION_TOLERANCE", "relative_change", "compare_cycles", "refined_cycle",
+           "settings_of", "CONVERGENCE_KEYS"]
+
+#: Largest relative change of the margin (of |margin|) and of the mean COF (of itself) that counts as converged.
+TOLERANCE = 0.02
+#: Largest relative change of the adhesion force on grid halving that counts as resolved (MODEL 7d).
+ADHESION_TOLERANCE = 0.05
+
+#: The keys :func:`refined_cycle` adds to a cycle's summary.
+CONVERGENCE_KEYS = ("converged", "step_converged", "step_change_margin", "step_change_margin_ft", "step_change_cof",
+                    "steps_checked", "grid_converged", "grid_change_margin", "grid_change_cof",
+                    "grid_change_adhesion", "elements_checked", "adhesion_force_resolved",
+                    "elements_across_contact", "refinement")
+
+
+def relative_change(new: float, old: float) -> float:
+    """|new - old| / |old| [-]; infinite where old is 0 and new is not (nothing to be relative to)."""
+    change = abs(float(new) - float(old))
+    scale = abs(float(old))
+    if scale > 0.0:
+        return change / scale
+    return 0.0 if change == 0.0 else float("inf")
+
+
+def compare_cycles(fine: dict, coarse: dict) -> dict:
+    """The changes between two cycles' summaries (:func:`memstribo.simulations.mesh.summarize`).
+
+    Returns
+    -------
+    dict
+        ``margin`` (of |margin| of ``coarse``), ``margin_ft`` (of F_t), ``cof`` (of the coarse mean COF),
+        ``adhesion`` (of the coarse mean adhesion force), all [-], and ``passed`` (margin and COF below
+        :data:`TOLERANCE`).
+    """
+    margin = relative_change(fine["stiction_margin"], coarse["stiction_margin"])
+    margin_ft = abs(fine["stiction_margin"] - coarse["stiction_margin"]) / max(abs(coarse["tangential_force"]), 1e-300)
+    cof = relative_change(fine["cof_mean"], coarse["cof_mean"])
+    adhesion = relative_change(fine["adhesion_force_mean"], coarse["adhesion_force_mean"])
+    return {"margin": margin, "margin_ft": margin_ft, "cof": cof, "adhesion": adhesion,
+            "passed": bool(margin < TOLERANCE and cof < TOLERANCE)}
+
+
+def _elements_across(params) -> int:
+    return int(params["mesh_elements_across_contact"])
+
+
+def _finer_grid(params):
+    """The parameter set with twice the grid's resolution (the spacing halved where it is set)."""
+    if params["mesh_grid_spacing"] is not None:
+        return params.updated({"mesh_grid_spacing": 0.5 * float(params["mesh_grid_spacing"])}, origin="grid check")
+    return params.updated({"mesh_elements_across_contact": 2 * _elements_across(params)}, origin="grid check")
+
+
+def settings_of(params, convergence: dict):
+    """(params, steps) of the cycle :func:`refined_cycle` reported: the settings an ensemble should use."""
+    steps = int(convergence["steps"])
+    if params["mesh_grid_spacing"] is not None:
+        spacing = convergence.get("grid_spacing")
+        return (params.updated({"mesh_grid_spacing": spacing}, origin="refinement") if spacing else params), steps
+    return params.updated({"mesh_elements_across_contact": int(convergence["elements_across_contact"])},
+                          origin="refinement"), steps
+
+
+def _percent(value: float) -> str:
+    return "inf" if value == float("inf") else f"{value * 100:.2g} %"
+
+
+@cites("model")
+def refined_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, realisation=0, progress=False,
+                  step_refinements=None, grid_refinements=None, simulate=None, summarize=None):
+    """The meshing cycle refined in steps, then in grid, until the margin and the mean COF hold (MODEL 7d).
+
+    Parameters
+    ----------
+    params, roughness, steps, coating, wear, realisation, progress
+        As for :func:`memstribo.simulations.mesh.simulate_mesh`.
+    step_refinements, grid_refinements : int, optional
+        Most comparisons at doubled steps and at a doubled grid resolution (default: the parameters
+        ``mesh_step_refinements`` and ``mesh_grid_refinements``, 0 to 8); 0 skips that check.
+    simulate, summarize : callable, optional
+        The cycle and its summary (default: those of :mod:`memstribo.simulations.mesh`).
+
+    Returns
+    -------
+    (xarray.Dataset, dict)
+        The finest cycle computed and its summary, with the keys of :data:`CONVERGENCE_KEYS`:
+        ``converged`` (both checks passed), ``step_converged``, ``step_change_margin`` (of |margin|),
+        ``step_change_margin_ft`` (the same change of F_t, the former figure), ``step_change_cof``,
+        ``steps_checked`` (steps of the finer cycle of the last step comparison), ``grid_converged``,
+        ``grid_change_margin``, ``grid_change_cof``, ``grid_change_adhesion``, ``elements_checked``
+        (elements across 2a of the finer grid of the last grid comparison), ``adhesion_force_resolved``
+        (its change below 5 %), ``elements_across_contact``, ``steps`` and ``grid_spacing`` [m] of the
+        result, and ``refinement`` (one sentence per comparison). A skipped check leaves its keys None.
+        A cycle that does not converge within the caps adds a warning to ``warnings`` (and exits 0).
+
+    Raises
+    ------
+    InputError
+        A cap outside 0 to 8.
+    """
+    if simulate is None or summarize is None:
+        from memstribo.simulations import mesh as _mesh
+
+        simulate = simulate or _mesh.simulate_mesh
+        summarize = summarize or _mesh.summarize
+    caps = []
+    for name, value in (("mesh_step_refinements", step_refinements), ("mesh_grid_refinements", grid_refinements)):
+        value = int(params[name] if value is None else value)
+        if not 0 <= value <= 8:
+            raise InputError(f"{name} must be a whole number from 0 to 8 (each one doubles the cost of the finer "
+                             f"cycle), got {value}.")
+        caps.append(value)
+    steps = int(params["mesh_steps"] if steps is None else steps)
+
+    def run(p, n):
+        dataset = simulate(p, roughness, steps=n, coating=coating, wear=wear, realisation=realisation,
+                           progress=progress)
+        return dataset, summarize(dataset)
+
+    state = {"params": params, "steps": steps, "record": {key: None for key in CONVERGENCE_KEYS},
+             "sentences": [], "warnings": []}
+    state["dataset"], state["summary"] = run(params, steps)
+    _refine_steps(state, run, caps[0])
+    _refine_grid(state, run, caps[1])
+    record = state["record"]
+    checks = [record[key] for key, cap in (("step_converged", caps[0]), ("grid_converged", caps[1])) if cap]
+    record["converged"] = bool(checks) and all(checks)
+    record["elements_across_contact"] = _elements_across(state["params"])
+    record["refinement"] = state["sentences"]
+    summary = dict(state["summary"])
+    summary.update(record)
+    summary["steps"] = int(state["steps"])
+    summary["grid_spacing"] = float(state["dataset"].attrs["grid_spacing"])
+    summary["warnings"] = list(summary.get("warnings", [])) + state["warnings"]
+    return state["dataset"], summary
+
+
+def _refine_steps(state, run, cap):
+    """Steps first: N -> 2N - 1 (the same positions and one between each pair) until a comparison passes."""
+    record = state["record"]
+    for _ in range(cap):
+        steps = state["steps"]
+        finer = 2 * steps - 1
+        dataset, fine = run(state["params"], finer)
+        change = compare_cycles(fine, state["summary"])
+        state["sentences"].append(f"steps {steps} -> {finer}: margin {_percent(change['margin'])} of |margin|, mean "
+                                  f"COF {_percent(change['cof'])}")
+        record.update(step_converged=change["passed"], step_change_margin=change["margin"],
+                      step_change_margin_ft=change["margin_ft"], step_change_cof=change["cof"], steps_checked=finer)
+        state.update(dataset=dataset, summary=fine, steps=finer)
+        if change["passed"]:
+            return
+    if cap:
+        state["warnings"].append(
+            f"the cycle did not converge in the steps within mesh_step_refinements = {cap}: at "
+            f"{record['steps_checked']} steps the margin still changes by {_percent(record['step_change_margin'])} "
+            f"of |margin| and the mean COF by {_percent(record['step_change_cof'])} (goal < {TOLERANCE:.0%}); raise "
+            "mesh_steps or mesh_step_refinements")
+
+
+def _refine_grid(state, run, cap):
+    """Then the grid: twice the resolution at the steps reached, until a comparison passes."""
+    record = state["record"]
+    for _ in range(cap):
+        current = state["params"]
+        finer = _finer_grid(current)
+        dataset, fine = run(finer, state["steps"])
+        change = compare_cycles(fine, state["summary"])
+        what = (f"grid {_elements_across(current)} -> {_elements_across(finer)} elements across 2a"
+                if current["mesh_grid_spacing"] is None else
+                f"grid spacing {current['mesh_grid_spacing']:.3g} -> {finer['mesh_grid_spacing']:.3g} m")
+        state["sentences"].append(f"{what}: margin {_percent(change['margin'])} of |margin|, mean COF "
+                                  f"{_percent(change['cof'])}, adhesion force {_percent(change['adhesion'])}")
+        record.update(grid_converged=change["passed"], grid_change_margin=change["margin"],
+                      grid_change_cof=change["cof"], grid_change_adhesion=change["adhesion"],
+                      elements_checked=_elements_across(finer),
+                      adhesion_force_resolved=bool(change["adhesion"] < ADHESION_TOLERANCE))
+        state.update(dataset=dataset, summary=fine, params=finer)
+        if change["passed"]:
+            break
+    if cap and not record["grid_converged"]:
+        state["warnings"].append(
+            f"the cycle did not converge in the grid within mesh_grid_refinements = {cap}: at "
+            f"{record['elements_checked']} elements across the Hertz width the margin still changes by "
+            f"{_percent(record['grid_change_margin'])} of |margin| and the mean COF by "
+            f"{_percent(record['grid_change_cof'])} (goal < {TOLERANCE:.0%}); raise mesh_elements_across_contact or "
+            "mesh_grid_refinements")
+    if cap and record["adhesion_force_resolved"] is False:
+        state["warnings"].append(
+            f"the adhesion force is not resolved by the grid: it changes by {_percent(record['grid_change_adhesion'])} "
+            f"on the last grid halving (goal < {ADHESION_TOLERANCE:.0%}); raise mesh_elements_across_contact where "
+            "it is the answer")
