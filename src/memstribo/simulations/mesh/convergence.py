@@ -21,7 +21,8 @@ from __future__ import annotations
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["TOLERANCE", "ADHESION_TOLERANCE", "relative_change", "compare_cycles", "refined_cycle",
+__all__ = ["TOLERANCE", "ADHESION_TOLERANCE", "relative_change", "compare_cycles", "refined_cycle", "check_cycle",
+           "CHECK_KEYS",
            "settings_of", "CONVERGENCE_KEYS"]
 
 #: Largest relative change of the margin (of |margin|) and of the mean COF (of itself) that counts as converged.
@@ -213,3 +214,35 @@ def _refine_grid(state, run, cap):
             f"the adhesion force is not resolved by the grid: it changes by {_percent(record['grid_change_adhesion'])} "
             f"on the last grid halving (goal < {ADHESION_TOLERANCE:.0%}); raise mesh_elements_across_contact where "
             "it is the answer")
+
+
+#: The keys :func:`check_cycle` gives a sweep or map point.
+CHECK_KEYS = ("converged", "step_change_margin", "step_change_cof", "grid_change_margin", "grid_change_cof")
+
+
+@cites("model")
+def check_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, realisation=0, baseline=None,
+                simulate=None, summarize=None) -> dict:
+    """Whether a sweep or map point's cycle is converged: one comparison at twice the steps and one at twice the grid.
+
+    The check of :func:`refined_cycle` without its refinement (a point of a sweep or a map keeps its settings, so
+    that its neighbours are comparable, and says whether they hold): ``converged`` is true when the margin (of
+    |margin|) and the mean COF change by less than 2 % at ``2 N - 1`` steps and at a doubled grid resolution
+    (MODEL 7d). Parameters as for :func:`refined_cycle`; ``baseline`` is the point's own summary where already
+    computed. Returns the keys of :data:`CHECK_KEYS` (changes [-]).
+    """
+    if simulate is None or summarize is None:
+        from memstribo.simulations import mesh as _mesh
+
+        simulate = simulate or _mesh.simulate_mesh
+        summarize = summarize or _mesh.summarize
+    steps = int(params["mesh_steps"] if steps is None else steps)
+
+    def run(p, n):
+        return summarize(simulate(p, roughness, steps=n, coating=coating, wear=wear, realisation=realisation))
+
+    baseline = run(params, steps) if baseline is None else baseline
+    step = compare_cycles(run(params, 2 * steps - 1), baseline)
+    grid = compare_cycles(run(_finer_grid(params), steps), baseline)
+    return {"converged": bool(step["passed"] and grid["passed"]), "step_change_margin": step["margin"],
+            "step_change_cof": step["cof"], "grid_change_margin": grid["margin"], "grid_change_cof": grid["cof"]}
