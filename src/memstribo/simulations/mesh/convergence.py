@@ -20,13 +20,12 @@ from __future__ import annotations
 
 from memstribo.errors import InputError
 from memstribo.references import cites
+from memstribo.simulations.mesh.verdict import TOLERANCE, compare_cycles, relative_change
 
 __all__ = ["TOLERANCE", "ADHESION_TOLERANCE", "relative_change", "compare_cycles", "refined_cycle", "check_cycle",
            "CHECK_KEYS",
            "settings_of", "CONVERGENCE_KEYS"]
 
-#: Largest relative change of the margin (of |margin|) and of the mean COF (of itself) that counts as converged.
-TOLERANCE = 0.02
 #: Largest relative change of the adhesion force on grid halving that counts as resolved (MODEL 7d).
 ADHESION_TOLERANCE = 0.05
 
@@ -35,33 +34,6 @@ CONVERGENCE_KEYS = ("converged", "step_converged", "step_change_margin", "step_c
                     "steps_checked", "grid_converged", "grid_change_margin", "grid_change_cof",
                     "grid_change_adhesion", "elements_checked", "adhesion_force_resolved",
                     "elements_across_contact", "refinement")
-
-
-def relative_change(new: float, old: float) -> float:
-    """|new - old| / |old| [-]; infinite where old is 0 and new is not (nothing to be relative to)."""
-    change = abs(float(new) - float(old))
-    scale = abs(float(old))
-    if scale > 0.0:
-        return change / scale
-    return 0.0 if change == 0.0 else float("inf")
-
-
-def compare_cycles(fine: dict, coarse: dict) -> dict:
-    """The changes between two cycles' summaries (:func:`memstribo.simulations.mesh.summarize`).
-
-    Returns
-    -------
-    dict
-        ``margin`` (of |margin| of ``coarse``), ``margin_ft`` (of F_t), ``cof`` (of the coarse mean COF),
-        ``adhesion`` (of the coarse mean adhesion force), all [-], and ``passed`` (margin and COF below
-        :data:`TOLERANCE`).
-    """
-    margin = relative_change(fine["stiction_margin"], coarse["stiction_margin"])
-    margin_ft = abs(fine["stiction_margin"] - coarse["stiction_margin"]) / max(abs(coarse["tangential_force"]), 1e-300)
-    cof = relative_change(fine["cof_mean"], coarse["cof_mean"])
-    adhesion = relative_change(fine["adhesion_force_mean"], coarse["adhesion_force_mean"])
-    return {"margin": margin, "margin_ft": margin_ft, "cof": cof, "adhesion": adhesion,
-            "passed": bool(margin < TOLERANCE and cof < TOLERANCE)}
 
 
 def _elements_across(params) -> int:
@@ -123,10 +95,11 @@ def refined_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         A cap outside 0 to 8.
     """
     if simulate is None or summarize is None:
-        from memstribo.simulations import mesh as _mesh
+        from memstribo.simulations.mesh.cycle import simulate_mesh
+        from memstribo.simulations.mesh.verdict import summarize as summary_of
 
-        simulate = simulate or _mesh.simulate_mesh
-        summarize = summarize or _mesh.summarize
+        simulate = simulate or simulate_mesh
+        summarize = summarize or summary_of
     caps = []
     for name, value in (("mesh_step_refinements", step_refinements), ("mesh_grid_refinements", grid_refinements)):
         value = int(params[name] if value is None else value)
@@ -232,10 +205,11 @@ def check_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, r
     computed. Returns the keys of :data:`CHECK_KEYS` (changes [-]).
     """
     if simulate is None or summarize is None:
-        from memstribo.simulations import mesh as _mesh
+        from memstribo.simulations.mesh.cycle import simulate_mesh
+        from memstribo.simulations.mesh.verdict import summarize as summary_of
 
-        simulate = simulate or _mesh.simulate_mesh
-        summarize = summarize or _mesh.summarize
+        simulate = simulate or simulate_mesh
+        summarize = summarize or summary_of
     steps = int(params["mesh_steps"] if steps is None else steps)
 
     def run(p, n):

@@ -11,7 +11,7 @@ from memstribo.simulations.mesh.record import cycle_dataset
 from memstribo.simulations.mesh.setup import _prepare
 from memstribo.simulations.mesh.steps import _run_cycle
 from memstribo.simulations.mesh.limits import apply_limits
-from memstribo.simulations.mesh.verdict import cycle_verdict, summarize
+from memstribo.simulations.mesh.verdict import compare_cycles, cycle_verdict, summarize
 from memstribo.simulations.tooth_life import with_tooth_life
 
 
@@ -241,8 +241,6 @@ def step_convergence(params, roughness=None, *, steps=None, coating=None, wear=1
                                            realisation=realisation))
     doubled = summarize(simulate_mesh(params, roughness, steps=2 * steps - 1, coating=coating, wear=wear,
                                       realisation=realisation))
-    from memstribo.simulations.mesh.convergence import compare_cycles
-
     change = compare_cycles(doubled, baseline)
     return {"step_converged": change["passed"], "step_change_margin": float(change["margin"]),
             "step_change_margin_ft": float(change["margin_ft"]), "step_change_cof": float(change["cof"]),

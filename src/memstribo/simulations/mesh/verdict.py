@@ -297,3 +297,35 @@ def _limit_summary(dataset, f_t, margin) -> dict:
         if key in dataset.attrs:
             summary[key] = float(dataset.attrs[key])
     return summary
+
+
+# --- convergence on what is decided (MODEL 7d, issue #25) ------------------------------------------------
+#: Largest relative change of the margin (of |margin|) and of the mean COF (of itself) that counts as converged.
+TOLERANCE = 0.02
+
+
+def relative_change(new: float, old: float) -> float:
+    """|new - old| / |old| [-]; infinite where old is 0 and new is not (nothing to be relative to)."""
+    change = abs(float(new) - float(old))
+    scale = abs(float(old))
+    if scale > 0.0:
+        return change / scale
+    return 0.0 if change == 0.0 else float("inf")
+
+
+def compare_cycles(fine: dict, coarse: dict) -> dict:
+    """The changes between two cycles' summaries (:func:`memstribo.simulations.mesh.summarize`).
+
+    Returns
+    -------
+    dict
+        ``margin`` (of |margin| of ``coarse``), ``margin_ft`` (of F_t), ``cof`` (of the coarse mean COF),
+        ``adhesion`` (of the coarse mean adhesion force), all [-], and ``passed`` (margin and COF below
+        :data:`TOLERANCE`).
+    """
+    margin = relative_change(fine["stiction_margin"], coarse["stiction_margin"])
+    margin_ft = abs(fine["stiction_margin"] - coarse["stiction_margin"]) / max(abs(coarse["tangential_force"]), 1e-300)
+    cof = relative_change(fine["cof_mean"], coarse["cof_mean"])
+    adhesion = relative_change(fine["adhesion_force_mean"], coarse["adhesion_force_mean"])
+    return {"margin": margin, "margin_ft": margin_ft, "cof": cof, "adhesion": adhesion,
+            "passed": bool(margin < TOLERANCE and cof < TOLERANCE)}
