@@ -212,3 +212,33 @@ def test_an_unsettled_fixed_point_gives_no_verdict(params):
     assert summary["verdict"] == "undetermined" and summary["stiction"] is None
     assert "mesh_friction_passes" in summary["undetermined_reason"]
     assert ds.attrs["friction_fixed_point_converged"] == 0
+
+
+# --- sweeps and maps ----------------------------------------------------------------------------------------------
+def test_map_notes_count_and_figures_mark_the_points_that_are_not_converged():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import xarray as xr
+
+    from memstribo.simulations.design_map import _mark_points, _notes
+
+    flags = np.array([[1.0, 0.0], [np.nan, 0.0]])
+    ds = xr.Dataset({"converged": (("a", "b"), flags), "note": (("a", "b"), np.full((2, 2), "", dtype=object))})
+    assert any(text.startswith("2 of 3 checked point(s) not converged") for text in _notes(ds))
+    figure, ax = plt.subplots()
+    _mark_points(ax, np.array([1.0, 2.0]), np.array([10.0, 20.0]), flags)
+    hollow = [line for line in ax.lines if line.get_markerfacecolor() == "none"]
+    assert len(hollow) == 1 and len(hollow[0].get_xdata()) == 2
+    plt.close(figure)
+
+
+def test_sweep_points_carry_converged(params):
+    from memstribo.simulations.mesh import sweep
+
+    unchecked = sweep(params, "torque", [2.3e-7], steps=11)
+    assert unchecked[0]["converged"] is None
+    checked = sweep(params, "torque", [2.3e-7], steps=11, check=True)
+    assert isinstance(checked[0]["converged"], bool)
+    assert checked[0]["step_change_margin"] >= 0 and checked[0]["grid_change_cof"] >= 0
