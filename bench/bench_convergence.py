@@ -92,7 +92,8 @@ def main(argv=None):
         p = params.updated({"load_case": "thesis", "face_width": 8e-6})
         ds, t = _timed(lambda: simulate_mesh(p, steps=args.thesis_steps))
         per_step = t["cpu_s"] / args.thesis_steps
-        _line("thesis", steps=args.thesis_steps, rows=int(ds.attrs["rows"]), grid_spacing_nm=ds.attrs["grid_spacing"] * 1e9,
+        _line("thesis", steps=args.thesis_steps, rows=int(ds.attrs["rows"]),
+              grid_spacing_nm=ds.attrs["grid_spacing"] * 1e9,
               elements=int(round(ds.attrs["window"] / ds.attrs["grid_spacing"])),
               updates_per_solve=float(ds["contact_iterations"].mean()),
               cpu_per_step_s=round(per_step, 3), cpu_481_steps_estimate_s=round(481 * per_step, 1), **t)

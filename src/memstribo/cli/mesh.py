@@ -13,7 +13,8 @@ ORDER = 50
 
 MESH_KEYS = ("load_case", "interface_model", "contact_adhesion", "cof_mean", "cof_max", "cof_chemical", "cof_vdw",
              "cof_elastic", "friction_force_mean", "friction_force_max", "resisting_force_max", "adhesion_force_mean",
-             "normal_force_max", "tangential_force", "verdict", "stiction", "stiction_margin", "mesh_efficiency", "steps",
+             "normal_force_max", "tangential_force", "verdict", "stiction", "stiction_margin", "mesh_efficiency",
+             "steps",
              "sliding_distance", "roughness_rows", "max_shear_stress", "warnings")
 
 #: Keys of the ensemble verdict (``--realisations N``).

@@ -153,8 +153,9 @@ def _with_fitted_constants(dataset, params, coating):
     return dataset
 
 
-#: Largest change of the stiction margin (of |margin|) and of the mean COF (of itself) between two passes of the friction
-#: fixed point of dissimilar teeth that counts as settled: well below the 2 % of the step and grid checks (issue #25).
+#: Largest change of the stiction margin (of |margin|) and of the mean COF (of itself) between two passes of the
+#: friction fixed point of dissimilar teeth that counts as settled: well below the 2 % of the step and grid checks
+#: (issue #25).
 FIXED_POINT_TOLERANCE = 1e-3
 
 
