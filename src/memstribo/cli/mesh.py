@@ -144,7 +144,8 @@ def run(args, params):
     roughness = roughness_of(args)
     if args.refine:  # the finest cycle of the self-refining one, and its checks (MODEL 7d)
         dataset, summary = refined_cycle(params, roughness, **options)
-        params, options["steps"] = settings_of(params, summary)  # the ensemble runs at the settings reached
+        if uncertainty is None:  # the ensemble runs at the settings reached (the uncertainty study at those asked)
+            params, options["steps"] = settings_of(params, summary)
     else:
         dataset = simulate_mesh(params, roughness, **options)
         summary = summarize(dataset)
