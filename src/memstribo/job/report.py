@@ -157,8 +157,8 @@ def _verdict_html(result) -> str:
                      f"{_quantity(v['bare_cof_mean'])}; mesh efficiency {_quantity(v.get('bare_mesh_efficiency'))}.</li>")
         items.extend(_startup_items(v))
         if "bare_step_converged" in v:
-            grid = (f"; at twice the grid's resolution by {v['bare_grid_change_margin'] * 100:.2g} % and "
-                    f"{v['bare_grid_change_cof'] * 100:.2g} %" if "bare_grid_change_margin" in v else "")
+            grid = (f"; at twice the grid's resolution the margin by {v['bare_grid_change_margin'] * 100:.2g} %"
+                    if "bare_grid_change_margin" in v else "")
             items.append(f"<li>Numerics: at twice the steps the margin changes by "
                          f"{v['bare_step_change_margin'] * 100:.2g} % of |margin| and the mean COF by "
                          f"{v['bare_step_change_cof'] * 100:.2g} %{grid} "

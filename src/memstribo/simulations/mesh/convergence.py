@@ -23,7 +23,7 @@ from memstribo.references import cites
 from memstribo.simulations.mesh.verdict import TOLERANCE, compare_cycles, relative_change
 
 __all__ = ["TOLERANCE", "ADHESION_TOLERANCE", "relative_change", "compare_cycles", "refined_cycle", "check_cycle",
-           "CHECK_KEYS",
+           "CHECK_KEYS", "run_check",
            "settings_of", "CONVERGENCE_KEYS"]
 
 #: Largest relative change of the adhesion force on grid halving that counts as resolved (MODEL 7d).
@@ -220,3 +220,12 @@ def check_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, r
     grid = compare_cycles(run(_finer_grid(params), steps), baseline)
     return {"converged": bool(step["passed"] and grid["passed"]), "step_change_margin": step["margin"],
             "step_change_cof": step["cof"], "grid_change_margin": grid["margin"], "grid_change_cof": grid["cof"]}
+
+
+def run_check(params, roughness=None, *, steps=None, baseline=None) -> dict:
+    """:func:`check_cycle` for the run chain's bare cycle, with ``step_converged`` the two checks together (the
+    report's key); {} where ``mesh_step_refinements`` or ``mesh_grid_refinements`` is 0 (no check)."""
+    if not (params["mesh_step_refinements"] and params["mesh_grid_refinements"]):
+        return {}
+    check = check_cycle(params, roughness, steps=steps, baseline=baseline)
+    return {**check, "step_converged": check["converged"]}
