@@ -174,8 +174,8 @@ _ENTRIES = [
     ("elements_across_contact", "1", "elements across 2a", "mesh_elements_across_contact of the cycle reported"),
     ("grid_spacing", "m", "grid spacing", "element width of the contact solves of the cycle reported"),
     ("refinement", _TEXT, "refinement", "the comparisons of the self-refining cycle, one sentence each"),
-    ("verdict", _TEXT, "verdict", "stiction, no stiction, or undetermined (an unsettled fixed point: no COF or "
-     "stiction flag is a result)"),
+    ("verdict", _TEXT, "verdict", "running stiction, start-up stiction, no stiction, or undetermined (an unsettled "
+     "fixed point: no COF or stiction flag is a result)"),
     ("undetermined_reason", _TEXT, "why undetermined", "why the cycle gives no verdict (empty when it gives one)"),
     ("step_change_cof", "1", "change of the COF with the steps", "relative change of the mean COF when the steps are "
      "doubled"),

@@ -205,7 +205,7 @@ def summarize(dataset) -> dict:
     (``cof_chemical``, ``cof_vdw``, ``cof_elastic``) is the same ratio per mechanism, so the
     parts add up to ``cof_mean`` exactly. The stiction verdict: ``resisting_force_max`` is the
     largest R(c), ``stiction_margin`` = ``tangential_force`` - ``resisting_force_max`` (MODEL 7b). ``verdict`` is
-    "stiction", "no stiction" or "undetermined" (an unsettled fixed point of dissimilar teeth: ``stiction`` is then
+    "running stiction", "start-up stiction", "no stiction" or "undetermined" (an unsettled fixed point of dissimilar teeth: ``stiction`` is then
     None and ``undetermined_reason`` says why; the numbers are the last pass's, not a result).
     """
     import json
@@ -226,7 +226,7 @@ def summarize(dataset) -> dict:
     efficiency = np.asarray(dataset["mesh_efficiency"])
     undetermined = str(dataset.attrs.get("undetermined_reason", ""))
     return {
-        "verdict": "undetermined" if undetermined else ("stiction" if margin < 0 else "no stiction"),
+        "verdict": _verdict_word(dataset, f_t, margin, undetermined),
         "undetermined_reason": undetermined,
         "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split.get("cof_capillary", 0.0),
         "cof_max": float(dataset["cof"].max()),
@@ -264,6 +264,18 @@ def summarize(dataset) -> dict:
         "fitted_constants": json.loads(dataset.attrs.get("fitted_constants", "[]")),  # with their fit conditions
         "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
     }
+
+
+def _verdict_word(dataset, f_t, margin, undetermined) -> str:
+    """"undetermined" (an unsettled fixed point, issue #25), "running stiction", "start-up stiction" (MODEL 7d, where
+    the dataset has the start-up verdict) or "no stiction"."""
+    if undetermined:
+        return "undetermined"
+    if margin < 0:
+        return "running stiction"
+    if "startup_resisting_force" in dataset and f_t - float(dataset["startup_resisting_force"].max()) < 0:
+        return "start-up stiction"
+    return "no stiction"
 
 
 def _limit_summary(dataset, f_t, margin) -> dict:
