@@ -85,7 +85,7 @@ def test_every_json_key_of_every_command_is_in_the_vocabulary(cli, argv):
 
 
 def test_the_same_quantity_has_the_same_name_in_mesh_coating_and_slide(cli):
-    mesh = cli.json("mesh", "--steps", "11")
+    mesh = cli.json("mesh", "--steps", "11", "--no-refine")
     coating = cli.json("coating", "--steps", "11", "--wear", "1")  # Omega = 1: the bare teeth
     slide = cli.json("slide", "--model", "single")
     shared = set(coating) - {"coating", "wear", "warnings"}

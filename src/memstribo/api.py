@@ -224,7 +224,7 @@ class MeshCycle:
 
 
 def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int | None = None, coating=None,
-               wear: float = 1.0, client=None, progress: bool = False) -> MeshCycle:
+               wear: float = 1.0, client=None, progress: bool = False, refine: bool = False) -> MeshCycle:
     """Friction, adhesion, COF and the stiction verdict over one meshing cycle (thesis 4.6-4.9, MODEL 7b).
 
     Parameters
@@ -245,6 +245,10 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
         Runs the realisations on a Dask cluster.
     progress : bool
         Show a progress bar on stderr.
+    refine : bool
+        The self-refining cycle of ``memstribo mesh`` (MODEL 7d): refined in steps, then in grid, until the
+        margin and the mean COF hold (:func:`memstribo.simulations.mesh.convergence.refined_cycle`); the
+        summary then has ``converged`` and the changes, and the realisations run at the settings reached.
 
     Returns
     -------
@@ -272,8 +276,15 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     params = parameter_set() if params is None else params
     roughness = None if surface is None else read_surface(surface)
     coating_object = get_coating(coating, params) if isinstance(coating, str) else coating
-    dataset = simulate_mesh(params, roughness, steps=steps, coating=coating_object, wear=wear, progress=progress)
-    summary = summarize(dataset)
+    if refine:
+        from memstribo.simulations.mesh.convergence import refined_cycle, settings_of
+
+        dataset, summary = refined_cycle(params, roughness, steps=steps, coating=coating_object, wear=wear,
+                                         progress=progress)
+        params, steps = settings_of(params, summary)
+    else:
+        dataset = simulate_mesh(params, roughness, steps=steps, coating=coating_object, wear=wear, progress=progress)
+        summary = summarize(dataset)
     ensemble = None
     if realisations > 1:
         ensemble = simulate_ensemble(params, roughness, realisations=realisations, steps=steps,

@@ -155,8 +155,28 @@ _ENTRIES = [
      "and the vdW range unless mesh_window is set)"),
     ("step_converged", _TEXT, "converged in the steps", "true when doubling the steps changes the margin and the mean "
      "COF by less than 2 %"),
-    ("step_change_margin", "1", "change of the margin with the steps", "relative change of the stiction margin (of "
-     "F_t) when the steps are doubled"),
+    ("step_change_margin", "1", "change of the margin with the steps", "change of the stiction margin when the steps "
+     "are doubled, relative to |margin| (MODEL 7d)"),
+    ("step_change_margin_ft", "1", "change of the margin with the steps, of F_t", "the same change of the stiction "
+     "margin relative to F_t (the figure before issue #25)"),
+    ("grid_converged", _TEXT, "converged in the grid", "true when doubling the grid's resolution changes the margin "
+     "(of |margin|) and the mean COF by less than 2 %"),
+    ("grid_change_margin", "1", "change of the margin with the grid", "change of the stiction margin when the grid's "
+     "resolution is doubled, relative to |margin|"),
+    ("grid_change_cof", "1", "change of the COF with the grid", "relative change of the mean COF when the grid's "
+     "resolution is doubled"),
+    ("grid_change_adhesion", "1", "change of the adhesion force with the grid", "relative change of the mean "
+     "adhesion force when the grid's resolution is doubled"),
+    ("adhesion_force_resolved", _TEXT, "adhesion force resolved", "true when the mean adhesion force changes by less "
+     "than 5 % on the last grid halving (MODEL 7d)"),
+    ("elements_checked", "1", "elements across 2a of the check", "mesh_elements_across_contact of the finer cycle of "
+     "the grid-convergence check"),
+    ("elements_across_contact", "1", "elements across 2a", "mesh_elements_across_contact of the cycle reported"),
+    ("grid_spacing", "m", "grid spacing", "element width of the contact solves of the cycle reported"),
+    ("refinement", _TEXT, "refinement", "the comparisons of the self-refining cycle, one sentence each"),
+    ("verdict", _TEXT, "verdict", "running stiction, start-up stiction, no stiction, or undetermined (an unsettled "
+     "fixed point: no COF or stiction flag is a result)"),
+    ("undetermined_reason", _TEXT, "why undetermined", "why the cycle gives no verdict (empty when it gives one)"),
     ("step_change_cof", "1", "change of the COF with the steps", "relative change of the mean COF when the steps are "
      "doubled"),
     ("steps_checked", "1", "steps of the check", "steps of the finer cycle of the step-convergence check"),
@@ -195,7 +215,8 @@ _ENTRIES = [
     ("load", "N/m", "line load", "load per unit face width of a line contact"),
     ("iterations", "1", "iterations", "conjugate-gradient iterations of the solve"),
     ("residual", "1", "residual", "relative complementarity residual of the solve"),
-    ("converged", _TEXT, "converged", "true when the solve met its tolerance"),
+    ("converged", _TEXT, "converged", "true when the solve met its tolerance; of a meshing cycle, sweep or map point: "
+     "when its step and grid checks passed (MODEL 7d)"),
     ("solve_seconds", "s", "solve time", "wall time of the solve"),
     ("adhesive_load", "N/m", "adhesive line load", "tensile line load of the cohesive zone"),
     ("cohesive_length", "m", "cohesive length", "measure of the cohesive zone"),

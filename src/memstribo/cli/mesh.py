@@ -13,7 +13,8 @@ ORDER = 50
 
 MESH_KEYS = ("load_case", "interface_model", "contact_adhesion", "cof_mean", "cof_max", "cof_chemical", "cof_vdw",
              "cof_elastic", "friction_force_mean", "friction_force_max", "resisting_force_max", "adhesion_force_mean",
-             "normal_force_max", "tangential_force", "stiction", "stiction_margin", "mesh_efficiency", "steps",
+             "normal_force_max", "tangential_force", "verdict", "stiction", "stiction_margin", "mesh_efficiency",
+             "steps",
              "sliding_distance", "roughness_rows", "max_shear_stress", "warnings")
 
 #: Keys of the ensemble verdict (``--realisations N``).
@@ -53,8 +54,12 @@ def register(subparsers, parents):
     parser.add_argument("--workers", type=int, metavar="N",
                         help="with --uncertainty or --realisations: run the cycles on a local Dask cluster of N "
                              "worker processes")
-    parser.add_argument("--step-check", action=argparse.BooleanOptionalAction, default=True,
-                        help="rerun at twice the steps and report step_converged (default: on)")
+    parser.add_argument("--refine", "--step-check", dest="refine", action=argparse.BooleanOptionalAction,
+                        default=True,
+                        help="the self-refining cycle (MODEL 7d): compare with twice the steps, then with twice the "
+                             "grid's resolution, refining until the margin (of |margin|) and the mean COF change by "
+                             "less than 2 %%, at most mesh_step_refinements and mesh_grid_refinements times; reports "
+                             "converged, step_change_*, grid_change_* (default: on; --no-refine: one cycle as asked)")
     parser.add_argument("--out", metavar="DIR", help="write the time series (NetCDF + CSV) and the figures (PNG + SVG)")
     parser.set_defaults(handler=run)
 
@@ -123,7 +128,8 @@ def apply_load_case(args, params):
 
 def run(args, params):
     from memstribo.errors import InputError
-    from memstribo.simulations.mesh import SUMMARY_UNITS, simulate_ensemble, simulate_mesh, step_convergence, summarize
+    from memstribo.simulations.mesh import SUMMARY_UNITS, simulate_ensemble, simulate_mesh, summarize
+    from memstribo.simulations.mesh.convergence import refined_cycle, settings_of
 
     params = apply_load_case(args, params)
     options = simulation_options(args, params)
@@ -136,13 +142,17 @@ def run(args, params):
         raise InputError(f"--realisations must be from {int(spec.minimum):,} to {int(spec.maximum):,} (the bounds "
                          f"of the parameter realisations), got {realisations:,}.")
     roughness = roughness_of(args)
-    dataset = simulate_mesh(params, roughness, **options)
-    summary = summarize(dataset)
+    if args.refine:  # the finest cycle of the self-refining one, and its checks (MODEL 7d)
+        dataset, summary = refined_cycle(params, roughness, **options)
+        if uncertainty is None:  # the ensemble runs at the settings reached (the uncertainty study at those asked)
+            params, options["steps"] = settings_of(params, summary)
+    else:
+        dataset = simulate_mesh(params, roughness, **options)
+        summary = summarize(dataset)
     values = {key: summary[key] for key in MESH_KEYS}
     values.update({key: summary[key] for key in summary if key not in MESH_KEYS})
-    if args.step_check:
-        values.update(step_convergence(params, roughness, steps=options["steps"], coating=options["coating"],
-                                       wear=options["wear"], baseline=summary))
+    if summary["verdict"] == "undetermined":  # no COF or margin presented as a result (issue #25)
+        values.update({key: None for key in values if key.startswith("cof_") or key == "stiction_margin"})
     study = None
     if uncertainty is not None:
         shown, study = _uncertainty(args, params, roughness, options, uncertainty, realisations)
@@ -165,9 +175,10 @@ def run(args, params):
         f"  load case '{summary['load_case']}': normal force {summary['normal_force_total'] * 1e3:.4g} mN on the "
         f"teeth, F_t {summary['tangential_force'] * 1e3:.4g} mN"
         + (" (the thesis's F_ext: not the normal force the torque implies)" if summary["load_case"] == "thesis" else ""),
-        f"  verdict: {'STICTION' if summary['stiction'] else 'no stiction'}: largest resisting force R(c) "
-        f"{summary['resisting_force_max'] * 1e3:.4g} mN (friction of every pair in mesh) against F_t "
-        f"{summary['tangential_force'] * 1e3:.4g} mN, margin {summary['stiction_margin'] * 1e3:+.4g} mN",
+        (f"  verdict: UNDETERMINED: {summary['undetermined_reason']}" if summary["verdict"] == "undetermined" else
+         f"  verdict: {'STICTION' if summary['stiction'] else 'no stiction'}: largest resisting force R(c) "
+         f"{summary['resisting_force_max'] * 1e3:.4g} mN (friction of every pair in mesh) against F_t "
+         f"{summary['tangential_force'] * 1e3:.4g} mN, margin {summary['stiction_margin'] * 1e3:+.4g} mN"),
         f"  start-up verdict (every bond formed after a dwell, MODEL 7d): "
         f"{'STICTION' if summary['startup_stiction'] else 'starts'}: start-up margin "
         f"{summary['startup_margin'] * 1e3:+.4g} mN, largest start-up COF {summary['static_cof_max']:.3g}; "
@@ -183,10 +194,10 @@ def run(args, params):
         + ("identical materials, one pass is exact" if dataset.attrs["dundurs_beta"] == 0
            else f"F_t/F_f iteration, {dataset.attrs['friction_passes']} passes"),
     ]
-    if "step_converged" in values:
-        notes.append(f"  step check at {values['steps_checked']} steps: margin changes by "
-                     f"{values['step_change_margin'] * 100:.2g} % of F_t, mean COF by {values['step_change_cof'] * 100:.2g} %"
-                     + ("" if values["step_converged"] else " -- NOT converged (goal < 2 %): use more steps"))
+    if "converged" in values:
+        notes.append(f"  {'converged' if values['converged'] else 'NOT converged'} (MODEL 7d: margin within 2 % of "
+                     f"|margin|, mean COF within 2 %): {values['steps']} steps, {values['elements_across_contact']} "
+                     "elements across 2a; " + "; ".join(values["refinement"] or ["no check"]))
     if "uncertainty_samples" in values:
         notes.extend(uncertainty_notes(values))
     elif "stiction_probability" in values:

@@ -30,6 +30,10 @@ def register(subparsers, parents):
     add_common_arguments(parser)
     parser.add_argument("--realisations", type=int, default=1, metavar="N",
                         help="roughness realisations per point: adds the stiction probability and its bands")
+    parser.add_argument("--check", action="store_true",
+                        help="check every point at twice the steps and at twice the grid's resolution and report "
+                             "converged (MODEL 7d: margin within 2 %% of |margin|, mean COF within 2 %%; three cycles "
+                             "or more per point); unchecked points carry converged = null")
     parser.add_argument("--out", metavar="DIR", help="write the sweep (NetCDF + CSV) and its figures (PNG + SVG)")
     parser.set_defaults(handler=run)
 
@@ -76,7 +80,7 @@ def run(args, params):
              int(SPECS["realisations"].maximum))
     roughness = roughness_of(args)
     points = sweep(params, args.parameter, values, roughness, progress=progress, realisations=args.realisations,
-                   **options)
+                   check=args.check, **options)
     critical = None
     if args.parameter == "humidity":  # the RH at which stiction sets in (issue #17)
         from memstribo.simulations.mesh import critical_humidity
@@ -92,9 +96,16 @@ def run(args, params):
     extra += ["fracture_probability", "cycles_to_fracture_p01", "root_stress_max"] if args.parameter == "torque" else []
     points = [{key: point[key] for key in head + list(MESH_KEYS) + ["energy_dissipated", "energy_chemical",
                                                                      "energy_vdw", "energy_elastic",
-                                                                     "unconverged_steps"] + extra}
+                                                                     "unconverged_steps", "converged"] + extra
+                                                                     + (["step_change_margin", "step_change_cof",
+                                                                         "grid_change_margin", "grid_change_cof"]
+                                                                        if args.check else [])}
               for point in points]
     notes = []
+    if args.check:  # MODEL 7d: a point that is not converged says so, and the sweep counts them
+        bad = [p for p in points if p["converged"] is False]
+        notes.append(f"  {len(bad)} of {len(points)} point(s) not converged (margin or mean COF change by 2 % or more "
+                     "at twice the steps or the grid): hollow markers in the figures")
     if args.out:
         from memstribo.output import provenance_attributes
         from memstribo.surfaces.roughness import default_profile
@@ -163,6 +174,10 @@ def _write(parameter, points, folder, provenance=None, critical=None) -> list[st
               "area": "nominal contact area [A_adh]"}[parameter]
     figure, ax = new_figure(figsize=(5.6, 3.6))
     ax.plot(x, dataset["cof_mean"], "o-", label="COF (cycle mean)")
+    bad = np.array([p.get("converged") is False for p in points])
+    if bad.any():  # MODEL 7d: unconverged points hollow
+        ax.plot(x[bad], dataset["cof_mean"].values[bad], "o", markerfacecolor="white", markeredgecolor="k",
+                markersize=8, label="not converged")
     ax.plot(x, dataset["cof_chemical"], ".--", label="chemical")
     ax.plot(x, dataset["cof_vdw"], ".--", label="vdW")
     ax.set_xlabel(xlabel)

@@ -445,8 +445,8 @@ class RunChain:
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
         summary = cycle_summary(dataset)
-        summary.update(mesh.step_convergence(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
-                                             baseline=summary))
+        summary.update(mesh.run_check(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
+                                 baseline=summary))  # twice the steps and twice the grid (MODEL 7d)
         count = self.options.realisations
         if count > 1:
             first = dict(summary, realisation=0, seed=[int(self.model_params["roughness_seed"]), 0])

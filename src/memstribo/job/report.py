@@ -157,11 +157,13 @@ def _verdict_html(result) -> str:
                      f"{_quantity(v['bare_cof_mean'])}; mesh efficiency {_quantity(v.get('bare_mesh_efficiency'))}.</li>")
         items.extend(_startup_items(v))
         if "bare_step_converged" in v:
+            grid = (f"; at twice the grid's resolution the margin by {v['bare_grid_change_margin'] * 100:.2g} %"
+                    if "bare_grid_change_margin" in v else "")
             items.append(f"<li>Numerics: at twice the steps the margin changes by "
-                         f"{v['bare_step_change_margin'] * 100:.2g} % of F<sub>t</sub> and the mean COF by "
-                         f"{v['bare_step_change_cof'] * 100:.2g} % "
+                         f"{v['bare_step_change_margin'] * 100:.2g} % of |margin| and the mean COF by "
+                         f"{v['bare_step_change_cof'] * 100:.2g} %{grid} "
                          f"({'converged' if v['bare_step_converged'] else '<span class=bad>NOT converged</span>'}, "
-                         "goal &lt; 2 %).</li>")
+                         "goal &lt; 2 %, MODEL 7d).</li>")
         if v.get("bare_roughness_rows"):
             items.append(f"<li>Roughness of the nanoblock rows (first realisation): {_e(v['bare_roughness_rows'])}.</li>")
         for text in v.get("bare_warnings", []):

@@ -22,7 +22,7 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
         of all pairs in mesh) [N]; ``bare_stiction`` (R > F_t somewhere on the path of contact);
         ``bare_stiction_margin`` = F_t - max R [N]; ``bare_cof_mean``; ``bare_mesh_efficiency``; ``bare_warnings``;
         with an ensemble ``bare_stiction_probability`` and the 5/50/95 % quantiles of the margin and the mean
-        COF; ``bare_step_converged`` and the relative changes at twice the steps;
+        COF; ``bare_step_converged`` (step and grid checks, 7d) and the changes (``bare_step_/grid_change_*``);
         the same with ``coated_`` for the intact coating; ``wear_at_stiction`` (the worn fraction Omega at
         which F_f reaches F_t, interpolated in the wear sweep, or None); ``cycles_to_stiction``,
         ``cycles_to_failure`` [meshing cycles] (None while the damage constant c1 is unknown) and
@@ -44,14 +44,16 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
             out[f"{label}_warnings"] = list(summary.get("warnings", []))
             if "roughness_rows" in summary:
                 out[f"{label}_roughness_rows"] = summary["roughness_rows"]
-            for key in ("step_converged", "step_change_margin", "step_change_cof", "realisations",
-                        "stiction_probability", "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95",
+            for key in ("step_converged", "step_change_margin", "step_change_cof", "grid_change_margin", "realisations",
+                        "stiction_probability", "stiction_probability_ci", "stiction_probability_text",
+                        "stiction_margin_median", "stiction_margin_p05", "stiction_margin_p95",
                         "cof_mean_median", "cof_mean_p05", "cof_mean_p95",
                         # what the verdict hangs on (MODEL 7d): start-up, local limits, the hardness cap
                         "startup_margin", "startup_stiction", "static_cof_max", "stiction_mode",
                         "stiction_margin_capped", "startup_margin_capped", "stiction_mode_capped", "plastic_fraction",
                         "stiction_margin_uncapped", "startup_margin_uncapped", "startup_stiction_probability",
-                        "startup_margin_median", "startup_margin_p05", "startup_margin_p95"):
+                        "startup_stiction_probability_text", "startup_margin_median", "startup_margin_p05",
+                        "startup_margin_p95", "converged", "grid_converged", "verdict"):
                 if key in summary:
                     out[f"{label}_{key}"] = summary[key]
     geometry = summaries.get("geometry")

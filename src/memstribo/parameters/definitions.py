@@ -269,6 +269,18 @@ _SPECS = [
            "population renews", 1e-11, 1e-4, "from a bond length to the whole sliding of a cycle", optional=True),
     _range("realisations", "", "Independent roughness realisations of the stiction verdict (ensemble, MODEL 7b)",
            1, 10000, "1 to 10 000 meshing cycles", kind="int"),
+    _range("mesh_step_refinements", "", "Most comparisons of the meshing cycle at doubled steps (2N - 1) before the "
+           "step check gives up (MODEL 7d: margin within 2 % of |margin|, mean COF within 2 %); 0 skips the check", 0,
+           8, "0 (no check) to 8 doublings (the last cycle has 256 times the steps)", kind="int",
+           exclusive_minimum=False),
+    _range("mesh_grid_refinements", "", "Most comparisons of the meshing cycle at a doubled grid resolution "
+           "(mesh_elements_across_contact doubled, or mesh_grid_spacing halved) before the grid check gives up "
+           "(MODEL 7d); 0 skips the check", 0, 8, "0 (no check) to 8 doublings (256 times the elements: slow, and "
+           "bounded by the memory check)", kind="int", exclusive_minimum=False),
+    _range("mesh_friction_passes", "", "Most passes of the F_t/F_f fixed point of dissimilar teeth (thesis 4.6 step "
+           "7); a cycle that has not settled by then is 'undetermined'", 1, 1000,
+           "at least one pass; settling takes 3 to 6 (docs/interface.md), 1000 is far beyond any that would",
+           kind="int"),
     # --- coating properties: unset = the coating's own parameter set (coatings/*.toml) -------------
     _range("coating_vdw_bond_energy", "J", "U_vdW of the coated pair; unset: the coating's parameter set "
            "('memstribo parameters --coating NAME')", 1e-25, 1e-19, "weaker than a silicon vdW bond by up to 4 "

@@ -25,6 +25,8 @@ References
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from memstribo.checks import as_array
@@ -32,6 +34,7 @@ from memstribo.errors import InputError
 from memstribo.references import cites
 
 __all__ = [
+    "maugis_dugdale_line_tension",
     "wavy_surface_full_contact_amplitude",
     "hertz_line_half_width",
     "hertz_line_peak_pressure",
@@ -694,6 +697,71 @@ def maugis_dugdale_line_pull_off(radius, contact_modulus, work_of_adhesion, cohe
                              options={"xatol": 1e-7})
     half_width = float(np.exp(result.x) * scale)
     return float(result.fun), half_width
+
+
+@cites("maugis_1992", "baney_hui_1997", "johnson_greenwood_2008", "johnson_1985")
+def maugis_dugdale_line_tension(line_load, radius, contact_modulus, work_of_adhesion, cohesive_stress):
+    r"""Attraction of the Maugis-Dugdale line contact under a load: its total tensile traction and its zone.
+
+    Parameters
+    ----------
+    line_load : float
+        Net load P per unit length [N/m] (compressive positive; above the pull-off load).
+    radius, contact_modulus, work_of_adhesion, cohesive_stress : float
+        As in :func:`maugis_dugdale_line_load` (R [m], E* [Pa], w [J/m²], sigma0 [Pa]).
+
+    Returns
+    -------
+    tension : float
+        The whole tensile traction per unit length [N/m]: the Dugdale zones a < |x| < c and the
+        tensile edges of the contact, where the pressure below is negative.
+    half_width : float
+        Contact half-width a [m].
+    zone_end : float
+        End c of the cohesive zone [m] (each zone is c - a wide).
+
+    Notes
+    -----
+    The pressure on the contact of :func:`maugis_dugdale_line_load` (the Hertz pressure of
+    half-width a plus the bounded response of a rigid flat to the Dugdale tension on the zones):
+
+    .. math:: p(x) = \frac{E^*}{2R}\sqrt{a^2-x^2}
+              - \frac{2\sigma_0}{\pi}\arctan\frac{\sqrt{c^2-a^2}}{\sqrt{a^2-x^2}}, \quad |x| < a,
+
+    and -sigma0 on the zones; its integral is the load of :func:`maugis_dugdale_line_load` (checked in
+    tests/test_convergence.py). It is tensile near the contact's edges, down to -sigma0 at |x| = a. The
+    tension is :math:`2\sigma_0(c-a) + 2\int_{x_0}^{a} -p\,dx` with :math:`p(x_0) = 0`: the attraction that
+    adds to the load the contact carries (the meshing cycle's adhesion force, MODEL 7c). The adhesive
+    term of the load equation, :math:`2\sigma_0\sqrt{c^2-a^2}` (Hertz load at a minus P), is larger: it
+    counts the adhesive pressure where the compressive Hertz pressure outweighs it.
+    """
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    radius = float(as_array(radius, "radius", "m", positive=True))
+    modulus = float(as_array(contact_modulus, "contact_modulus", "Pa", positive=True))
+    w = float(as_array(work_of_adhesion, "work_of_adhesion", "J/m^2", positive=True))
+    sigma0 = float(as_array(cohesive_stress, "cohesive_stress", "Pa", positive=True))
+    load = float(line_load)
+    pull_off, a_pull = maugis_dugdale_line_pull_off(radius, modulus, w, sigma0)
+    if not load > pull_off:
+        raise InputError(f"line_load {load:.4g} N/m is at or below the pull-off load {pull_off:.4g} N/m: no "
+                         "adhered state under load control.")
+    upper = max(2.0 * a_pull, 1e-9)
+    while _maugis_line_scalar(upper, radius, modulus, w, sigma0)[0] < load:
+        upper *= 2.0
+    a = brentq(lambda x: _maugis_line_scalar(x, radius, modulus, w, sigma0)[0] - load, a_pull, upper,
+               xtol=1e-16, rtol=1e-14)
+    c = _maugis_line_scalar(a, radius, modulus, w, sigma0)[1]
+    t = math.sqrt(max(c * c - a * a, 0.0))
+
+    def pressure(x):
+        s = math.sqrt(max(a * a - x * x, 0.0))
+        return modulus / (2.0 * radius) * s - 2.0 * sigma0 / math.pi * math.atan2(t, s)
+
+    x0 = brentq(pressure, 0.0, a) if pressure(0.0) > 0.0 else 0.0
+    inside = quad(lambda x: -pressure(x), x0, a, limit=400)[0]
+    return 2.0 * sigma0 * (c - a) + 2.0 * inside, float(a), float(c)
 
 
 @cites("maugis_1992", "johnson_greenwood_2008", "baney_hui_1997")

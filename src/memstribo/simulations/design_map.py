@@ -78,7 +78,7 @@ MAP_RESULTS = ("stiction_probability", "stiction_margin_median", "stiction_margi
                "cof_mean_median", "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median", "mesh_efficiency_p05",
                "mesh_efficiency_p95", "realisations", "cycles_to_failure", "cycles_to_stiction", "critical_wear",
                "stiction_probability_low", "stiction_probability_high", "stiction_probability_nominal",
-               "uncertainty_samples")
+               "uncertainty_samples", "converged", "step_change_margin", "grid_change_margin")
 
 _MAP_KEYS = {"name", "realisations", "steps", "plot", "cycles_observed", "wear_sweep", "grid", "fixed",
              "uncertainty"}
@@ -363,6 +363,7 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
         values["stiction_probability"] = study["stiction_probability"]
         values["stiction_probability_low"], values["stiction_probability_high"] = study["stiction_probability_ci"]
         values["uncertainty_samples"] = study["samples"]
+    values.update(_converged(params, surface, steps, coating_object, wear, summaries[0]))
     values.update(cycles_to_failure=math.nan, cycles_to_stiction=math.nan, critical_wear=math.nan)
     note = ""
     if coating is None:
@@ -395,6 +396,19 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
 
 
 map_point.units = {key: quantity_unit(key) for key in MAP_RESULTS}
+
+
+def _converged(params, surface, steps, coating, wear, first) -> dict:
+    """``converged`` (1.0 or 0.0, NaN where unchecked) and the changes of the point's first realisation at twice
+    the steps and at twice the grid's resolution (MODEL 7d; :func:`memstribo.simulations.mesh.convergence.check_cycle`).
+    Unchecked where ``mesh_step_refinements`` or ``mesh_grid_refinements`` is 0."""
+    if not (params["mesh_step_refinements"] and params["mesh_grid_refinements"]):
+        return {"converged": math.nan, "step_change_margin": math.nan, "grid_change_margin": math.nan}
+    from memstribo.simulations.mesh.convergence import check_cycle
+
+    check = check_cycle(params, surface, steps=steps, coating=coating, wear=wear, baseline=first)
+    return {"converged": float(check["converged"]), "step_change_margin": check["step_change_margin"],
+            "grid_change_margin": check["grid_change_margin"]}
 
 
 def _check_or_write_manifest(manifest_path, folder, resume, map_hash, manifest_new):
@@ -622,6 +636,12 @@ def map_dataset(records: list[dict], spec: MapSpec, points: list | None = None):
 
 def _notes(dataset) -> list[str]:
     notes = []
+    if "converged" in dataset:  # MODEL 7d: a point that is not converged says so (hollow markers in the figures)
+        flags = np.asarray(dataset["converged"].values, dtype=float)
+        checked = int(np.isfinite(flags).sum())
+        if checked:
+            notes.append(f"{int((flags == 0).sum())} of {checked} checked point(s) not converged (margin or mean COF "
+                         "change by 2 % or more at twice the steps or the grid): hollow markers in the figures")
     for text in dict.fromkeys(str(v) for v in np.ravel(dataset["note"].values)):
         if text and not text.startswith("bare silicon"):
             count = int((dataset["note"].values == text).sum())
@@ -716,7 +736,8 @@ def map_figures(dataset, folder: str | Path, plot=(), *, stem_prefix: str = "", 
             if key == "stiction_probability" and "stiction_probability_low" in dataset:
                 band = tuple(dataset[b].isel(selection).transpose(*plot)
                              for b in ("stiction_probability_low", "stiction_probability_high"))
-            mappable = _draw_panel(ax, dataset, panel, plot, key, levels, band)
+            flags = dataset["converged"].isel(selection).transpose(*plot).values if "converged" in dataset else None
+            mappable = _draw_panel(ax, dataset, panel, plot, key, levels, band, flags)
             ax.set_title(caption or dataset.attrs.get("title", ""), fontsize=9)
         if mappable is not None and len(plot) == 2:
             bar = fig.colorbar(mappable, ax=list(axes[0]), format="%.4g")
@@ -745,11 +766,17 @@ def _levels(values) -> np.ndarray:
     return np.linspace(centre - half, centre + half, 3)
 
 
-def _draw_panel(ax, dataset, panel, plot, key, levels=None, band=None):
+def _draw_panel(ax, dataset, panel, plot, key, levels=None, band=None, flags=None):
+    """One panel: contours over two axes (lines over one), the points marked, hollow where not converged."""
     x_factor, x_label = _display(dataset, plot[0])
     x = dataset[plot[0]].values.astype(float) * x_factor
     if len(plot) == 1:
         ax.plot(x, panel.values, marker="o")
+        bad = np.asarray(flags, dtype=float) == 0 if flags is not None else np.zeros(x.shape, dtype=bool)
+        if bad.any():
+            ax.plot(x[bad], np.asarray(panel.values)[bad], "o", markerfacecolor="white", markeredgecolor="k",
+                    markersize=7, label="not converged")
+            ax.legend(loc="best", fontsize=7)
         if key == "stiction_probability":
             ax.axhline(0.5, color="k", linestyle="--", linewidth=0.8, label="50 %")
             if band is not None:  # the 95 % interval of each point's probability
@@ -776,12 +803,25 @@ def _draw_panel(ax, dataset, panel, plot, key, levels=None, band=None):
                     ax.contour(x, y, zb, levels=[0.5], colors="k", linewidths=0.9, linestyles="--")
     else:
         mappable = ax.contourf(x, y, z, levels=levels, cmap="viridis")
-    ax.plot(*np.meshgrid(x, y), "k.", markersize=2)
+    _mark_points(ax, x, y, flags)
     ax.set_xlabel(x_label)
     ax.set_ylabel(y_label)
     _scale(ax.set_xscale, x)
     _scale(ax.set_yscale, y)
     return mappable
+
+
+def _mark_points(ax, x, y, flags=None) -> None:
+    """The computed points: small dots where converged (or unchecked), hollow circles where not (MODEL 7d).
+
+    ``flags``: the points' ``converged`` over (x, y) (1, 0 or NaN), or None."""
+    xx, yy = np.meshgrid(x, y)
+    bad = (np.asarray(flags, dtype=float).T == 0) if flags is not None else np.zeros(xx.shape, dtype=bool)
+    ax.plot(xx[~bad], yy[~bad], "k.", markersize=2)
+    if bad.any():
+        ax.plot(xx[bad], yy[bad], "o", markerfacecolor="none", markeredgecolor="k", markersize=6,
+                label="not converged")
+        ax.legend(loc="best", fontsize=7)
 
 
 def _scale(setter, values) -> None:

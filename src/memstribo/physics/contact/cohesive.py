@@ -370,6 +370,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     offset = float(h.min())
     h = h - offset
     p_start = np.asarray(initial_pressure, dtype=float) if initial_pressure is not None else None
+    if sigma0 and approach is None and settings.cohesive_start == "loading":
+        p_start = None  # the loading-branch state: the one this solver reaches without a start
     coarse = [0]
     problem = (operator, h, dx, modulus, periodic, reference, cap, small, sigma0, h0, zones, p_start)
     if approach is not None:

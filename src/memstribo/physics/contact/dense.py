@@ -243,7 +243,10 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
     sigma = float(sigmas.sum())
     top = float(h.max())
     scale = top if top > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
-    if p_start is not None:  # min(clip(-p/sigma, 0, 1) + (p > 0), 1)
+    if p_start is not None and settings.cohesive_start == "loading":  # the contact set only: the loading branch
+        contact = p_start > 0.0
+        fraction = np.zeros(n)
+    elif p_start is not None:  # min(clip(-p/sigma, 0, 1) + (p > 0), 1)
         contact = p_start > 0.0
         fraction = np.minimum(np.maximum(-p_start / sigma, 0.0), 1.0)
         fraction[contact] = 1.0

@@ -165,6 +165,14 @@ class SolverSettings:
     """... applied only where the measured ratio is at least this (slow, creeping fronts) [dimensionless].
     bench/bench_zone_updates.py."""
 
+    cohesive_start: str = "previous"
+    """Start of the cohesive zone under load control when an ``initial_pressure`` is given: "previous" (the zone of
+    that pressure, its tensile parts and contact set: continuation from a previous state, e.g. along a
+    loading-unloading curve) or "loading" (the pressure warm-starts the contact set only, the zone starts empty:
+    the state reached is the loading-branch state, the one reached without a start, whatever state the pressure
+    came from). The meshing cycle uses "loading", so that a step's state does not depend on the step before it
+    (issue #25, docs/interface.md; bench/bench_convergence.py measures it)."""
+
 
     # ---------------------------------------------------------------- pressure capped at the hardness (plastic.py)
     max_plastic_updates: int = 60

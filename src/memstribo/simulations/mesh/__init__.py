@@ -78,6 +78,7 @@ coating's bond energy and work of adhesion, inside the same adhesive layer as a 
 from __future__ import annotations
 
 from memstribo.simulations.mesh.cycle import simulate_mesh, step_convergence
+from memstribo.simulations.mesh.convergence import check_cycle, refined_cycle, run_check
 from memstribo.simulations.mesh.ensemble import REALISATION_KEYS, _ensemble_point, ensemble_summary, simulate_ensemble
 from memstribo.simulations.mesh.interface import lattice_overlap_across, vdw_gap_factor
 from memstribo.simulations.mesh.record import BLOCK_LOAD_VARIANT
@@ -86,7 +87,8 @@ from memstribo.simulations.mesh.setup import (HERTZ_RATIO_LIMIT, MeshSetup, _rea
 from memstribo.simulations.mesh.sweeps import critical_humidity, sweep
 from memstribo.simulations.mesh.verdict import SUMMARY_KEYS, SUMMARY_UNITS, resisting_force, sliding_average, summarize
 
-__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidity", "SUMMARY_UNITS",
+__all__ = ["MeshSetup", "simulate_mesh", "summarize", "sweep", "critical_humidity", "SUMMARY_UNITS", "refined_cycle",
+           "check_cycle", "run_check",
            "BLOCK_LOAD_VARIANT", "roll_coordinate", "normal_force_of_load_case", "vdw_gap_factor",
            "lattice_overlap_across", "sliding_average", "resisting_force", "step_convergence",
            "simulate_ensemble", "ensemble_summary", "SUMMARY_KEYS", "REALISATION_KEYS", "HERTZ_RATIO_LIMIT",

@@ -159,6 +159,7 @@ def _attributes(params, setup, cycle, verdict, modulus, beta, coating, wear, rea
         "dundurs_beta": beta,
         "friction_passes": cycle["passes"],
         "friction_fixed_point_converged": int(cycle["converged"]),
+        "undetermined_reason": verdict["undetermined"],
         "contact_modulus": modulus,
         "coating": "none (bare silicon)" if coating is None else coating.name,
         "wear": float(wear) if coating is not None else 1.0,

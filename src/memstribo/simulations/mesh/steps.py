@@ -42,13 +42,28 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         _chemical_bonds(out, ctx, setup, flank_states, bare2, row)
         inside, w_x, k1_at_x = _vdw_and_menisci(out, ctx, gap, info, zone, rolls, row)
         _interlocking_energy(out, ctx, (k1, k2), flank_states, kinematics["sliding_fraction"])
-        if ctx.with_cohesive_zone:  # the attraction is the contact solve's cohesive line load over the row
-            out["f_adh"] += info[:, 4] * ctx.w_adh
+        if ctx.with_cohesive_zone:  # the attraction is the contact solve's tensile traction over the row
+            out["f_adh"] += _attraction(pressure, info, zone, ctx)
             continue
         out["f_adh"] += _block_pull_off(ctx, inside, w_x, k1_at_x)
     if pbar is not None:
         pbar.close()
     return out, block_loads, kinematics
+
+
+def _attraction(pressure, info, zone, ctx):
+    """The attraction of the Maugis-Dugdale zone on one row per step [N] (MODEL 7c; issue #25).
+
+    Dry: the whole tensile traction of the solve, ``w_adh dx sum(max(-p, 0))``: the zones outside the contact and
+    the contact's tensile edges, where the pressure is between -sigma0 and 0 (the closed form is
+    :func:`memstribo.physics.closed_form.maugis_dugdale_line_tension`; tests/test_convergence.py). The zone outside
+    the contact alone (the former measure) counts none of a grid element that holds the contact's edge, so on the
+    default grid it missed nearly all of the attraction, and fell where the zone narrows. In humid air (menisci
+    in the same solve) the zone outside the contact, as before: the menisci's traction is added on its own.
+    """
+    if zone is not None:
+        return info[:, 4] * ctx.w_adh
+    return np.maximum(-pressure, 0.0).sum(axis=1) * ctx.dx * ctx.w_adh
 
 
 #: The per-step totals of a cycle, summed over the rows.

@@ -11,7 +11,7 @@ from memstribo.simulations.mesh.verdict import _LOWEST_MENISCUS_HUMIDITY, summar
 
 
 def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None, wear=1.0, progress=False,
-          realisations=1, client=None):
+          realisations=1, client=None, check=False):
     """Meshing cycles over a list of loads, drive torques or nominal areas (thesis 4.9.3, 4.9.4).
 
     Parameters
@@ -33,12 +33,16 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
         probability versus drive torque.
     client : distributed.Client, optional
         Runs each point's realisations on a Dask cluster.
+    check : bool
+        Check each point's first cycle at twice the steps and at twice the grid's resolution
+        (:func:`memstribo.simulations.mesh.convergence.check_cycle`, MODEL 7d: three cycles or more per point).
 
     Returns
     -------
     list of dict
         One summary (:func:`summarize`) per value, with the swept value first under
-        ``"normal_load"``, ``"drive_torque"`` or ``"area"`` (and ``"area_multiple"`` for areas).
+        ``"normal_load"``, ``"drive_torque"`` or ``"area"`` (and ``"area_multiple"`` for areas), and
+        ``converged`` (True or False with ``check``, else None: not checked) with the check's changes.
     """
     values = [float(v) for v in values]
     if not values:
@@ -89,6 +93,11 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
         else:
             summary = summarize(simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear,
                                               warm_start=warm))
+        summary["converged"] = None
+        if check:
+            from memstribo.simulations.mesh.convergence import check_cycle
+
+            summary.update(check_cycle(point_params, roughness, steps=steps, coating=coating, wear=wear))
         points.append({**head, **summary})
     return points
 

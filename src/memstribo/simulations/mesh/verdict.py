@@ -45,9 +45,21 @@ def cycle_verdict(params, setup, cycle) -> dict:
     v["shear_stress"] = np.divide(friction_avg, contact_area, out=np.zeros_like(friction_avg), where=contact_area > 0)
     beta = dundurs_beta(params["youngs_modulus"], params["poisson_ratio"], params["counter_youngs_modulus"],
                         params["counter_poisson_ratio"])
-    v["warnings"] = _warnings(params, out, setup, v["shear_stress"], v["efficiency"], cycle["converged"],
-                              cycle["passes"], beta)
+    v["undetermined"] = _undetermined(params, cycle, beta)
+    v["warnings"] = _warnings(params, out, setup, v["shear_stress"], v["efficiency"], v["undetermined"])
     return v
+
+
+def _undetermined(params, cycle, beta) -> str:
+    """Why the cycle gives no verdict (an unsettled friction fixed point of dissimilar teeth), or "" (issue #25)."""
+    if cycle["converged"]:
+        return ""
+    changes = cycle.get("changes")
+    by = (f": between the last two passes the margin changes by {changes[0] * 100:.2g} % of itself and the mean COF by "
+          f"{changes[1] * 100:.2g} %" if changes else "")
+    return (f"the F_t/F_f fixed point of dissimilar materials (Dundurs beta {beta:.3g}) did not settle within "
+            f"mesh_friction_passes = {int(params['mesh_friction_passes'])} passes{by} (goal < 0.1 %): the verdict is "
+            "undetermined, no COF or stiction flag is a result; raise mesh_friction_passes")
 
 
 #: The keys of the summary (``memstribo mesh --json``) and of the ensemble verdict, with their units from the
@@ -143,7 +155,7 @@ def _window_advice(params) -> str:
     return "the window grew as far as the memory bound allows (use a coarser mesh_grid_spacing)"
 
 
-def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converged, passes, beta) -> list[str]:
+def _warnings(params, out, setup, shear_stress, efficiency, undetermined="") -> list[str]:
     """Physical limits and numerical trouble of a cycle, as sentences (MODEL 7c)."""
     warnings = []
     if setup.hertz_width_ratio > 0.2:
@@ -170,9 +182,8 @@ def _warnings(params, out, setup, shear_stress, efficiency, fixed_point_converge
         warnings.append(f"the friction stress over the real contact reaches {peak_shear / 1e9:.3g} GPa, above the ideal "
                         f"shear strength of silicon ({params['ideal_shear_strength'] / 1e9:.3g} GPa): the teeth "
                         "would shear and wear rather than slide")
-    if not fixed_point_converged:
-        warnings.append(f"the F_t/F_f fixed point of dissimilar materials (Dundurs beta {beta:.3g}) did not converge "
-                        f"in {passes} passes: the friction is not reliable")
+    if undetermined:
+        warnings.append(undetermined)
     if (efficiency <= 0).any():
         warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
                         "step(s): friction takes more power than the drive supplies there")
@@ -193,7 +204,9 @@ def summarize(dataset) -> dict:
     ``integral (F_N + F_adh) ds`` (3-7 over the cycle), and its split by mechanism
     (``cof_chemical``, ``cof_vdw``, ``cof_elastic``) is the same ratio per mechanism, so the
     parts add up to ``cof_mean`` exactly. The stiction verdict: ``resisting_force_max`` is the
-    largest R(c), ``stiction_margin`` = ``tangential_force`` - ``resisting_force_max`` (MODEL 7b).
+    largest R(c), ``stiction_margin`` = ``tangential_force`` - ``resisting_force_max`` (MODEL 7b). ``verdict`` is
+    "running stiction", "start-up stiction", "no stiction" or "undetermined" (an unsettled fixed point of dissimilar teeth: ``stiction`` is then
+    None and ``undetermined_reason`` says why; the numbers are the last pass's, not a result).
     """
     import json
 
@@ -211,7 +224,10 @@ def summarize(dataset) -> dict:
     f_t = float(dataset.attrs["tangential_force_total"])
     margin = f_t - float(resisting.max())
     efficiency = np.asarray(dataset["mesh_efficiency"])
+    undetermined = str(dataset.attrs.get("undetermined_reason", ""))
     return {
+        "verdict": _verdict_word(dataset, f_t, margin, undetermined),
+        "undetermined_reason": undetermined,
         "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split.get("cof_capillary", 0.0),
         "cof_max": float(dataset["cof"].max()),
         **split,
@@ -222,7 +238,7 @@ def summarize(dataset) -> dict:
         "normal_force_max": float(dataset["normal_force"].max()),
         "normal_force_total": float(dataset.attrs["normal_force_total"]),
         "tangential_force": f_t,
-        "stiction": bool(margin < 0),
+        "stiction": None if undetermined else bool(margin < 0),
         "stiction_margin": margin,
         "mesh_efficiency": float(dataset.attrs["mesh_efficiency_mean"]),
         "mesh_efficiency_min": float(efficiency.min()),
@@ -248,6 +264,18 @@ def summarize(dataset) -> dict:
         "fitted_constants": json.loads(dataset.attrs.get("fitted_constants", "[]")),  # with their fit conditions
         "warnings": json.loads(dataset.attrs.get("warnings", "[]")),
     }
+
+
+def _verdict_word(dataset, f_t, margin, undetermined) -> str:
+    """"undetermined" (an unsettled fixed point, issue #25), "running stiction", "start-up stiction" (MODEL 7d, where
+    the dataset has the start-up verdict) or "no stiction"."""
+    if undetermined:
+        return "undetermined"
+    if margin < 0:
+        return "running stiction"
+    if "startup_resisting_force" in dataset and f_t - float(dataset["startup_resisting_force"].max()) < 0:
+        return "start-up stiction"
+    return "no stiction"
 
 
 def _limit_summary(dataset, f_t, margin) -> dict:
@@ -281,3 +309,35 @@ def _limit_summary(dataset, f_t, margin) -> dict:
         if key in dataset.attrs:
             summary[key] = float(dataset.attrs[key])
     return summary
+
+
+# --- convergence on what is decided (MODEL 7d, issue #25) ------------------------------------------------
+#: Largest relative change of the margin (of |margin|) and of the mean COF (of itself) that counts as converged.
+TOLERANCE = 0.02
+
+
+def relative_change(new: float, old: float) -> float:
+    """|new - old| / |old| [-]; infinite where old is 0 and new is not (nothing to be relative to)."""
+    change = abs(float(new) - float(old))
+    scale = abs(float(old))
+    if scale > 0.0:
+        return change / scale
+    return 0.0 if change == 0.0 else float("inf")
+
+
+def compare_cycles(fine: dict, coarse: dict) -> dict:
+    """The changes between two cycles' summaries (:func:`memstribo.simulations.mesh.summarize`).
+
+    Returns
+    -------
+    dict
+        ``margin`` (of |margin| of ``coarse``), ``margin_ft`` (of F_t), ``cof`` (of the coarse mean COF),
+        ``adhesion`` (of the coarse mean adhesion force), all [-], and ``passed`` (margin and COF below
+        :data:`TOLERANCE`).
+    """
+    margin = relative_change(fine["stiction_margin"], coarse["stiction_margin"])
+    margin_ft = abs(fine["stiction_margin"] - coarse["stiction_margin"]) / max(abs(coarse["tangential_force"]), 1e-300)
+    cof = relative_change(fine["cof_mean"], coarse["cof_mean"])
+    adhesion = relative_change(fine["adhesion_force_mean"], coarse["adhesion_force_mean"])
+    return {"margin": margin, "margin_ft": margin_ft, "cof": cof, "adhesion": adhesion,
+            "passed": bool(margin < TOLERANCE and cof < TOLERANCE)}

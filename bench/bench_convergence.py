@@ -1,0 +1,103 @@
+"""Benchmark of a verdict that holds still (issue #25): the self-refining cycle, the step and grid changes, the
+adhesion force against the grid, dissimilar teeth, and the thesis's load case on an 8 um face.
+
+    OMP_NUM_THREADS=1 python bench/bench_convergence.py [--parts refine steps grid adhesion dissimilar thesis]
+        [--realisations 0 1] [--thesis-steps 25]
+
+Every part prints one JSON line with its numbers, the CPU and wall time, and the machine's load average at its
+start and end (the development machine is shared: the CPU time is the fairer number). One core per process
+(SolverSettings.fft_workers = 1, OMP_NUM_THREADS=1). Also the benchmark named by SolverSettings.cohesive_start:
+``steps`` compares the margin at 481, 961 and 1921 steps (the loading-branch state makes it hold still).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import time
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+
+def _timed(function):
+    load = os.getloadavg()
+    cpu, wall = time.process_time(), time.perf_counter()
+    result = function()
+    return result, {"cpu_s": round(time.process_time() - cpu, 2), "wall_s": round(time.perf_counter() - wall, 2),
+                    "load_before": [round(x, 2) for x in load],
+                    "load_after": [round(x, 2) for x in os.getloadavg()]}
+
+
+def _line(part, **values):
+    print(json.dumps({"part": part, **values}), flush=True)
+
+
+def main(argv=None):
+    from memstribo.api import parameter_set
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.simulations.mesh.convergence import refined_cycle
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--parts", nargs="+", default=["refine", "steps", "dissimilar"],
+                        choices=("refine", "steps", "grid", "adhesion", "dissimilar", "thesis"))
+    parser.add_argument("--realisations", nargs="+", type=int, default=[0, 1])
+    parser.add_argument("--thesis-steps", type=int, default=25)
+    args = parser.parse_args(argv)
+    params = parameter_set()
+    simulate_mesh(params, steps=11)  # the compiled zone loop: loaded (and compiled once per machine) before timing
+
+    def summary(p, steps, realisation=0):
+        return summarize(simulate_mesh(p, steps=steps, realisation=realisation))
+
+    if "refine" in args.parts:  # the default cycle with its refinement (memstribo mesh)
+        for k in args.realisations:
+            (_, s), t = _timed(lambda: refined_cycle(params, realisation=k))
+            _line("refine", realisation=k, converged=s["converged"], steps=s["steps"],
+                  elements_across_contact=s["elements_across_contact"], margin_mN=s["stiction_margin"] * 1e3,
+                  cof_mean=s["cof_mean"], adhesion_force_uN=s["adhesion_force_mean"] * 1e6,
+                  refinement=s["refinement"], **t)
+    if "steps" in args.parts:  # the margin at 2x and 4x the steps (the issue's first measurement)
+        for k in args.realisations:
+            for across in (40, 80):
+                p = params.updated({"mesh_elements_across_contact": across})
+                rows = []
+                for steps in (481, 961, 1921):
+                    s, t = _timed(lambda: summary(p, steps, k))
+                    rows.append({"steps": steps, "margin_mN": s["stiction_margin"] * 1e3, "cof_mean": s["cof_mean"],
+                                 "adhesion_force_uN": s["adhesion_force_mean"] * 1e6, **t})
+                _line("steps", realisation=k, elements_across_contact=across, rows=rows,
+                      change_2x=abs(rows[1]["margin_mN"] / rows[0]["margin_mN"] - 1),
+                      change_4x=abs(rows[2]["margin_mN"] / rows[0]["margin_mN"] - 1))
+    if "grid" in args.parts or "adhesion" in args.parts:  # the grid (adhesion: up to 320 elements across 2a)
+        largest = 320 if "adhesion" in args.parts else 160
+        steps = 481 if "grid" in args.parts else 121
+        for k in args.realisations[:1] if "adhesion" in args.parts else args.realisations:
+            rows = []
+            for across in (40, 80, 160, 320):
+                if across > largest:
+                    break
+                s, t = _timed(lambda: summary(params.updated({"mesh_elements_across_contact": across}), steps, k))
+                rows.append({"elements_across_contact": across, "margin_mN": s["stiction_margin"] * 1e3,
+                             "cof_mean": s["cof_mean"], "adhesion_force_uN": s["adhesion_force_mean"] * 1e6, **t})
+            _line("grid", realisation=k, steps=steps, rows=rows)
+    if "dissimilar" in args.parts:  # the F_t/F_f fixed point at the default steps
+        for counter in (20e9, 400e9):
+            ds, t = _timed(lambda: simulate_mesh(params.updated({"counter_youngs_modulus": counter})))
+            s = summarize(ds)
+            _line("dissimilar", counter_youngs_modulus=counter, beta=ds.attrs["dundurs_beta"],
+                  passes=ds.attrs["friction_passes"], converged=bool(ds.attrs["friction_fixed_point_converged"]),
+                  verdict=s["verdict"], margin_mN=s["stiction_margin"] * 1e3, cof_mean=s["cof_mean"], **t)
+    if "thesis" in args.parts:  # memstribo mesh --load-case thesis --set face_width=8um, a few steps
+        p = params.updated({"load_case": "thesis", "face_width": 8e-6})
+        ds, t = _timed(lambda: simulate_mesh(p, steps=args.thesis_steps))
+        per_step = t["cpu_s"] / args.thesis_steps
+        _line("thesis", steps=args.thesis_steps, rows=int(ds.attrs["rows"]),
+              grid_spacing_nm=ds.attrs["grid_spacing"] * 1e9,
+              elements=int(round(ds.attrs["window"] / ds.attrs["grid_spacing"])),
+              updates_per_solve=float(ds["contact_iterations"].mean()),
+              cpu_per_step_s=round(per_step, 3), cpu_481_steps_estimate_s=round(481 * per_step, 1), **t)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,281 @@
+"""A verdict that holds still (issue #25, MODEL 7d): the self-refining cycle, the cohesive zone against Baney & Hui,
+the friction fixed point of dissimilar teeth."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from memstribo.api import parameter_set
+from memstribo.errors import InputError
+from memstribo.physics.closed_form import maugis_dugdale_line_load, maugis_dugdale_line_tension
+from memstribo.simulations.mesh import simulate_mesh, summarize
+from memstribo.simulations.mesh.convergence import TOLERANCE, compare_cycles, refined_cycle, relative_change
+
+
+@pytest.fixture(scope="module")
+def params():
+    return parameter_set()
+
+
+def _torque_contact(params):
+    """(line load [N/m], R_ef [m], E* [Pa], w [J/m^2], sigma0 [Pa]) of smooth teeth at the pitch point, torque case."""
+    from memstribo.materials.pair import contact_modulus_of
+    from memstribo.physics.adhesion import nanoscale_constants
+    from memstribo.physics.gear import GearPair
+    from memstribo.simulations.mesh import normal_force_of_load_case
+
+    pair = GearPair.from_parameters(params)
+    rows = int(params["face_width"] // params["adhesive_width"])
+    share = float(pair.load_share(np.array([0.0]), params["load_sharing"])[0])
+    line_load = share * normal_force_of_load_case(params, pair) / (rows * params["adhesive_width"])
+    radius = float(pair.effective_radius(np.array([0.0]))[0])
+    constants = nanoscale_constants(params)
+    return (line_load, radius, contact_modulus_of(params), float(constants.work_of_adhesion),
+            float(constants.maugis_stress))
+
+
+# --- the closed form --------------------------------------------------------------------------------------------
+def test_maugis_dugdale_tension_is_consistent_with_the_load_equation(params):
+    """The tension's contact half-width and zone end are those of maugis_dugdale_line_load at the same load, and
+    the tension lies between the zones' own pull 2 sigma0 (c - a) and the load equation's adhesive term
+    2 sigma0 sqrt(c^2 - a^2)."""
+    load, radius, modulus, w, sigma0 = _torque_contact(params)
+    tension, a, c = maugis_dugdale_line_tension(load, radius, modulus, w, sigma0)
+    again, c_again = maugis_dugdale_line_load(a, radius, modulus, w, sigma0)
+    assert again == pytest.approx(load, rel=1e-9)
+    assert c_again == pytest.approx(c, rel=1e-12)
+    assert 2 * sigma0 * (c - a) < tension < 2 * sigma0 * math.sqrt(c * c - a * a)
+    with pytest.raises(InputError, match="pull-off"):
+        maugis_dugdale_line_tension(-1e3, radius, modulus, w, sigma0)
+
+
+# --- the zone of the solve against Baney & Hui (smooth teeth, the torque's load) --------------------------------
+def _smooth_solve(params, dx, work=None, offset=0.3):
+    from memstribo.physics.contact import solve_line_contact
+
+    load, radius, modulus, w, sigma0 = _torque_contact(params)
+    if work is not None:  # sigma0 = w / D0-type rule: both scale with w (nanoscale_constants)
+        sigma0, w = sigma0 * work / w, work
+    n = int(round(1.3e-6 / dx))
+    x = (np.arange(n) - 0.5 * (n - 1) + offset) * dx
+    solution = solve_line_contact(x**2 / (2 * radius), dx, modulus, load=load, cohesive_stress=sigma0,
+                                  cohesive_range=w / sigma0)
+    assert solution.converged, solution.message
+    tension = float(np.maximum(-solution.pressure, 0.0).sum() * dx)
+    gap, right, h0 = solution.gap, x > 0, w / sigma0
+    first_open = np.flatnonzero(right & (gap > h0))[0]  # the zone ends where the gap crosses h0 (linear)
+    zone_end = x[first_open - 1] + (h0 - gap[first_open - 1]) / (gap[first_open] - gap[first_open - 1]) * dx
+    edge = x[right & solution.contact].max() + 0.5 * dx  # the contact's outer element boundary
+    closed = maugis_dugdale_line_tension(load, radius, modulus, w, sigma0)
+    return tension, edge, zone_end, closed
+
+
+def test_cohesive_zone_matches_baney_hui_on_smooth_teeth_at_the_torques_load(params):
+    """On a 1.55 nm grid the solve's tension (zones and the contact's tensile edges) is the closed form's within
+    2 %, its zone ends where Baney & Hui's does and is as wide, within one element (7.5 nm wide, 44 N/m)."""
+    dx = 1.55e-9
+    tension, edge, zone_end, (expected, a, c) = _smooth_solve(params, dx)
+    assert tension == pytest.approx(expected, rel=0.02)
+    assert zone_end == pytest.approx(c, abs=dx)
+    assert zone_end - edge == pytest.approx(c - a, abs=dx)
+    assert 5e-9 < c - a < 10e-9  # the zone the default 24.8 nm grid cannot resolve
+
+
+def test_doubling_the_work_of_adhesion_raises_the_attraction(params):
+    """sigma0 follows w (nanoscale_constants), so doubling w doubles sigma0 at the same h0: the zone narrows but the
+    tension rises, in the closed form and in the solve (the former zone-only measure fell)."""
+    w = _torque_contact(params)[3]
+    single = _smooth_solve(params, 3.1e-9)
+    double = _smooth_solve(params, 3.1e-9, work=2 * w)
+    assert double[3][0] > 1.5 * single[3][0]
+    assert double[0] > 1.5 * single[0]
+    assert double[0] == pytest.approx(double[3][0], rel=0.03)
+
+
+def test_the_cycles_adhesion_force_is_the_solves_tension(params):
+    """Smooth teeth, one row, a resolved grid: the cycle's adhesion force over the row is the closed-form tension at
+    each step's line load and radius (within 3 %)."""
+    from memstribo.physics.adhesion import nanoscale_constants
+    from memstribo.surfaces.roughness import Profile
+
+    flat = Profile(x=np.arange(20000) * 1e-9, z=np.zeros(20000), name="flat")
+    rows = int(params["face_width"] // params["adhesive_width"])  # one row under its share of the torque
+    smooth = params.updated({"face_width": 1.0001 * params["adhesive_width"], "drive_torque": params["drive_torque"]
+                             / rows, "mesh_grid_spacing": 1.55e-9, "mesh_window": 1.4e-6})
+    ds = simulate_mesh(smooth, flat, steps=3)
+    assert not ds.window_exceeded.any()
+    constants = nanoscale_constants(smooth)
+    w, sigma0 = float(constants.work_of_adhesion), float(constants.maugis_stress)
+    width = ds.attrs["effective_face_width"]
+    for i in range(ds.sizes["step"]):
+        expected = maugis_dugdale_line_tension(float(ds.normal_force[i]) / width, float(ds.effective_radius[i]),
+                                               ds.attrs["contact_modulus"], w, sigma0)[0]
+        assert float(ds.adhesion_force[i]) / width == pytest.approx(expected, rel=0.03), i
+
+
+def test_doubling_the_work_of_adhesion_raises_the_cycles_adhesion_force(params):
+    """The default cycle (rough teeth): twice w gives a larger adhesion force (version 2's zone-only measure fell from
+    2.67 to 0.06 uN); measured at 121 steps: 111 -> 120 uN at 40 elements across 2a, 162 -> 207 uN at 80."""
+    w = float(_torque_contact(params)[3])
+    single = summarize(simulate_mesh(params, steps=31))["adhesion_force_mean"]
+    double = summarize(simulate_mesh(params.updated({"work_of_adhesion": 2 * w}), steps=31))["adhesion_force_mean"]
+    assert double > 1.02 * single > 0
+
+
+# --- the refinement -----------------------------------------------------------------------------------------------
+def test_relative_changes_divide_by_the_quantity_checked():
+    base = {"stiction_margin": 1.0e-3, "cof_mean": 0.5, "adhesion_force_mean": 1e-5, "tangential_force": 2.8e-3}
+    fine = {"stiction_margin": 0.97e-3, "cof_mean": 0.505, "adhesion_force_mean": 1.2e-5, "tangential_force": 2.8e-3}
+    change = compare_cycles(fine, base)
+    assert change["margin"] == pytest.approx(0.03)  # of |margin|: fails the 2 %
+    assert change["margin_ft"] == pytest.approx(0.03e-3 / 2.8e-3)  # of F_t: would pass
+    assert change["cof"] == pytest.approx(0.01)
+    assert change["adhesion"] == pytest.approx(0.2)
+    assert change["passed"] is False
+    assert relative_change(0.0, 0.0) == 0.0 and relative_change(1.0, 0.0) == math.inf
+
+
+class _Fake:
+    """A cycle whose margin converges like 1 + 4 / steps and whose COF like 0.5 + 2 / elements across."""
+
+    def __init__(self):
+        self.calls = []
+
+    def simulate(self, params, roughness, *, steps, **_):
+        self.calls.append((steps, params["mesh_elements_across_contact"]))
+        return type("D", (), {"attrs": {"grid_spacing": 1.0 / params["mesh_elements_across_contact"]},
+                              "steps": steps, "across": params["mesh_elements_across_contact"]})()
+
+    @staticmethod
+    def summarize(dataset):
+        return {"stiction_margin": 1.0 + 4.0 / dataset.steps, "cof_mean": 0.5 + 2.0 / dataset.across,
+                "adhesion_force_mean": 1.0, "tangential_force": 3.0, "warnings": []}
+
+
+def test_the_cycle_refines_steps_then_grid_until_both_hold(params):
+    fake = _Fake()
+    start = params.updated({"mesh_elements_across_contact": 40})
+    _, summary = refined_cycle(start, steps=101, step_refinements=4, grid_refinements=4, simulate=fake.simulate,
+                               summarize=fake.summarize)
+    # steps: 101 -> 201 (change 0.019/1.04 = 1.9 %: passes); grid 40 -> 80 (COF 0.05 -> 0.025: 4.8 %) -> 160 (2.4 %)
+    # -> 320 (1.2 %: passes)
+    assert fake.calls == [(101, 40), (201, 40), (201, 80), (201, 160), (201, 320)]
+    assert summary["converged"] and summary["step_converged"] and summary["grid_converged"]
+    assert summary["steps"] == 201 and summary["elements_across_contact"] == 320
+    assert summary["grid_change_cof"] == pytest.approx((2 / 160 - 2 / 320) / (0.5 + 2 / 160))
+    assert summary["grid_change_cof"] < TOLERANCE
+    assert len(summary["refinement"]) == 4
+
+
+def test_a_cycle_that_does_not_converge_within_its_caps_says_so(params):
+    fake = _Fake()
+    _, summary = refined_cycle(params, steps=11, step_refinements=1, grid_refinements=1, simulate=fake.simulate,
+                               summarize=fake.summarize)
+    assert summary["converged"] is False and summary["step_converged"] is False and summary["grid_converged"] is False
+    text = " ".join(summary["warnings"])
+    assert "mesh_step_refinements = 1" in text and "mesh_grid_refinements = 1" in text and "of |margin|" in text
+    with pytest.raises(InputError, match="mesh_step_refinements"):
+        refined_cycle(params, steps=11, step_refinements=9, simulate=fake.simulate, summarize=fake.summarize)
+
+
+def test_refinement_caps_are_bounded_parameters(params):
+    with pytest.raises(InputError, match="mesh_step_refinements"):
+        params.updated({"mesh_step_refinements": 9})
+    with pytest.raises(InputError, match="mesh_grid_refinements"):
+        params.updated({"mesh_grid_refinements": -1})
+
+
+def test_the_real_cycle_reports_its_changes_relative_to_what_is_decided(params):
+    """Two cheap comparisons of the real cycle: the reported changes are those of the cycles run alone."""
+    _, summary = refined_cycle(params, steps=31, step_refinements=1, grid_refinements=1)
+    coarse = summarize(simulate_mesh(params, steps=31))
+    fine = summarize(simulate_mesh(params, steps=61))
+    finer_grid = summarize(simulate_mesh(params.updated({"mesh_elements_across_contact": 80}), steps=61))
+    assert summary["step_change_margin"] == pytest.approx(abs(fine["stiction_margin"] - coarse["stiction_margin"])
+                                                          / abs(coarse["stiction_margin"]), rel=1e-9)
+    assert summary["grid_change_margin"] == pytest.approx(
+        abs(finer_grid["stiction_margin"] - fine["stiction_margin"]) / abs(fine["stiction_margin"]), rel=1e-9)
+    assert summary["stiction_margin"] == pytest.approx(finer_grid["stiction_margin"], rel=1e-12)
+    assert summary["converged"] == (summary["step_converged"] and summary["grid_converged"])
+
+
+# --- dissimilar teeth -------------------------------------------------------------------------------------------
+@pytest.mark.slow
+@pytest.mark.parametrize("counter", [20e9, 400e9])
+def test_dissimilar_teeth_converge_at_the_default_steps(params, counter):
+    """Dundurs beta -0.27 and +0.15: the F_t/F_f fixed point settles (margin and mean COF to 1e-3 between passes)."""
+    ds = simulate_mesh(params.updated({"counter_youngs_modulus": counter}))
+    assert ds.attrs["friction_fixed_point_converged"] == 1
+    summary = summarize(ds)
+    assert summary["verdict"] in ("running stiction", "start-up stiction", "no stiction")
+    assert not any("not reliable" in text or "did not converge" in text for text in summary["warnings"])
+
+
+def test_an_unsettled_fixed_point_gives_no_verdict(params):
+    """With too few passes allowed the dissimilar cycle is undetermined: no stiction flag, and the JSON says why."""
+    ds = simulate_mesh(params.updated({"counter_youngs_modulus": 20e9, "mesh_friction_passes": 2}), steps=61)
+    summary = summarize(ds)
+    assert summary["verdict"] == "undetermined" and summary["stiction"] is None
+    assert "mesh_friction_passes" in summary["undetermined_reason"]
+    assert ds.attrs["friction_fixed_point_converged"] == 0
+
+
+# --- sweeps and maps ----------------------------------------------------------------------------------------------
+def test_map_notes_count_and_figures_mark_the_points_that_are_not_converged():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import xarray as xr
+
+    from memstribo.simulations.design_map import _mark_points, _notes
+
+    flags = np.array([[1.0, 0.0], [np.nan, 0.0]])
+    ds = xr.Dataset({"converged": (("a", "b"), flags), "note": (("a", "b"), np.full((2, 2), "", dtype=object))})
+    assert any(text.startswith("2 of 3 checked point(s) not converged") for text in _notes(ds))
+    figure, ax = plt.subplots()
+    _mark_points(ax, np.array([1.0, 2.0]), np.array([10.0, 20.0]), flags)
+    hollow = [line for line in ax.lines if line.get_markerfacecolor() == "none"]
+    assert len(hollow) == 1 and len(hollow[0].get_xdata()) == 2
+    plt.close(figure)
+
+
+def test_sweep_points_carry_converged(params):
+    from memstribo.simulations.mesh import sweep
+
+    unchecked = sweep(params, "torque", [2.3e-7], steps=11)
+    assert unchecked[0]["converged"] is None
+    checked = sweep(params, "torque", [2.3e-7], steps=11, check=True)
+    assert isinstance(checked[0]["converged"], bool)
+    assert checked[0]["step_change_margin"] >= 0 and checked[0]["grid_change_cof"] >= 0
+
+
+def test_the_zone_kernels_factor_update_equals_a_new_factorisation():
+    """Rows removed from and added to the Cholesky factor of a contact set (the compiled zone loop, issue #25) give
+    the factor of the new set, in the order kept, as a new factorisation does."""
+    from memstribo.physics import _zone_kernel as kernel
+
+    rng = np.random.default_rng(7)
+    n = 40
+    basis = rng.normal(size=(n, n))
+    matrix = basis @ basis.T + n * np.eye(n)
+    old = np.zeros(n, dtype=bool)
+    old[5:30] = True
+    order = np.flatnonzero(old).astype(np.int64)
+    order = np.concatenate([order, np.zeros(n - order.size, np.int64)])
+    factor = np.zeros((n, n))
+    assert kernel._cholesky(matrix, order, int(old.sum()), factor)
+    cached = np.concatenate([old, [True]])
+    new = old.copy()
+    new[[5, 17, 29]] = False  # removed: first, middle, last
+    new[[3, 31, 33]] = True  # added
+    m = kernel._update_factor(matrix, new, cached, order, int(old.sum()), factor, np.zeros(n), 8)
+    assert m == int(new.sum())
+    kept = order[:m]
+    assert set(kept) == set(np.flatnonzero(new))
+    expected = np.linalg.cholesky(matrix[np.ix_(kept, kept)])
+    np.testing.assert_allclose(np.tril(factor[:m, :m]), expected, rtol=1e-10, atol=1e-10)
+    assert kernel._update_factor(matrix, ~new, cached, order, m, factor, np.zeros(n), 8) == -1  # too many changes
