@@ -82,8 +82,6 @@ _ENTRIES = [
      "pull-off (3-32) with the bridges' work of separation, summed (3-31); issue #28, docs/humidity.md"),
     ("bridged_area", "m^2", "bridged area", "area of the rough rows where the gap is below h_c plus the adsorbed "
      "water films (water bridges, issue #28)"),
-    ("capillary_pull_off_mean", "N", "mean capillary pull-off force", "capillary_pull_off averaged over the "
-     "sliding distance of the cycle (in air only)"),
     ("adsorbed_water_thickness", "m", "adsorbed water film thickness", "thickness t(RH) of the water film on "
      "hydrophilic silicon oxide from the published isotherm (Asay and Kim 2005; Verdaguer et al. 2007)"),
     ("normal_force", "N", "normal force", "normal force on the tooth pair (mesh) or on the structure (slide)"),
