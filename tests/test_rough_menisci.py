@@ -76,3 +76,17 @@ def test_teeth_coated_on_both_flanks_stay_flat_in_humidity(cli):
     half = cli.json("sweep", "humidity", "--values", "0.5", "--coating", "OTS", "--wear", "0", "--steps", "41")
     bare = cli.json("sweep", "humidity", "--values", "0.5", "--steps", "41")
     assert 0 < half["points"][0]["capillary_pull_off_mean"] < bare["points"][0]["capillary_pull_off_mean"]
+
+
+def test_the_bridges_work_is_the_microbeam_models_capillary_part_without_films():
+    """The laboratory's rigid microbeam integrates the meniscus pressure over the separation numerically
+    (:func:`memstribo.laboratory.predict.beam_work_of_separation`); without films the closed form agrees."""
+    from memstribo.laboratory.predict import beam_work_of_separation
+    from memstribo.parameters import get_parameter_values
+
+    params = get_parameter_values()
+    gap = np.random.default_rng(3).exponential(2e-9, 400)
+    theta = params["water_contact_angle"]
+    r_k = kelvin_radius(0.7, params["ambient_temperature"])
+    closed = np.mean(meniscus_work_of_separation(gap, r_k, condensation_height(r_k, theta)))
+    assert beam_work_of_separation(gap, params, 0.7)[2] == pytest.approx(closed, rel=5e-3)
