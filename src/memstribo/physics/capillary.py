@@ -13,7 +13,9 @@ equilibrium with the vapour (Fisher and Israelachvili 1981; Butt and Kappl 2009)
 condensation height ``h_c = r_K (cos theta_1 + cos theta_2)``, the Laplace pressure
 ``gamma / r_K`` acting over the wetted area, and no meniscus on a hydrophobic pair
 (``cos theta_1 + cos theta_2 <= 0``). Valid when r_K is well above a molecular size (RH above
-about 0.1); the adsorbed-film regime below is not modelled (say so where it matters).
+about 0.1); the adsorbed-film regime below is not modelled as a force (say so where it matters). The
+adsorbed water film's thickness (a published isotherm on silicon oxide, [4]_ [5]_) sets how far a water bridge
+reaches: :func:`bridging_height`, :func:`meniscus_work_of_separation` (issue #28).
 
 References
 ----------
@@ -23,6 +25,10 @@ References
    48-60. :doi:`10.1016/j.cis.2008.10.002`
 .. [3] J. N. Israelachvili, Intermolecular and Surface Forces, 3rd ed., Academic Press, 2011,
    chapter 17.
+.. [4] D. B. Asay, S. H. Kim, "Evolution of the adsorbed water layer structure on silicon oxide at room
+   temperature", J. Phys. Chem. B 109 (2005) 16760-16763.
+.. [5] A. Verdaguer et al., "Growth and structure of water on SiO2 films on Si investigated by Kelvin probe
+   microscopy and in situ X-ray spectroscopies", Langmuir 23 (2007) 9699-9703. :doi:`10.1021/la700893w`
 """
 
 from __future__ import annotations
@@ -271,6 +277,7 @@ def adsorbed_water_thickness(relative_humidity):
     return float(result) if np.ndim(result) == 0 else result
 
 
+@cites("butt_kappl_2009")
 def bridging_height(kelvin, film_1, film_2, contact_angle_1, contact_angle_2=None):
     """Largest gap that a water bridge spans, ``h_c + t_1 + t_2`` [m] (Butt and Kappl 2009, [2]_).
 
