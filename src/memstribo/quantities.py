@@ -77,6 +77,13 @@ _ENTRIES = [
      "solve; with menisci in humid air)"),
     ("capillary_force", "N", "capillary force", "attraction of the capillary menisci (part of F_adh)"),
     ("wetted_area", "m^2", "wetted area", "area under capillary menisci"),
+    ("capillary_pull_off", "N", "capillary pull-off force", "force to pull the flanks apart against the water "
+     "bridges of the rough rows: every gap below h_c plus the adsorbed films (isotherm on SiO2), each pinion block's "
+     "pull-off (3-32) with the bridges' work of separation, summed (3-31); issue #28, docs/humidity.md"),
+    ("bridged_area", "m^2", "bridged area", "area of the rough rows where the gap is below h_c plus the adsorbed "
+     "water films (water bridges, issue #28)"),
+    ("adsorbed_water_thickness", "m", "adsorbed water film thickness", "thickness t(RH) of the water film on "
+     "hydrophilic silicon oxide from the published isotherm (Asay and Kim 2005; Verdaguer et al. 2007)"),
     ("normal_force", "N", "normal force", "normal force on the tooth pair (mesh) or on the structure (slide)"),
     ("normal_force_total", "N", "total normal force", "normal force F_t / cos(alpha) of the load case, shared by the "
      "pairs in mesh"),

@@ -130,6 +130,20 @@ REFERENCES: dict[str, str] = {
         "F. W. DelRio, M. L. Dunn, L. M. Phinney, C. J. Bourdon, M. P. de Boer, 'Rough surface adhesion in the "
         "presence of capillary condensation', Appl. Phys. Lett. 90 (2007) 163104. doi:10.1063/1.2723658"
     ),
+    "butt_kappl_2009": (
+        "H.-J. Butt, M. Kappl, 'Normal capillary forces', Adv. Colloid Interface Sci. 146 (2009) 48-60. "
+        "doi:10.1016/j.cis.2008.10.002"
+    ),
+    "asay_kim_2005": (
+        "D. B. Asay, S. H. Kim, 'Evolution of the adsorbed water layer structure on silicon oxide at room "
+        "temperature', J. Phys. Chem. B 109 (2005) 16760-16763 (its text and DOI not found in the searched records; "
+        "the three ice-like layers up to RH 0.3 are its abstract's statement)"
+    ),
+    "verdaguer_2007": (
+        "A. Verdaguer, C. Weis, G. Oncins, G. Ketteler, H. Bluhm, M. Salmeron, 'Growth and structure of water on "
+        "SiO2 films on Si investigated by Kelvin probe microscopy and in situ X-ray spectroscopies', Langmuir 23 "
+        "(2007) 9699-9703. doi:10.1021/la700893w"
+    ),
     "deboer_1998": (
         "M. P. de Boer, P. J. Clews, B. K. Smith, T. A. Michalske, 'Adhesion of polysilicon microbeams in controlled "
         "humidity ambients', MRS Proc. 518 (1998) 131. doi:10.1557/PROC-518-131"

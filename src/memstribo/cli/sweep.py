@@ -92,6 +92,9 @@ def run(args, params):
     extra = ["stiction_probability", "stiction_margin_p05", "stiction_margin_median", "stiction_margin_p95",
              "cof_mean_p05", "cof_mean_median", "cof_mean_p95"] if args.realisations > 1 else []
     extra += ["cof_capillary", "energy_capillary"] if args.parameter == "humidity" else []
+    # the force to pull the flanks apart against the rough rows' water bridges (issue #28), where the run has it
+    extra += ["capillary_pull_off_mean"] if args.parameter == "humidity" and all(
+        "capillary_pull_off_mean" in point for point in points) else []
     # will a tooth break (MODEL §10): the torque window between "sticks" and "breaks"
     extra += ["fracture_probability", "cycles_to_fracture_p01", "root_stress_max"] if args.parameter == "torque" else []
     points = [{key: point[key] for key in head + list(MESH_KEYS) + ["energy_dissipated", "energy_chemical",

@@ -13,7 +13,9 @@ equilibrium with the vapour (Fisher and Israelachvili 1981; Butt and Kappl 2009)
 condensation height ``h_c = r_K (cos theta_1 + cos theta_2)``, the Laplace pressure
 ``gamma / r_K`` acting over the wetted area, and no meniscus on a hydrophobic pair
 (``cos theta_1 + cos theta_2 <= 0``). Valid when r_K is well above a molecular size (RH above
-about 0.1); the adsorbed-film regime below is not modelled (say so where it matters).
+about 0.1); the adsorbed-film regime below is not modelled as a force (say so where it matters). The
+adsorbed water film's thickness (a published isotherm on silicon oxide, [4]_ [5]_) sets how far a water bridge
+reaches: :func:`bridging_height`, :func:`meniscus_work_of_separation` (issue #28).
 
 References
 ----------
@@ -23,6 +25,10 @@ References
    48-60. :doi:`10.1016/j.cis.2008.10.002`
 .. [3] J. N. Israelachvili, Intermolecular and Surface Forces, 3rd ed., Academic Press, 2011,
    chapter 17.
+.. [4] D. B. Asay, S. H. Kim, "Evolution of the adsorbed water layer structure on silicon oxide at room
+   temperature", J. Phys. Chem. B 109 (2005) 16760-16763.
+.. [5] A. Verdaguer et al., "Growth and structure of water on SiO2 films on Si investigated by Kelvin probe
+   microscopy and in situ X-ray spectroscopies", Langmuir 23 (2007) 9699-9703. :doi:`10.1021/la700893w`
 """
 
 from __future__ import annotations
@@ -37,13 +43,20 @@ from memstribo.references import cites
 
 __all__ = ["GAS_CONSTANT", "WATER", "REFERENCE_TEMPERATURE", "water_surface_tension", "kelvin_radius",
            "condensation_height", "laplace_pressure",
-           "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap"]
+           "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap",
+           "WATER_ISOTHERM_SIO2", "water_monolayer_thickness", "adsorbed_water_thickness", "bridging_height",
+           "meniscus_work_of_separation"]
 
 #: Molar gas constant R [J/(mol K)] (CODATA 2018, exact).
 GAS_CONSTANT = 8.314462618
 
 #: Water at 25 degC: surface tension [N/m] and molar volume [m^3/mol] (Israelachvili 2011, Table 17.1).
 WATER = {"surface_tension": 0.072, "molar_volume": 18.07e-6}
+
+#: Adsorbed water on silicon oxide at room temperature: (RH [-], thickness in molecular layers [-]) read from the
+#: published isotherms: about 3 (ice-like) layers at RH 0.3 (Asay and Kim 2005, ATR-IR); 4-5 layers (4.5) at RH 0.75
+#: and 6-7 monolayers (6.5) at RH 0.9 (Verdaguer et al. 2007, Kelvin probe + X-ray spectroscopies).
+WATER_ISOTHERM_SIO2 = ((0.0, 0.0), (0.3, 3.0), (0.75, 4.5), (0.9, 6.5))
 
 #: temperature of the values in :data:`WATER` [K]
 REFERENCE_TEMPERATURE = 298.15
@@ -225,3 +238,99 @@ def capillary_force_from_gap(gap, area_per_element, kelvin, contact_angle_1, con
     """
     area = as_array(area_per_element, "area_per_element", "m^2", positive=True)
     return float(np.sum(capillary_pressure(gap, kelvin, contact_angle_1, contact_angle_2, surface_tension)) * area)
+
+
+def water_monolayer_thickness(molar_volume=WATER["molar_volume"]):
+    """Thickness of one molecular layer of water [m]: the cube root of the volume per molecule, (V_m / N_A)^(1/3).
+
+    0.311 nm for V_m = 18.07e-6 m^3/mol (:data:`WATER`). ``molar_volume`` [m^3/mol].
+    """
+    volume = float(as_array(molar_volume, "molar_volume", "m^3/mol", positive=True))
+    return (volume / 6.02214076e23) ** (1.0 / 3.0)
+
+
+@cites("asay_kim_2005", "verdaguer_2007")
+def adsorbed_water_thickness(relative_humidity):
+    """Thickness t of the water film adsorbed on a hydrophilic silicon oxide at room temperature [m].
+
+    The published isotherm :data:`WATER_ISOTHERM_SIO2` (molecular layers against RH: about 3 layers at RH 0.3,
+    Asay and Kim 2005; 4.5 at RH 0.75 and 6.5 at RH 0.9, Verdaguer et al. 2007) interpolated linearly between its
+    points, times :func:`water_monolayer_thickness` (0.311 nm): 0.93 nm at RH 0.3, 1.40 nm at RH 0.75, 2.02 nm at
+    RH 0.9. Above RH 0.9 the last slope is extended (the measured film thickens steeply towards a macroscopic drop
+    at saturation: read values above 0.9 as a lower bound). 0 when dry.
+
+    Parameters
+    ----------
+    relative_humidity : float or array_like
+        RH [-] in [0, 1).
+
+    Returns
+    -------
+    float or ndarray
+        t [m].
+    """
+    rh = _humidity(relative_humidity)
+    x, layers = (np.array(c, dtype=float) for c in zip(*WATER_ISOTHERM_SIO2))
+    slope = (layers[-1] - layers[-2]) / (x[-1] - x[-2])
+    n = np.where(rh <= x[-1], np.interp(rh, x, layers), layers[-1] + slope * (rh - x[-1]))
+    result = n * water_monolayer_thickness()
+    return float(result) if np.ndim(result) == 0 else result
+
+
+@cites("butt_kappl_2009")
+def bridging_height(kelvin, film_1, film_2, contact_angle_1, contact_angle_2=None):
+    """Largest gap that a water bridge spans, ``h_c + t_1 + t_2`` [m] (Butt and Kappl 2009, [2]_).
+
+    The adsorbed films (thickness ``film_1``, ``film_2`` [m] on each surface) narrow the gap the meniscus must
+    close: condensation occurs where the gap between the films' surfaces is below ``h_c`` (:func:`condensation_height`).
+    Zero for a hydrophobic pair (``cos theta_1 + cos theta_2 <= 0``: no meniscus, whatever the films).
+    ``kelvin`` r_K [m]; angles [rad].
+    """
+    h_c = condensation_height(kelvin, contact_angle_1, contact_angle_2)
+    t1 = as_array(film_1, "film_1", "m", nonnegative=True)
+    t2 = as_array(film_2, "film_2", "m", nonnegative=True)
+    result = np.where(h_c > 0, h_c + t1 + t2, 0.0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
+@cites("israelachvili_2011")
+def meniscus_work_of_separation(gap, kelvin, height, films=0.0, surface_tension=WATER["surface_tension"]):
+    """Work per area to pull a water bridge apart [J/m^2]: ``(gamma / r_K) max(height - max(gap, films), 0)``.
+
+    The Laplace pressure ``gamma / r_K`` (:func:`laplace_pressure`) acts while the local separation grows from the
+    gap ``gap`` (or from ``films`` = t_1 + t_2 where the adsorbed films overlap: there the gap is full of film
+    water, whose own attraction is the interface's, not the bridge's) to the bridging height ``height``
+    (:func:`bridging_height`), where the bridge breaks (the meniscus keeps its Kelvin curvature: equilibrium with
+    the vapour). Its largest value, at a gap below the films, is ``(gamma / r_K) h_c = gamma (cos theta_1 +
+    cos theta_2)``, the wetted-interface work of the microbeam model
+    (:func:`memstribo.laboratory.predict.beam_work_of_separation`) whatever the RH (Israelachvili 2011, ch. 17: the
+    grand-potential difference of a filled and an empty slit): the RH enters through the area that is bridged,
+    which grows with ``height``.
+
+    Parameters
+    ----------
+    gap : array_like
+        Local gaps [m], >= 0 (0 where touching).
+    kelvin : float
+        r_K [m] (0: dry, no work).
+    height : float or array_like
+        Bridging height [m] (per element where the surfaces differ).
+    films : float or array_like
+        t_1 + t_2, the adsorbed films' summed thickness [m] (:func:`adsorbed_water_thickness`), <= ``height``.
+    surface_tension : float
+        gamma [N/m].
+
+    Returns
+    -------
+    ndarray
+        Work of separation per area at each gap [J/m^2].
+    """
+    g = np.asarray(gap, dtype=float)
+    if np.any(~np.isfinite(g)):
+        raise InputError("gap contains NaN or infinite values.")
+    h = as_array(height, "height", "m", nonnegative=True)
+    t = as_array(films, "films", "m", nonnegative=True)
+    k = float(as_array(kelvin, "kelvin", "m", nonnegative=True))
+    if k == 0.0:
+        return np.zeros(np.broadcast(g, h, t).shape)
+    return laplace_pressure(k, surface_tension) * np.maximum(h - np.maximum(g, np.minimum(t, h)), 0.0)

@@ -111,6 +111,9 @@ def _variables(params, setup, cycle, verdict, step) -> dict:
         "friction_shear_stress": v["shear_stress"],
         "rigid_atomic_blocks": out["rigid_atomic_blocks"],
         **_limit_variables(cycle, verdict, denominator),
+        # in air only (a vacuum dataset stays as it was): the water bridges of the rough rows (issue #28)
+        **({"capillary_pull_off": out["f_cap_pull"], "bridged_area": out["bridged"]}
+           if params["environment"] == "air" else {}),
     }
 
 

@@ -70,7 +70,7 @@ def _attraction(pressure, info, zone, ctx):
 _TOTALS = ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh", "contact_width", "max_pressure",
            "unconverged", "residual", "iterations", "window_exceeded", "approach", "rigid_atomic_blocks", "vdw_edge",
            "f_cap", "f_cap_adh", "wetted", "f_chem_rigid", "f_vdw_capped", "f_vdw_over", "f_vdw_static_capped",
-           "plastic_elements", "contact_elements")
+           "plastic_elements", "contact_elements", "f_cap_pull", "bridged")
 
 
 def _kinematics(setup):
@@ -140,6 +140,8 @@ def _context(setup, params, coating, wear, modulus):
         if coating is not None and math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
             ctx.theta_coat = math.radians(coating.water_contact_angle_deg)
         ctx.renewal = params["meniscus_renewal_distance"] or params["atomic_pitch"]
+        # adsorbed water film on the hydrophilic (oxidised) flanks, from the published isotherm (issue #28)
+        ctx.film = capillary.adsorbed_water_thickness(params["relative_humidity"])
 
     def gear_bare(k, row):
         """Gear blocks bare (worn coating) or coated: a deterministic low-discrepancy choice."""
@@ -317,12 +319,12 @@ def _vdw_and_menisci(out, ctx, gap, info, zone, rolls, row):
     out["f_vdw_over"] += np.where(per_element > strongest, per_element, 0.0).sum(axis=1)
     out["f_vdw_static_capped"] += np.minimum(ctx.peak_ratio * per_element, strongest).sum(axis=1)
     if ctx.humid:  # capillary menisci where the gap is below the condensation height (docs/humidity.md)
-        _menisci(out, ctx, gap, info, zone, bare_x)
+        _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x)
     return inside, w_x, k1_at_x
 
 
-def _menisci(out, ctx, gap, info, zone, bare_x):
-    """Wetted area, meniscus attraction and rupture force of a row (issue #17, docs/humidity.md)."""
+def _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x):
+    """Wetted area, meniscus attraction, rupture force and pull-off of a row (issues #17, #28; docs/humidity.md)."""
     from memstribo.physics import capillary
 
     theta_bare, theta_coat = ctx.theta_bare, ctx.theta_coat
@@ -334,6 +336,17 @@ def _menisci(out, ctx, gap, info, zone, bare_x):
     # attraction: the contact solve's meniscus line load over the row (line contact), else the wetted area's
     out["f_cap_adh"] += (info[:, 5] * ctx.w_adh if zone is not None
                          else capillary.laplace_pressure(ctx.r_kelvin, ctx.surface_tension) * area.sum(axis=1))
+    # the force to pull the flanks apart against the water bridges (issue #28): the pull-off of each pinion block
+    # (3-32) with the work of separation of the bridges in every gap of the rough row narrower than h_c + the
+    # adsorbed films, summed over the blocks (3-31)
+    # (the isotherm is the hydrophilic oxide's: a hydrophobic coating, theta >= 90 deg, carries no film)
+    films = (np.where(theta_bare < 0.5 * np.pi, ctx.film, 0.0)
+             + np.where(np.asarray(theta_gear) < 0.5 * np.pi, ctx.film, 0.0))
+    bridge = np.where(height > 0, height + films, 0.0)  # capillary.bridging_height, per gear element
+    work = capillary.meniscus_work_of_separation(gap, ctx.r_kelvin, bridge, films, ctx.surface_tension)
+    bridged = work > 0
+    out["bridged"] += bridged.sum(axis=1) * (ctx.w_adh * ctx.dx)
+    out["f_cap_pull"] += _block_pull_off(ctx, bridged.astype(float), np.where(bridged, work, 1.0), k1_at_x)
     # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
     rupture = ctx.surface_tension * (np.cos(theta_bare) + np.cos(theta_gear))
     out["f_cap"] += (area * rupture).sum(axis=1) / ctx.renewal
