@@ -26,7 +26,7 @@ def test_readme_quotes_the_ensemble(params):
     from memstribo.simulations.mesh import simulate_ensemble
 
     ensemble = simulate_ensemble(params, realisations=16)
-    assert f"probability {ensemble['stiction_probability'] * 100:.0f} %" in README
+    assert f"**{ensemble['stiction_probability_text'].replace(' of 16', ' of 16 realisations')}**" in README
     assert (f"between {ensemble['stiction_margin_p05'] * 1e3:.3g} and {ensemble['stiction_margin_p95'] * 1e3:.3g} mN"
             in README)
     assert f"between {ensemble['cof_mean_p05']:.3f} and {ensemble['cof_mean_p95']:.3f}" in README
