@@ -191,7 +191,12 @@ def test_a_real_scan_reports_its_plastic_flow_and_both_margins(params, afm_dir):
     summary = summarize(ds)
     assert summary["hardness"] == params["hardness"]
     assert 0 < summary["plastic_fraction"] <= summary["plastic_fraction_max"] <= 1
-    assert summary["plastic_steps"] > 0 and float(ds.max_contact_pressure.max()) <= params["hardness"] * (1 + 1e-9)
+    # the cap holds wherever the capped solve converged; a step where it did not is flagged and warned about
+    converged = np.asarray(ds.contact_converged, dtype=bool)
+    pressure = np.asarray(ds.max_contact_pressure)
+    assert summary["plastic_steps"] > 0 and pressure[converged].max() <= params["hardness"] * (1 + 1e-9)
+    if not converged.all():
+        assert any(f"did not converge in {int((~converged).sum())} step(s)" in w for w in summary["warnings"])
     assert {"stiction_margin_uncapped", "startup_margin_uncapped", "cof_mean_uncapped"} <= set(summary)
     assert summary["stiction_margin_uncapped"] != summary["stiction_margin"]
     assert any("hardness" in w and "purely elastic" in w for w in summary["warnings"])
