@@ -480,3 +480,13 @@ def test_the_run_says_what_its_verdict_hangs_on(small_run):
 def test_no_uncertainty_samples_leaves_the_stage_out():
     options = RunOptions.from_table({"uncertainty": 0})
     assert "uncertainty" not in options.stages and "mesh" in options.stages
+
+
+def test_the_report_shows_stiction_coating_life_and_fracture_life_together(small_run):
+    """MODEL §10: the damage stage draws the fracture probability over the meshing cycles beside the coating's life,
+    from the coated cycle's tooth strength."""
+    assert "lives" in {f.stem for f in small_run.figures if f.stage == "damage"}
+    damage = small_run.summaries["damage"]
+    assert 0 < damage["fracture_probability"] < 1
+    page = (small_run.folder / "report.html").read_text(encoding="utf-8")
+    assert "Lives of the coated pair" in page

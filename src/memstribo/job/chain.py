@@ -41,6 +41,7 @@ from memstribo.errors import InputError, MemstriboError
 from memstribo.output import (atomic_write_text, dumps_json, ensure_directory, format_quantity, save_figure,
                               software_provenance, to_jsonable, write_dataset)
 
+from memstribo.job.figures import plot_lives
 from memstribo.job.figures import (plot_block_loads, plot_cycle, plot_energy, plot_ensemble, plot_gear, plot_humidity,
                                    plot_map, plot_profiles, plot_sliding, plot_sweep)
 from memstribo.job.verdict import uncertainty_summary, verdict  # noqa: F401  (verdict: re-exported)
@@ -570,6 +571,29 @@ class RunChain:
             self._dataset(dataset, stem)
         for stem, (figure, caption) in getattr(outcome, "figures", {}).items():
             self._figure(figure, stem, caption)
+        self._lives_figure(outcome.summary)
+
+    def _lives_figure(self, damage_summary):
+        """Stiction, coating life and fracture life together (MODEL §10): the coated cycle's tooth strength."""
+        from memstribo.errors import InputError
+        from memstribo.physics.coating import get_coating
+        from memstribo.simulations.tooth_life import tooth_life
+
+        try:
+            result = tooth_life(self.results["coated"], self.model_params,
+                                coating=get_coating(self.options.coating, self.model_params))
+        except InputError as exc:  # a tooth form the root-stress method cannot draw: said, not drawn
+            self.summaries["damage"]["lives_note"] = f"fracture life not computed: {exc}"
+            return
+        life = damage_summary.get("cycles_to_failure")
+        stiction = damage_summary.get("cycles_to_stiction")
+        self.summaries["damage"].update(fracture_probability=result["fracture_probability"],
+                                        cycles_to_fracture_p01=result["cycles_to_fracture_p01"])
+        self._figure(plot_lives(result, np.logspace(0, 14, 200), life, stiction, self.options.coating), "lives",
+                     "Lives of the coated pair on one axis: the probability that a tooth has broken (Weibull strength "
+                     "of polysilicon, delayed failure in air, docs/strength.md) against the meshing cycles, with the "
+                     "cycles until the coating wears through and stiction returns where the damage constant c1 is "
+                     "known (--observed-life or damage_coefficient; without it only relative coating lives exist).")
 
     def map_stage(self):
         """Design map of ``[run] map`` (:func:`memstribo.simulations.design_map.design_map`, docs/design-maps.md): every grid

@@ -102,7 +102,8 @@ def plot_ensemble(ensemble, tangential_force):
         ax.set_ylabel(label)
     left.axhline(0.0, color="C3", lw=0.9, label="stiction below")
     left.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=3)
-    left.set_title(f"stiction probability {ensemble['stiction_probability'] * 100:.0f} %", fontsize=10)
+    text = ensemble.get("stiction_probability_text", f"{ensemble['stiction_probability'] * 100:.0f} %")
+    left.set_title(f"stiction: {text}", fontsize=10)  # no probability without its interval (MODEL 7d)
     figure.tight_layout()
     return figure
 
@@ -264,3 +265,30 @@ def plot_humidity(humidity, title=""):
     figure.suptitle(title, fontsize=10)
     figure.tight_layout()
     return figure
+
+
+def plot_lives(result, cycles, coating_life=None, cycles_to_stiction=None, coating_name="coating"):
+    """Stiction, coating life and fracture life on one axis of meshing cycles (MODEL §9, §10).
+
+    ``result``: :func:`memstribo.simulations.tooth_life.tooth_life` of the coated cycle; ``cycles``: pinion
+    revolutions N [-]; ``coating_life`` and ``cycles_to_stiction`` [meshing cycles] (None while the damage
+    constant c1 is unknown).
+    """
+    from memstribo.output import new_figure
+    from memstribo.simulations.tooth_life import fracture_probability_within
+
+    figure, ax = new_figure(figsize=(6.4, 3.6))
+    probability = fracture_probability_within(result, cycles)
+    ax.loglog(cycles, np.clip(probability, 1e-12, None), color="C3", label="P(a tooth has broken), fatigue in air")
+    ax.axhline(0.01, color="C3", ls=":", lw=0.8, label="1 %")
+    for value, colour, label in ((coating_life, "C0", f"{coating_name} worn through (omega = 1)"),
+                                 (cycles_to_stiction, "C1", "stiction returns")):
+        if value is not None and np.isfinite(value):
+            ax.axvline(value, color=colour, lw=1.2, label=f"{label}: {value:.3g} cycles")
+    ax.set_xlabel("meshing cycles N [-]")
+    ax.set_ylabel("fracture probability [-]")
+    ax.set_ylim(max(1e-12, float(np.min(probability)) / 30), 1.5)
+    ax.legend(fontsize=7, loc="lower right")
+    figure.tight_layout()
+    return figure
+
