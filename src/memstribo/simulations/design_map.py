@@ -411,24 +411,6 @@ def _converged(params, surface, steps, coating, wear, first) -> dict:
             "grid_change_margin": check["grid_change_margin"]}
 
 
-def _check_or_write_manifest(manifest_path, folder, resume, map_hash, manifest_new):
-    """Write a new map's manifest, or check that the folder's is this map's and that ``resume`` was asked for."""
-    from memstribo.simulations.study import _write_json_atomic
-
-    if manifest_path.exists():
-        try:
-            manifest = json.loads(manifest_path.read_text(encoding="utf-8"))
-        except ValueError:
-            raise InputError(f"'{manifest_path}' is not a map manifest; choose another --out.") from None
-        if not resume:
-            raise InputError(f"'{folder}' already holds a map; add --resume to finish it or choose another --out.")
-        if manifest.get("hash") != map_hash:
-            raise InputError(f"--resume: '{folder}' holds a different map (other axes, points or parameters); "
-                             "choose another --out.")
-    else:
-        _write_json_atomic(manifest_path, manifest_new)
-
-
 # --- running ---------------------------------------------------------------------------------------------
 
 def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, scheduler: str | None = None,
@@ -490,12 +472,14 @@ def design_map(spec: MapSpec, out: str | Path, params=None, *, client=None, sche
     map_hash = _hash({"function": "map_point", "points": [[p.id, p.inputs] for p in points], "options": options,
                       "parameters": params.to_dict(), "base": study.parameters, "axes": spec.axes})
     manifest_path = folder / MANIFEST
-    _check_or_write_manifest(manifest_path, folder, resume, map_hash, {
+    from memstribo.simulations.study import check_or_write_manifest
+
+    check_or_write_manifest(manifest_path, folder, resume, map_hash, {
         "format": FORMAT_VERSION, "name": spec.name, "source": spec.source, "hash": map_hash,
         "axes": [[key, values] for key, values in spec.axes], "parameter_set": params.name,
         "base_overrides": study.parameters, "options": options,
         "points": [{"id": p.id, "index": p.index, "inputs": p.inputs} for p in points],
-    })
+    }, what="map", differs="other axes, points or parameters")
     ensure_directory(folder / POINTS_FOLDER)
     ids = {p.id for p in points}
     finished = _finished_points(folder, ids)

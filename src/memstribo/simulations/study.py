@@ -694,23 +694,11 @@ def run_study(spec: StudySpec, out: str | Path, params=None, *, scheduler: str |
     study_hash = _hash({"function": function_name(spec.function), "points": [[p.id, p.inputs] for p in points],
                         "parameters": params.to_dict(), "base": spec.parameters})
     manifest_path = folder / MANIFEST
-    if manifest_path.exists():
-        try:
-            manifest = json.loads(manifest_path.read_text(encoding="utf-8"))
-        except ValueError:
-            raise InputError(f"'{manifest_path}' is not a study manifest; choose another --out.") from None
-        if not resume:
-            raise InputError(f"'{folder}' already holds a study; add --resume to finish it or choose another --out.")
-        if manifest.get("hash") != study_hash:
-            raise InputError(f"--resume: '{folder}' holds a different study (other points, function or "
-                             "parameters); choose another --out.")
-    else:
-        _write_json_atomic(manifest_path, {
-            "format": FORMAT_VERSION, "name": spec.name, "function": function_name(spec.function),
-            "source": spec.source,
-            "hash": study_hash, "parameter_set": params.name, "base_overrides": spec.parameters,
-            "points": [{"id": p.id, "index": p.index, "inputs": p.inputs} for p in points],
-        })
+    check_or_write_manifest(manifest_path, folder, resume, study_hash, {
+        "format": FORMAT_VERSION, "name": spec.name, "function": function_name(spec.function),
+        "source": spec.source, "hash": study_hash, "parameter_set": params.name, "base_overrides": spec.parameters,
+        "points": [{"id": p.id, "index": p.index, "inputs": p.inputs} for p in points],
+    }, what="study", differs="other points, function or parameters")
     ensure_directory(folder / POINTS_FOLDER)
     by_id = {p.id: p for p in points}
     finished = _finished_points(folder, set(by_id))
@@ -894,3 +882,19 @@ def _result_units(spec: StudySpec | None) -> dict[str, str]:
         except ImportError:
             units = None
     return dict(units or {})
+
+
+def check_or_write_manifest(manifest_path, folder, resume, run_hash, manifest_new, what="study",
+                            differs="other points, function or parameters") -> None:
+    """Write a new study's (or map's) manifest, or check (InputError) that the folder's is this one, resumed."""
+    if manifest_path.exists():
+        try:
+            manifest = json.loads(manifest_path.read_text(encoding="utf-8"))
+        except ValueError:
+            raise InputError(f"'{manifest_path}' is not a {what} manifest; choose another --out.") from None
+        if not resume:
+            raise InputError(f"'{folder}' already holds a {what}; add --resume to finish it or choose another --out.")
+        if manifest.get("hash") != run_hash:
+            raise InputError(f"--resume: '{folder}' holds a different {what} ({differs}); choose another --out.")
+    else:
+        _write_json_atomic(manifest_path, manifest_new)
