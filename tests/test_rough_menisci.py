@@ -55,11 +55,38 @@ def test_a_water_bridge_spans_h_c_plus_the_films_and_works_gamma_cos_theta_at_mo
     assert np.all(meniscus_work_of_separation(gaps, 0.0, h, films) == 0.0)  # dry
 
 
-def test_bare_hydrophilic_pull_off_rises_with_humidity_in_the_sweep(cli):
-    """Issue #28: the hydrophilic (bare, oxidised) teeth's capillary pull-off rises with RH, as microbeams do."""
+def test_bare_hydrophilic_adhesion_rises_with_humidity_in_the_sweep(cli):
+    """Issue #28 (done when): the hydrophilic (bare, oxidised) teeth's adhesion force F_adh, the COF's denominator,
+    rises with RH, as microbeams do: its water part is the bridges' pull-off, which rises too."""
     out = cli.json("sweep", "humidity", "--values", "0.1,0.5,0.9")
     pull = [p["capillary_pull_off_mean"] for p in out["points"]]
     assert pull[0] > 0 and pull[0] < pull[1] < pull[2]
+    adhesion = [p["adhesion_force_mean"] for p in out["points"]]
+    assert adhesion[0] > 0 and adhesion[0] < adhesion[1] < adhesion[2]
+    for point in out["points"]:  # the bridges add at most their own pull-off to F_adh, and F_adh holds it
+        part = point["capillary_adhesion_force_mean"]
+        assert 0 < part <= point["capillary_pull_off_mean"] and part < point["adhesion_force_mean"]
+
+
+def test_the_bridges_add_to_f_adh_only_their_work_beyond_the_vdw_work():
+    """One work of adhesion per element where F_adh's vdW part acts: the larger of w12 and the bridge's (docs/humidity.md).
+    With the thesis's block pull-off (contact_adhesion 'none') the vdW acts on every touching element with
+    w12 = 0.445 J/m^2 > 2 gamma cos 30 deg = 0.125 J/m^2: the bridges there add nothing, so their part of F_adh
+    falls short of their own pull-off; with a w12 far below the bridge's it is the bridges' whole pull-off."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh
+
+    params = get_parameter_values().updated({"environment": "air", "relative_humidity": 0.5,
+                                             "contact_adhesion": "none"})
+    strong = simulate_mesh(params, steps=21)
+    pull, part = np.asarray(strong["capillary_pull_off"]), np.asarray(strong["capillary_adhesion_force"])
+    assert np.all(part <= pull * (1 + 1e-12)) and part.sum() < 0.9 * pull.sum()
+    weak = simulate_mesh(params.updated({"work_of_adhesion": 1e-6}), steps=21)
+    assert np.asarray(weak["capillary_adhesion_force"]) == pytest.approx(np.asarray(weak["capillary_pull_off"]),
+                                                                         rel=1e-3)
+    # in vacuum the dataset has neither (and F_adh is the vdW part alone)
+    vacuum = simulate_mesh(get_parameter_values(), steps=11)
+    assert "capillary_adhesion_force" not in vacuum and "capillary_pull_off" not in vacuum
 
 
 def test_teeth_coated_on_both_flanks_stay_flat_in_humidity(cli):

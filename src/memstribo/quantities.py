@@ -74,12 +74,17 @@ _ENTRIES = [
     ("mesh_efficiency", "1", "mesh efficiency", "1 - friction power / input power T omega1; as a scalar the cycle's "
      "mean (MODEL 7b)"),
     ("adhesion_force", "N", "adhesion force F_adh", "adhesion force (3-31, 3-32, or the cohesive zone of the contact "
-     "solve; with menisci in humid air)"),
-    ("capillary_force", "N", "capillary force", "attraction of the capillary menisci (part of F_adh)"),
+     "solve; in humid air plus the water bridges' part, capillary_adhesion_force)"),
+    ("capillary_force", "N", "capillary force", "line load of the capillary menisci's traction inside the contact "
+     "solve (it loads the contact; not part of F_adh since issue #28)"),
     ("wetted_area", "m^2", "wetted area", "area under capillary menisci"),
     ("capillary_pull_off", "N", "capillary pull-off force", "force to pull the flanks apart against the water "
      "bridges of the rough rows: every gap below h_c plus the adsorbed films (isotherm on SiO2), each pinion block's "
      "pull-off (3-32) with the bridges' work of separation, summed (3-31); issue #28, docs/humidity.md"),
+    ("capillary_adhesion_force", "N", "capillary part of F_adh", "the water bridges' part of the adhesion force "
+     "F_adh in humid air: each pinion block's pull-off (3-32) with, per element, the bridge's work of separation "
+     "beyond the vdW work w12 there (one work per element, the larger of the two), summed (3-31); issue #28, "
+     "docs/humidity.md"),
     ("bridged_area", "m^2", "bridged area", "area of the rough rows where the gap is below h_c plus the adsorbed "
      "water films (water bridges, issue #28)"),
     ("adsorbed_water_thickness", "m", "adsorbed water film thickness", "thickness t(RH) of the water film on "

@@ -93,7 +93,7 @@ def run(args, params):
              "cof_mean_p05", "cof_mean_median", "cof_mean_p95"] if args.realisations > 1 else []
     extra += ["cof_capillary", "energy_capillary"] if args.parameter == "humidity" else []
     # the force to pull the flanks apart against the rough rows' water bridges (issue #28), where the run has it
-    extra += ["capillary_pull_off_mean"] if args.parameter == "humidity" and all(
+    extra += ["capillary_pull_off_mean", "capillary_adhesion_force_mean"] if args.parameter == "humidity" and all(
         "capillary_pull_off_mean" in point for point in points) else []
     # will a tooth break (MODEL §10): the torque window between "sticks" and "breaks"
     extra += ["fracture_probability", "cycles_to_fracture_p01", "root_stress_max"] if args.parameter == "torque" else []

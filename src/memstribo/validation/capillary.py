@@ -132,13 +132,27 @@ def published_rows() -> list[ValidationRow]:
     out.append(ValidationRow(
         TOPIC, "bare oxidised silicon: adhesion force F_adh at RH 0.9 over RH 0.3",
         "grows exponentially with RH over 30-95 % (hydrophilic polysilicon beams; " + DE_BOER_1998 + ")", None,
-        round(growth, 3), "", "differs (see note)", bool(growth > 1.0), OXIDE_COMMAND, band=(0.1, 0.4),
-        note="the model's F_adh falls with RH instead: F_adh of the loaded line contact (mean over the cycle); the beams of the reference are "
-        "unloaded crack tips, where capillary adhesion grows far more"))
+        round(growth, 3), "", "trend: ratio > 1", bool(growth > 1.0), OXIDE_COMMAND,
+        note="F_adh in air is the vdW part plus the pull-off of the rough rows' water bridges (issue #28): it rises "
+        "with RH, by less than the beams' exponential growth (a loaded flank is a third bridged already at RH 0.1; "
+        "docs/humidity.md)"))
     growth_ots = coated[0.9]["adhesion_force_mean"] / coated[0.3]["adhesion_force_mean"]
     out.append(ValidationRow(
-        TOPIC, "OTS-coated gear: F_adh at RH 0.9 over RH 0.3", "hydrophobic beams: no humidity effect up to >= 90 % "
-        "RH (a later paper citing " + DE_BOER_1998 + ")", 1.0, round(growth_ots, 3), "",
-        "differs (see note)", bool(abs(growth_ots - 1.0) <= 0.1), OXIDE_COMMAND, band=(0.1, 0.4),
-        note="no effect within 10 % expected, the model's F_adh falls instead: the model's pinion stays bare (theta 30 deg against 112 deg): weak menisci remain"))
+        TOPIC, "OTS-coated gear, pinion bare: F_adh at RH 0.9 over RH 0.3", "hydrophobic beams: no humidity effect "
+        "up to >= 90 % RH (a later paper citing " + DE_BOER_1998 + ")", 1.0, round(growth_ots, 3), "",
+        "differs (see note)", bool(abs(growth_ots - 1.0) <= 0.1), OXIDE_COMMAND, band=(1.1, 1.6),
+        note="no effect within 10 % expected, the model's F_adh rises instead: the thesis's convention coats the "
+        "gear only, and the bare pinion (theta 30 deg against 112 deg) keeps weaker water bridges; coated on both "
+        "flanks (next row) it is flat"))
+    both = {rh: summarize(simulate_mesh(params.updated({"relative_humidity": rh, "water_contact_angle":
+                                                        math.radians(ots.water_contact_angle_deg)}),
+                                        coating=ots, wear=0.0)) for rh in (0.3, 0.9)}
+    growth_both = both[0.9]["adhesion_force_mean"] / both[0.3]["adhesion_force_mean"]
+    out.append(compare(
+        TOPIC, "OTS on both flanks (the pinion given the coating's water contact angle): F_adh at RH 0.9 over RH 0.3",
+        "hydrophobic beams: no humidity effect up to >= 90 % RH (a later paper citing " + DE_BOER_1998 + ")", 1.0,
+        round(growth_both, 3), "", rtol=0.1, command=OXIDE_COMMAND.replace("[--coating OTS --wear 0]", "--coating OTS "
+                                                                               "--wear 0 --set water_contact_angle=1.955"),
+        note="no water bridge forms between two hydrophobic flanks (cos 112 deg + cos 112 deg < 0): F_adh is the "
+        "dry value at every RH"))
     return out

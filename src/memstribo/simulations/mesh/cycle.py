@@ -184,7 +184,7 @@ def _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress,
         sliding = kin["sliding"]
         f_el = np.divide(out["e_el"], sliding, out=np.zeros_like(sliding), where=sliding > 0)
         friction = out["f_chem"] + out["f_vdw"] + f_el + out["f_cap"]
-        denominator = setup.load + out["f_adh"] + out["f_cap_adh"]
+        denominator = setup.load + out["f_adh"] + out["f_cap_bridge"]
         mu_new = friction / denominator
         if beta == 0.0:
             break
@@ -198,7 +198,10 @@ def _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress,
             break
         mu = mu_new if mu is None else 0.5 * (mu + mu_new)
         decided_old = decided
-    out["f_adh"] = out["f_adh"] + out["f_cap_adh"]  # menisci pull the flanks together too (issue #17)
+    # F_adh in humid air: the vdW part + the pull-off of the rough rows' water bridges beyond the vdW work (thesis
+    # 3-31/3-32 for the water too, issue #28; docs/humidity.md); the menisci's line load of the contact solve
+    # (f_cap_adh, reported as capillary_force) loads the contact but is no longer added (0 in vacuum and dry air)
+    out["f_adh"] = out["f_adh"] + out["f_cap_bridge"]
     return dict(out=out, block_loads=block_loads, kin=kin, f_el=f_el, friction=friction, passes=passes,
                 converged=fixed_point_converged, changes=changes)
 

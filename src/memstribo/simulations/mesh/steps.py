@@ -9,8 +9,8 @@ import numpy as np
 
 from memstribo.errors import InputError
 from memstribo.materials.pair import no_slip_coefficient
-from memstribo.simulations.mesh.contacts import (_capillary_zone, _solve_contacts, _solve_contacts_surface,
-                                                _solve_with_shear)
+from memstribo.simulations.mesh.contacts import (_capillary_zone, _cohesive_zone, _solve_contacts,
+                                                _solve_contacts_surface, _solve_with_shear)
 from memstribo.simulations.mesh.interface import (_GOLDEN, _SILVER, _interlocking, _lattice, lattice_overlap_across,
                                                  vdw_gap_factor)
 from memstribo.simulations.mesh.setup import _geometry, _work_of_adhesion, roll_coordinate
@@ -40,10 +40,10 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         block_loads.append((k1, flank_states[0][2], k2, flank_states[1][2]))
         bare2 = ctx.gear_bare(k2, row)
         _chemical_bonds(out, ctx, setup, flank_states, bare2, row)
-        inside, w_x, k1_at_x = _vdw_and_menisci(out, ctx, gap, info, zone, rolls, row)
+        inside, w_x, k1_at_x = _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row)
         _interlocking_energy(out, ctx, (k1, k2), flank_states, kinematics["sliding_fraction"])
         if ctx.with_cohesive_zone:  # the attraction is the contact solve's tensile traction over the row
-            out["f_adh"] += _attraction(pressure, info, zone, ctx)
+            out["f_adh"] += _attraction(pressure, gap, info, zone, ctx)
             continue
         out["f_adh"] += _block_pull_off(ctx, inside, w_x, k1_at_x)
     if pbar is not None:
@@ -51,18 +51,25 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     return out, block_loads, kinematics
 
 
-def _attraction(pressure, info, zone, ctx):
-    """The attraction of the Maugis-Dugdale zone on one row per step [N] (MODEL 7c; issue #25).
+def _attraction(pressure, gap, info, zone, ctx):
+    """The attraction of the Maugis-Dugdale zone on one row per step [N] (MODEL 7c; issues #25, #28).
 
     Dry: the whole tensile traction of the solve, ``w_adh dx sum(max(-p, 0))``: the zones outside the contact and
     the contact's tensile edges, where the pressure is between -sigma0 and 0 (the closed form is
     :func:`memstribo.physics.closed_form.maugis_dugdale_line_tension`; tests/test_convergence.py). The zone outside
     the contact alone (the former measure) counts none of a grid element that holds the contact's edge, so on the
-    default grid it missed nearly all of the attraction, and fell where the zone narrows. In humid air (menisci
-    in the same solve) the zone outside the contact, as before: the menisci's traction is added on its own.
+    default grid it missed nearly all of the attraction, and fell where the zone narrows. In humid air the menisci's
+    traction acts in the same solve: the vdW zone outside the contact (the solve's ``adhesive_load``) and the vdW
+    share sigma0 / (sigma0 + gamma / r_K) of the contact's tensile edges, where both tractions act in full (the
+    solver's sigma-weighted cohesive fraction); the menisci's part of F_adh is the water bridges' pull-off
+    (:func:`_menisci`).
     """
     if zone is not None:
-        return info[:, 4] * ctx.w_adh
+        sigma0 = ctx.zone_work / ctx.zone_range
+        heights = np.asarray(zone[1], dtype=float)  # h_c per step, or per step and element (a coated gear)
+        laplace = np.where((heights[:, None] if heights.ndim == 1 else heights) > 0.0, zone[0], 0.0)
+        edges = np.where(gap <= 0.0, np.maximum(-pressure, 0.0) * sigma0 / (sigma0 + laplace), 0.0)
+        return (info[:, 4] + edges.sum(axis=1) * ctx.dx) * ctx.w_adh
     return np.maximum(-pressure, 0.0).sum(axis=1) * ctx.dx * ctx.w_adh
 
 
@@ -70,7 +77,7 @@ def _attraction(pressure, info, zone, ctx):
 _TOTALS = ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh", "contact_width", "max_pressure",
            "unconverged", "residual", "iterations", "window_exceeded", "approach", "rigid_atomic_blocks", "vdw_edge",
            "f_cap", "f_cap_adh", "wetted", "f_chem_rigid", "f_vdw_capped", "f_vdw_over", "f_vdw_static_capped",
-           "plastic_elements", "contact_elements", "f_cap_pull", "bridged")
+           "plastic_elements", "contact_elements", "f_cap_pull", "bridged", "f_cap_bridge")
 
 
 def _kinematics(setup):
@@ -119,6 +126,9 @@ def _context(setup, params, coating, wear, modulus):
     ctx.layer = adhesive_layer_thickness(params, geometry)
     ctx.gap_model = params["interface_model"] == "gap"
     ctx.with_cohesive_zone = params["contact_adhesion"] == "maugis"
+    if ctx.with_cohesive_zone:  # the zone's reach h0 [m] and its work per area sigma0 h0 = w12 [J/m^2]
+        sigma0, ctx.zone_range = _cohesive_zone(params)
+        ctx.zone_work = sigma0 * ctx.zone_range
     if coating is not None:
         ctx.w_coat, ctx.u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
     ctx.c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
@@ -292,7 +302,7 @@ def _chemical_bonds(out, ctx, setup, flank_states, bare2, row):
         friction.bond_breaking_energy(rigid_bonds, ctx.params["bond_energy"], bond, bond), bond)
 
 
-def _vdw_and_menisci(out, ctx, gap, info, zone, rolls, row):
+def _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row):
     """vdW bonds (3-12) over the adhesive layer and, in humid air, the menisci of a row; returns (the share of each
     element inside the layer, w12 at each element [J/m^2], the pinion block at each element) for the pull-off.
     ``rolls``: the row's roll coordinates in its lattice registry (:func:`_row_rolls`)."""
@@ -319,12 +329,30 @@ def _vdw_and_menisci(out, ctx, gap, info, zone, rolls, row):
     out["f_vdw_over"] += np.where(per_element > strongest, per_element, 0.0).sum(axis=1)
     out["f_vdw_static_capped"] += np.minimum(ctx.peak_ratio * per_element, strongest).sum(axis=1)
     if ctx.humid:  # capillary menisci where the gap is below the condensation height (docs/humidity.md)
-        _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x)
+        _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x, _vdw_work_in_f_adh(ctx, pressure, gap, inside, w_x))
     return inside, w_x, k1_at_x
 
 
-def _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x):
-    """Wetted area, meniscus attraction, rupture force and pull-off of a row (issues #17, #28; docs/humidity.md)."""
+def _vdw_work_in_f_adh(ctx, pressure, gap, inside, w_x):
+    """The vdW work of adhesion [J/m^2] that the vdW part of F_adh counts at each element of a row (steps, n).
+
+    With the Maugis-Dugdale zone (the default) F_adh's vdW part is the zone's tensile traction (:func:`_attraction`):
+    on the elements outside the contact with 0 < gap <= h0 and on the contact's tensile edges, whose work per area is
+    sigma0 h0 = w12; with the thesis's block pull-off (contact_adhesion 'none') it is w12 times each element's share
+    ``inside`` (3-32 over the engaged length). The water bridges add only their work beyond this (:func:`_menisci`,
+    docs/humidity.md).
+    """
+    if ctx.with_cohesive_zone:
+        acting = ((gap > 0.0) & (gap <= ctx.zone_range)) | ((gap <= 0.0) & (pressure < 0.0))
+        return np.where(acting, ctx.zone_work, 0.0)
+    return w_x * inside
+
+
+def _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x, w_vdw):
+    """Wetted area, meniscus attraction, rupture force and pull-off of a row (issues #17, #28; docs/humidity.md).
+
+    ``w_vdw``: the vdW work of adhesion at each element [J/m^2] (w12 times the element's share of it): the bridges'
+    part of F_adh counts, per element, only the bridge's work beyond it (``f_cap_bridge``)."""
     from memstribo.physics import capillary
 
     theta_bare, theta_coat = ctx.theta_bare, ctx.theta_coat
@@ -347,6 +375,13 @@ def _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x):
     bridged = work > 0
     out["bridged"] += bridged.sum(axis=1) * (ctx.w_adh * ctx.dx)
     out["f_cap_pull"] += _block_pull_off(ctx, bridged.astype(float), np.where(bridged, work, 1.0), k1_at_x)
+    # the bridges' part of F_adh (issue #28): one work of adhesion per element, the larger of the vdW's and the
+    # bridge's where F_adh's vdW part acts (a wetted contact's work of separation is the solids' own, 2 gamma_SV =
+    # W_SLS + 2 gamma cos theta by Young's equation, Israelachvili 2011 ch. 17: not the dry work plus the bridge's);
+    # the vdW part carries w_vdw, the bridges add the pull-off (3-32, summed 3-31) of their work beyond it
+    excess = np.maximum(work - w_vdw, 0.0)
+    adds = excess > 0
+    out["f_cap_bridge"] += _block_pull_off(ctx, adds.astype(float), np.where(adds, excess, 1.0), k1_at_x)
     # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
     rupture = ctx.surface_tension * (np.cos(theta_bare) + np.cos(theta_gear))
     out["f_cap"] += (area * rupture).sum(axis=1) / ctx.renewal

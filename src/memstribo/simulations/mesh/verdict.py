@@ -71,7 +71,7 @@ SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic",
                 "max_contact_pressure", "steps_above_elastic_limit", "resisting_force_max", "normal_force_total",
                 "mesh_efficiency", "mesh_efficiency_min", "max_shear_stress", "load_case", "interface_model",
                 "contact_adhesion", "mesh_contact", "environment", "relative_humidity", "cof_capillary",
-                "capillary_pull_off_mean",
+                "capillary_pull_off_mean", "capillary_adhesion_force_mean",
                 "energy_capillary", "roughness_rows", "warnings", "step_converged", "step_change_margin",
                 "step_change_cof", "steps_checked", "realisations", "stiction_probability", "stiction_count",
                 "stiction_probability_ci", "stiction_probability_text",
@@ -262,7 +262,8 @@ def summarize(dataset) -> dict:
         "roughness_rows": str(dataset.attrs["roughness_rows"]),
         **_limit_summary(dataset, f_t, margin),
         # in air: the force to pull the flanks apart against the rough rows' water bridges (issue #28)
-        **({"capillary_pull_off_mean": float((np.asarray(dataset["capillary_pull_off"]) * weights).sum())}
+        **({"capillary_pull_off_mean": float((np.asarray(dataset["capillary_pull_off"]) * weights).sum()),
+            "capillary_adhesion_force_mean": float((np.asarray(dataset["capillary_adhesion_force"]) * weights).sum())}
            if "capillary_pull_off" in dataset else {}),
         **json.loads(dataset.attrs.get("tooth_life", "{}")),  # root stress, fracture, temperature (MODEL §10)
         "fitted_constants": json.loads(dataset.attrs.get("fitted_constants", "[]")),  # with their fit conditions
