@@ -84,6 +84,13 @@ def test_the_bridges_add_to_f_adh_only_their_work_beyond_the_vdw_work():
     weak = simulate_mesh(params.updated({"work_of_adhesion": 1e-6}), steps=21)
     assert np.asarray(weak["capillary_adhesion_force"]) == pytest.approx(np.asarray(weak["capillary_pull_off"]),
                                                                          rel=1e-3)
+    # with the Maugis-Dugdale zone (the default) the vdW part of F_adh in humid air is the zone's tension as in dry
+    # air: outside the contact and the vdW share of the contact's tensile edges (not the zone outside it alone)
+    air = get_parameter_values().updated({"environment": "air"})
+    dry = simulate_mesh(air.updated({"relative_humidity": 0.0}), steps=21)
+    humid = simulate_mesh(air.updated({"relative_humidity": 0.5}), steps=21)
+    vdw_part = float((humid["adhesion_force"] - humid["capillary_adhesion_force"]).mean())
+    assert vdw_part == pytest.approx(float(dry["adhesion_force"].mean()), rel=0.3)
     # in vacuum the dataset has neither (and F_adh is the vdW part alone)
     vacuum = simulate_mesh(get_parameter_values(), steps=11)
     assert "capillary_adhesion_force" not in vacuum and "capillary_pull_off" not in vacuum
