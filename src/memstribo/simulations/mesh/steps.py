@@ -351,8 +351,9 @@ def _vdw_work_in_f_adh(ctx, pressure, gap, inside, w_x):
 def _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x, w_vdw):
     """Wetted area, meniscus attraction, rupture force and pull-off of a row (issues #17, #28; docs/humidity.md).
 
-    ``w_vdw``: the vdW work of adhesion at each element [J/m^2] (w12 times the element's share of it): the bridges'
-    part of F_adh counts, per element, only the bridge's work beyond it (``f_cap_bridge``)."""
+    ``w_vdw``: the vdW work of adhesion [J/m^2] that F_adh's vdW part counts at each element
+    (:func:`_vdw_work_in_f_adh`): the bridges' part of F_adh counts, per element, only the bridge's work beyond it
+    (``f_cap_bridge``)."""
     from memstribo.physics import capillary
 
     theta_bare, theta_coat = ctx.theta_bare, ctx.theta_coat
