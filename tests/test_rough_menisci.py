@@ -69,7 +69,8 @@ def test_bare_hydrophilic_adhesion_rises_with_humidity_in_the_sweep(cli):
 
 
 def test_the_bridges_add_to_f_adh_only_their_work_beyond_the_vdw_work():
-    """One work of adhesion per element where F_adh's vdW part acts: the larger of w12 and the bridge's (docs/humidity.md).
+    """One work of adhesion per element where F_adh's vdW part acts: the larger of w12 and the bridge's
+    (docs/humidity.md).
     With the thesis's block pull-off (contact_adhesion 'none') the vdW acts on every touching element with
     w12 = 0.445 J/m^2 > 2 gamma cos 30 deg = 0.125 J/m^2: the bridges there add nothing, so their part of F_adh
     falls short of their own pull-off; with a w12 far below the bridge's it is the bridges' whole pull-off."""

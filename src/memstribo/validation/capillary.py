@@ -151,8 +151,9 @@ def published_rows() -> list[ValidationRow]:
     out.append(compare(
         TOPIC, "OTS on both flanks (the pinion given the coating's water contact angle): F_adh at RH 0.9 over RH 0.3",
         "hydrophobic beams: no humidity effect up to >= 90 % RH (a later paper citing " + DE_BOER_1998 + ")", 1.0,
-        round(growth_both, 3), "", rtol=0.1, command=OXIDE_COMMAND.replace("[--coating OTS --wear 0]", "--coating OTS "
-                                                                               "--wear 0 --set water_contact_angle=1.955"),
+        round(growth_both, 3), "", rtol=0.1,
+        command=OXIDE_COMMAND.replace("[--coating OTS --wear 0]",
+                                      "--coating OTS --wear 0 --set water_contact_angle=1.955"),
         note="no water bridge forms between two hydrophobic flanks (cos 112 deg + cos 112 deg < 0): F_adh is the "
         "dry value at every RH"))
     return out
