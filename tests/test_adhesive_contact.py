@@ -351,7 +351,8 @@ def _solved_zones(dx):
     from memstribo.physics.contact.settings import DEFAULTS
     from memstribo.physics.contact.subgrid import resolved_zones
 
-    return resolved_zones(dx, E_STAR, SIGMA0, H0, DEFAULTS.zone_elements)[0] or ((SIGMA0, H0),)
+    zones = resolved_zones(dx, E_STAR, SIGMA0, H0, DEFAULTS.zone_elements, DEFAULTS.contact_only_range)[0]
+    return zones or ((SIGMA0, H0),)
 
 
 def _reference_dense_fixed_point(h, dx, modulus, total, sigma, h0, p_start, tolerance, zones=None):

@@ -13,7 +13,7 @@ from memstribo.api import parameter_set
 from memstribo.physics.closed_form import maugis_dugdale_line_tension
 from memstribo.physics.contact import settings as contact_settings
 from memstribo.physics.contact import solve_line_contact
-from memstribo.physics.contact.subgrid import CONTACT_ONLY, resolved_zone, resolved_zones, zone_width
+from memstribo.physics.contact.subgrid import resolved_zone, resolved_zones, zone_width
 
 E_STAR, SIGMA0, H0 = 85e9, 1.785e9, 0.2494e-9
 
@@ -27,13 +27,13 @@ def test_zone_width_is_the_small_scale_dugdale_strip():
 def test_the_resolved_law_keeps_w_and_spans_the_elements_asked_for():
     d = zone_width(E_STAR, SIGMA0, H0)
     assert resolved_zone(d / 2, E_STAR, SIGMA0, H0, 2) == (SIGMA0, H0)  # resolved: unchanged
-    assert resolved_zones(d / 2, E_STAR, SIGMA0, H0, 2) == (None, H0)
+    assert resolved_zones(d / 2, E_STAR, SIGMA0, H0, 2, 1e-6) == (None, H0)
     assert resolved_zone(24.8e-9, E_STAR, SIGMA0, H0, 0) == (SIGMA0, H0)  # off
     sigma, h = resolved_zone(24.8e-9, E_STAR, SIGMA0, H0, 2)
     assert sigma < SIGMA0 and sigma * h == pytest.approx(SIGMA0 * H0, rel=1e-12)
     assert zone_width(E_STAR, sigma, h) == pytest.approx(2 * 24.8e-9, rel=1e-12)
-    zones, reach = resolved_zones(24.8e-9, E_STAR, SIGMA0, H0, 2)
-    assert zones == ((sigma, h), (SIGMA0 - sigma, CONTACT_ONLY * H0)) and reach == h
+    zones, reach = resolved_zones(24.8e-9, E_STAR, SIGMA0, H0, 2, 1e-6)
+    assert zones == ((sigma, h), (SIGMA0 - sigma, 1e-6 * H0)) and reach == h
 
 
 def _torque_contact():

@@ -311,8 +311,8 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
                          "or neither")
     vdw = bool(cohesive_stress) and bool(cohesive_range)
     zones = (resolved_zones(float(dx), float(contact_modulus), float(cohesive_stress), float(cohesive_range),
-                            settings.zone_elements)[0] or ((float(cohesive_stress), float(cohesive_range)),)
-             if vdw else ())
+                            settings.zone_elements, settings.contact_only_range)[0]
+             or ((float(cohesive_stress), float(cohesive_range)),) if vdw else ())
     zones += ((sigma_c, reach),)
     stress = sum(sigma for sigma, _ in zones)
     reach_max = max(float(np.max(r)) for _, r in zones)
@@ -364,7 +364,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     if sigma0 == 0.0 or h0 == 0.0:
         sigma0 = h0 = 0.0
     elif not internal and zones is None:  # a zone the grid does not resolve: the same w, one it resolves
-        zones, h0 = resolved_zones(dx, modulus, sigma0, h0, settings.zone_elements)
+        zones, h0 = resolved_zones(dx, modulus, sigma0, h0, settings.zone_elements, settings.contact_only_range)
     if dense and approach is None and not periodic and not internal and n <= settings.dense_solve_max:
         solution = _dense_adhesive(h, dx, modulus, load, mean_pressure, tolerance, max_iterations, reference_distance,
                                    initial_pressure, sigma0, h0, zones, start, settings)
@@ -408,7 +408,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
             h, 0.0, np.maximum(p_start, 0.0) if p_start is not None else None, tolerance)
         outer, cohesive, adhesive_load = 1, np.zeros(n, dtype=bool), 0.0
     converged = bool(settled and residual <= tolerance)
-    kind = f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)" if sigma0 else "non-adhesive"
+    kind = _zone_kind(sigma0, h0, zones) if sigma0 else "non-adhesive"
     message = _adhesive_message(kind, control, converged, outer, iterations, residual, tolerance, why, cap,
                                 coarse[0], contact, cohesive, periodic)
     return ContactSolution(pressure=p, gap=np.maximum(gap, 0.0) if converged else gap, contact=contact,
@@ -429,9 +429,22 @@ def _dense_adhesive(h, dx, modulus, load, mean_pressure, tolerance, max_iteratio
             return dataclasses.replace(solution, adhesive_load=0.0, cohesive=np.zeros(n, dtype=bool))
         return None
     return _small_capillary(h, dx, modulus, load, mean_pressure, False, tolerance, max_iterations,
-                            reference_distance, initial_pressure, sigma0, h0, ((sigma0, h0),) if zones is None else zones,
-                            kind=f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)",
+                            reference_distance, initial_pressure, sigma0, h0,
+                            ((sigma0, h0),) if zones is None else zones, kind=_zone_kind(sigma0, h0, zones),
                             checked=True, settings=settings)
+
+
+def _zone_kind(sigma0, h0, zones):
+    """The start of the message of a Maugis-Dugdale solve [text]: sigma0 [Pa] and h0 [m], and the law of a widened
+    zone (``zones`` of :func:`memstribo.physics.contact.subgrid.resolved_zones`, or None)."""
+    widened = (zones is not None and len(zones) == 2 and np.ndim(zones[1][1]) == 0
+               and zones[1][1] < 1e-3 * zones[0][1])  # the contact-only part has (almost) no range
+    if not widened:
+        return f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)"
+    (sigma, h), _ = zones
+    return (f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {sigma * h / sigma0:.4g} m; the zone is "
+            f"narrower than this grid resolves: the same w over sigma = {sigma:.4g} Pa, h = {h:.4g} m outside the "
+            f"contact)")
 
 
 def _approach_problem(operator, h, dx, modulus, periodic, reference, cap, small, sigma0, h0, zones, p_start, delta,

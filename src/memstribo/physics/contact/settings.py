@@ -105,6 +105,11 @@ class SolverSettings:
     (:func:`memstribo.physics.contact.subgrid.resolved_zone`, issue #25); finer grids are unchanged. 0: off (the
     zone as given, unresolved on coarse grids). Set by bench/bench_grid_adhesion.py."""
 
+    contact_only_range: float = 1e-6
+    """Range of the contact-only part of a widened zone (the rest of sigma0 on the elements in contact), relative to
+    h0 [dimensionless]: an element outside the contact would need a gap below it to carry that part
+    (:func:`memstribo.physics.contact.subgrid.resolved_zones`). Not tuned: any value far below 1 gives the same."""
+
     fraction_tolerance: float = 1e-4
     """The cohesive zone has settled when no element's cohesive fraction changes by more than this
     [dimensionless]. Looser: fewer zone updates, a less exact front. Set by bench/bench_zone_updates.py."""

@@ -54,24 +54,20 @@ def resolved_zone(dx, contact_modulus, cohesive_stress, cohesive_range, elements
     return sigma, sigma0 * h0 / sigma
 
 
-#: Range of the contact-only part of the law in :func:`resolved_zones`, relative to h0 [-]: the elements in
-#: contact only (an open element would need a gap below 1e-6 h0 to carry it).
-CONTACT_ONLY = 1e-6
-
-
-def resolved_zones(dx, contact_modulus, cohesive_stress, cohesive_range, elements):
-    """The solve's cohesive zones (``zones`` of :func:`memstribo.physics.contact.cohesive._cohesive_fraction`) and range.
+def resolved_zones(dx, contact_modulus, cohesive_stress, cohesive_range, elements, contact_only):
+    """The solve's cohesive zones (``zones`` of :func:`.cohesive._cohesive_fraction`) and their range.
 
     Returns (None, h0) where the grid resolves the zone (:func:`resolved_zone` leaves it as it is), else
-    (((sigma, h), (sigma0 - sigma, CONTACT_ONLY h0)), h): the resolved law (sigma, h) of :func:`resolved_zone`
+    (((sigma, h), (sigma0 - sigma, contact_only h0)), h): the resolved law (sigma, h) of :func:`resolved_zone`
     outside the contact, and the rest of sigma0 on the elements in contact only. An element in contact then still
     holds a tension up to sigma0 before it opens, as on a fine grid (with sigma alone the coarse contact split
     between asperities where the fine one stays closed, and its tension fell a further 2-3 %); the work of
-    separation stays w (the second part has no range). Arguments as :func:`resolved_zone` (dx [m], E* [Pa],
-    sigma0 [Pa], h0 [m], elements [count]); sigma [Pa], h [m].
+    separation stays w (the second part has no range: ``contact_only`` [-], its range relative to h0, is so small,
+    ``SolverSettings.contact_only_range``, that only elements in contact carry it). Arguments as
+    :func:`resolved_zone` (dx [m], E* [Pa], sigma0 [Pa], h0 [m], elements [count]); sigma [Pa], h [m].
     """
     sigma0, h0 = float(cohesive_stress), float(cohesive_range)
     sigma, h = resolved_zone(dx, contact_modulus, sigma0, h0, elements)
     if sigma >= sigma0:
         return None, h0
-    return ((sigma, h), (sigma0 - sigma, CONTACT_ONLY * h0)), h
+    return ((sigma, h), (sigma0 - sigma, contact_only * h0)), h
