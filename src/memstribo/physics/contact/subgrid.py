@@ -10,7 +10,8 @@ the work of adhesion w = sigma0 h0, and on sigma0 only weakly (the closed form o
 46.24 and 45.74 N/m at sigma0, sigma0 / 2 and sigma0 / 2.5, the contact half-width 529.6, 522.1, 519.0 nm). So,
 as cohesive finite elements do (Turon et al. 2007): where the zone's small-scale width d is narrower than
 ``elements`` grid elements, the solve uses the lower stress and longer range that keep w and make the zone
-``elements`` elements wide; where the grid resolves the zone, nothing changes (docs/contact.md, "Unresolved zone").
+``elements`` elements wide, while an element in contact still holds a tension up to sigma0 before it opens
+(:func:`resolved_zones`); where the grid resolves the zone, nothing changes (docs/contact.md, "Unresolved zone").
 """
 
 from __future__ import annotations
