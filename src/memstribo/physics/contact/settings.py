@@ -108,7 +108,7 @@ class SolverSettings:
     contact_only_range: float = 1e-6
     """Range of the contact-only part of a widened zone (the rest of sigma0 on the elements in contact), relative to
     h0 [dimensionless]: an element outside the contact would need a gap below it to carry that part
-    (:func:`memstribo.physics.contact.subgrid.resolved_zones`). Not tuned: any value far below 1 gives the same."""
+    (:func:`memstribo.physics.contact.subgrid.resolved_zones`). Not tuned: only its smallness matters."""
 
     fraction_tolerance: float = 1e-4
     """The cohesive zone has settled when no element's cohesive fraction changes by more than this
