@@ -117,12 +117,14 @@ def test_the_cycles_adhesion_force_is_the_solves_tension(params):
 
 
 def test_doubling_the_work_of_adhesion_raises_the_cycles_adhesion_force(params):
-    """The default cycle (rough teeth): twice w gives a larger adhesion force (version 2's zone-only measure fell from
-    2.67 to 0.06 uN); measured at 121 steps: 111 -> 120 uN at 40 elements across 2a, 162 -> 207 uN at 80."""
+    """The default cycle (rough teeth): twice w gives a much larger adhesion force (version 2's zone-only measure fell
+    from 2.67 to 0.06 uN; with the zone unresolved on the default grid it rose by 8 %, 111 -> 120 uN); with the
+    resolved zone (memstribo.physics.contact.subgrid), measured at 121 steps: 161 -> 262 uN at 40 elements across 2a,
+    172 -> 271 uN at 80 (31 steps: 164 -> 268 uN at 40)."""
     w = float(_torque_contact(params)[3])
     single = summarize(simulate_mesh(params, steps=31))["adhesion_force_mean"]
     double = summarize(simulate_mesh(params.updated({"work_of_adhesion": 2 * w}), steps=31))["adhesion_force_mean"]
-    assert double > 1.02 * single > 0
+    assert double > 1.3 * single > 0
 
 
 # --- the refinement -----------------------------------------------------------------------------------------------

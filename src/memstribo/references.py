@@ -50,6 +50,15 @@ REFERENCES: dict[str, str] = {
         "D. Maugis, 'Adhesion of spheres: the JKR-DMT transition using a Dugdale model', "
         "J. Colloid Interface Sci. 150 (1992) 243-269. doi:10.1016/0021-9797(92)90285-T"
     ),
+    "dugdale_1960": (
+        "D. S. Dugdale, 'Yielding of steel sheets containing slits', J. Mech. Phys. Solids 8 (1960) 100-104. "
+        "doi:10.1016/0022-5096(60)90013-2"
+    ),
+    "turon_2007": (
+        "A. Turon, C. G. Davila, P. P. Camanho, J. Costa, 'An engineering solution for mesh size effects in the "
+        "simulation of delamination using cohesive zone models', Eng. Fract. Mech. 74 (2007) 1665-1682. "
+        "doi:10.1016/j.engfracmech.2006.08.025"
+    ),
     "rey_2017": (
         "V. Rey, G. Anciaux, J.-F. Molinari, 'Normal adhesive contact on rough surfaces: efficient algorithm for "
         "FFT-based BEM resolution', Comput. Mech. 60 (2017) 69-81. doi:10.1007/s00466-017-1392-5"

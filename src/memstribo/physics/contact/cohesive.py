@@ -13,6 +13,7 @@ from memstribo.errors import InputError
 from memstribo.physics.contact.dense import _dense_fraction, _small_capillary, _small_contact
 from memstribo.physics.contact.halfplane import ContactSolution, _dot
 from memstribo.physics.contact.inputs import _check_adhesive_inputs, _check_problem
+from memstribo.physics.contact.subgrid import resolved_zones
 from memstribo.physics.contact.line import (_active_set, _cold_start, _nested_guess, _operator_and_limits,
                                             _polonsky_keer, _solve_elastic)
 from memstribo.references import cites
@@ -309,7 +310,9 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
         raise InputError("give both cohesive_stress [Pa] and cohesive_range [m] (the Maugis-Dugdale sigma0 and h0), "
                          "or neither")
     vdw = bool(cohesive_stress) and bool(cohesive_range)
-    zones = ((float(cohesive_stress), float(cohesive_range)),) if vdw else ()
+    zones = (resolved_zones(float(dx), float(contact_modulus), float(cohesive_stress), float(cohesive_range),
+                            settings.zone_elements, settings.contact_only_range)[0]
+             or ((float(cohesive_stress), float(cohesive_range)),) if vdw else ())
     zones += ((sigma_c, reach),)
     stress = sum(sigma for sigma, _ in zones)
     reach_max = max(float(np.max(r)) for _, r in zones)
@@ -360,6 +363,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
     h0 = float(cohesive_range or 0.0)
     if sigma0 == 0.0 or h0 == 0.0:
         sigma0 = h0 = 0.0
+    elif not internal and zones is None:  # a zone the grid does not resolve: the same w, one it resolves
+        zones, h0 = resolved_zones(dx, modulus, sigma0, h0, settings.zone_elements, settings.contact_only_range)
     if dense and approach is None and not periodic and not internal and n <= settings.dense_solve_max:
         solution = _dense_adhesive(h, dx, modulus, load, mean_pressure, tolerance, max_iterations, reference_distance,
                                    initial_pressure, sigma0, h0, zones, start, settings)
@@ -403,7 +408,7 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
             h, 0.0, np.maximum(p_start, 0.0) if p_start is not None else None, tolerance)
         outer, cohesive, adhesive_load = 1, np.zeros(n, dtype=bool), 0.0
     converged = bool(settled and residual <= tolerance)
-    kind = f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)" if sigma0 else "non-adhesive"
+    kind = _zone_kind(sigma0, h0, zones) if sigma0 else "non-adhesive"
     message = _adhesive_message(kind, control, converged, outer, iterations, residual, tolerance, why, cap,
                                 coarse[0], contact, cohesive, periodic)
     return ContactSolution(pressure=p, gap=np.maximum(gap, 0.0) if converged else gap, contact=contact,
@@ -423,12 +428,23 @@ def _dense_adhesive(h, dx, modulus, load, mean_pressure, tolerance, max_iteratio
         if solution is not None:
             return dataclasses.replace(solution, adhesive_load=0.0, cohesive=np.zeros(n, dtype=bool))
         return None
-    if zones is None:
-        return _small_capillary(h, dx, modulus, load, mean_pressure, False, tolerance, max_iterations,
-                                reference_distance, initial_pressure, sigma0, h0, ((sigma0, h0),),
-                                kind=f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)",
-                                checked=True, settings=settings)
-    return None
+    return _small_capillary(h, dx, modulus, load, mean_pressure, False, tolerance, max_iterations,
+                            reference_distance, initial_pressure, sigma0, h0,
+                            ((sigma0, h0),) if zones is None else zones, kind=_zone_kind(sigma0, h0, zones),
+                            checked=True, settings=settings)
+
+
+def _zone_kind(sigma0, h0, zones):
+    """The start of the message of a Maugis-Dugdale solve [text]: sigma0 [Pa] and h0 [m], and the law of a widened
+    zone (``zones`` of :func:`memstribo.physics.contact.subgrid.resolved_zones`, or None)."""
+    widened = (zones is not None and len(zones) == 2 and np.ndim(zones[1][1]) == 0
+               and zones[1][1] < 1e-3 * zones[0][1])  # the contact-only part has (almost) no range
+    if not widened:
+        return f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)"
+    (sigma, h), _ = zones
+    return (f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {sigma * h / sigma0:.4g} m; the zone is "
+            f"narrower than this grid resolves: the same w over sigma = {sigma:.4g} Pa, h = {h:.4g} m outside the "
+            f"contact)")
 
 
 def _approach_problem(operator, h, dx, modulus, periodic, reference, cap, small, sigma0, h0, zones, p_start, delta,

@@ -99,6 +99,17 @@ class SolverSettings:
     small_zone: int = 2048
     """Grid size up to which ``small_zone_max_updates`` applies [elements]. bench/bench_zone_updates.py."""
 
+    zone_elements: float = 2.0
+    """Grid elements the Maugis-Dugdale zone must span [count]: where its small-scale width d = pi h0 E* / (4 sigma0)
+    is narrower, the solve lowers sigma0 and lengthens h0 at the same work of adhesion until it spans this many
+    (:func:`memstribo.physics.contact.subgrid.resolved_zone`, issue #25); finer grids are unchanged. 0: off (the
+    zone as given, unresolved on coarse grids). Set by bench/bench_grid_adhesion.py."""
+
+    contact_only_range: float = 1e-6
+    """Range of the contact-only part of a widened zone (the rest of sigma0 on the elements in contact), relative to
+    h0 [dimensionless]: an element outside the contact would need a gap below it to carry that part
+    (:func:`memstribo.physics.contact.subgrid.resolved_zones`). Not tuned: only its smallness matters."""
+
     fraction_tolerance: float = 1e-4
     """The cohesive zone has settled when no element's cohesive fraction changes by more than this
     [dimensionless]. Looser: fewer zone updates, a less exact front. Set by bench/bench_zone_updates.py."""
