@@ -83,7 +83,7 @@ class SolverSettings:
     solves) is dominated by the per-call overhead of the FFT-based solver. Set by bench/bench_mesh.py and
     bench/bench_map.py (bench/results-map.txt)."""
 
-    zone_kernel_max: int = 2048
+    zone_kernel_max: int = 4096
     """Free-boundary grids up to this many elements solve the cohesive-zone problems (Maugis-Dugdale, capillary) under
     load control by the compiled loop (:mod:`memstribo.physics._zone_kernel`; ``dense_solve_max`` still bounds the
     plain problem, which builds the whole matrix) [elements]. The loop reads the n numbers of the Toeplitz influence

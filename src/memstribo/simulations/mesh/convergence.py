@@ -63,7 +63,7 @@ def _percent(value: float) -> str:
 
 @cites("model")
 def refined_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, realisation=0, progress=False,
-                  step_refinements=None, grid_refinements=None, simulate=None, summarize=None):
+                  step_refinements=None, grid_refinements=None, simulate=None, summarize=None, spot_checks=True):
     """The meshing cycle refined in steps, then in grid, until the margin and the mean COF hold (MODEL 7d).
 
     Parameters
@@ -75,11 +75,17 @@ def refined_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         ``mesh_step_refinements`` and ``mesh_grid_refinements``, 0 to 8); 0 skips that check.
     simulate, summarize : callable, optional
         The cycle and its summary (default: those of :mod:`memstribo.simulations.mesh`).
+    spot_checks : bool
+        Compare first by the spot check (:func:`memstribo.simulations.mesh.spot.spot_check`: the finer cycle solved
+        only at the steps that decide the margin, and on a subsample for the mean COF); where it passes, the
+        comparison has passed and the cycle is kept; where it fails or does not apply, the whole finer cycle is
+        computed and compared (default True; with the default ``simulate`` and ``summarize`` only).
 
     Returns
     -------
     (xarray.Dataset, dict)
-        The finest cycle computed and its summary, with the keys of :data:`CONVERGENCE_KEYS`:
+        The finest cycle computed in whole (a comparison passed by the spot check keeps the coarser cycle: its margin
+        and mean COF are those of the finer one to within 2 %) and its summary, with the keys of :data:`CONVERGENCE_KEYS`:
         ``converged`` (both checks passed), ``step_converged``, ``step_change_margin`` (of |margin|),
         ``step_change_margin_ft`` (the same change of F_t, the former figure), ``step_change_cof``,
         ``steps_checked`` (steps of the finer cycle of the last step comparison), ``grid_converged``,
@@ -94,6 +100,12 @@ def refined_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     InputError
         A cap outside 0 to 8.
     """
+    spot = None
+    if simulate is None and summarize is None and spot_checks:  # the spot check reads the cycle as simulate_mesh makes it
+        from memstribo.simulations.mesh.spot import spot_check
+
+        def spot(dataset, p, n):
+            return spot_check(dataset, p, roughness, n, coating=coating, wear=wear, realisation=realisation)
     if simulate is None or summarize is None:
         from memstribo.simulations.mesh.cycle import simulate_mesh
         from memstribo.simulations.mesh.verdict import summarize as summary_of
@@ -115,7 +127,7 @@ def refined_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0,
         return dataset, summarize(dataset)
 
     state = {"params": params, "steps": steps, "record": {key: None for key in CONVERGENCE_KEYS},
-             "sentences": [], "warnings": []}
+             "sentences": [], "warnings": [], "spot": spot}
     state["dataset"], state["summary"] = run(params, steps)
     _refine_steps(state, run, caps[0])
     _refine_grid(state, run, caps[1])
@@ -132,18 +144,33 @@ def refined_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     return state["dataset"], summary
 
 
+def _spot(state, params, steps):
+    """The spot check of the current cycle against the finer one (``params``, ``steps``) where it applies and passes,
+    else None (the whole finer cycle is then computed: a failed spot check says only that it is needed)."""
+    if state["spot"] is None:
+        return None
+    change = state["spot"](state["dataset"], params, steps)
+    return change if change is not None and change["passed"] else None
+
+
 def _refine_steps(state, run, cap):
     """Steps first: N -> 2N - 1 (the same positions and one between each pair) until a comparison passes."""
     record = state["record"]
     for _ in range(cap):
         steps = state["steps"]
         finer = 2 * steps - 1
-        dataset, fine = run(state["params"], finer)
-        change = compare_cycles(fine, state["summary"])
+        spotted = _spot(state, state["params"], finer)
+        if spotted is not None:
+            change, how = spotted, f" (spot check: {spotted['solved']} of {finer} steps solved)"
+        else:
+            dataset, fine = run(state["params"], finer)
+            change, how = compare_cycles(fine, state["summary"]), ""
         state["sentences"].append(f"steps {steps} -> {finer}: margin {_percent(change['margin'])} of |margin|, mean "
-                                  f"COF {_percent(change['cof'])}")
+                                  f"COF {_percent(change['cof'])}{how}")
         record.update(step_converged=change["passed"], step_change_margin=change["margin"],
                       step_change_margin_ft=change["margin_ft"], step_change_cof=change["cof"], steps_checked=finer)
+        if spotted is not None:
+            return  # passed: the cycle is kept
         state.update(dataset=dataset, summary=fine, steps=finer)
         if change["passed"]:
             return
@@ -161,17 +188,23 @@ def _refine_grid(state, run, cap):
     for _ in range(cap):
         current = state["params"]
         finer = _finer_grid(current)
-        dataset, fine = run(finer, state["steps"])
-        change = compare_cycles(fine, state["summary"])
+        spotted = _spot(state, finer, state["steps"])
+        if spotted is not None:
+            change, how = spotted, f" (spot check: {spotted['solved']} of {state['steps']} steps solved)"
+        else:
+            dataset, fine = run(finer, state["steps"])
+            change, how = compare_cycles(fine, state["summary"]), ""
         what = (f"grid {_elements_across(current)} -> {_elements_across(finer)} elements across 2a"
                 if current["mesh_grid_spacing"] is None else
                 f"grid spacing {current['mesh_grid_spacing']:.3g} -> {finer['mesh_grid_spacing']:.3g} m")
         state["sentences"].append(f"{what}: margin {_percent(change['margin'])} of |margin|, mean COF "
-                                  f"{_percent(change['cof'])}, adhesion force {_percent(change['adhesion'])}")
+                                  f"{_percent(change['cof'])}, adhesion force {_percent(change['adhesion'])}{how}")
         record.update(grid_converged=change["passed"], grid_change_margin=change["margin"],
                       grid_change_cof=change["cof"], grid_change_adhesion=change["adhesion"],
                       elements_checked=_elements_across(finer),
                       adhesion_force_resolved=bool(change["adhesion"] < ADHESION_TOLERANCE))
+        if spotted is not None:
+            break  # passed: the cycle is kept
         state.update(dataset=dataset, summary=fine, params=finer)
         if change["passed"]:
             break
