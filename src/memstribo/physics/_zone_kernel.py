@@ -130,14 +130,16 @@ def _append_to_factor(kernel, factor, order, m, j):
 def _update_factor(kernel, contact, cached, order, m_old, factor, x, max_changes):
     """The factor of the contact set from the factor of the previous set (``order[:m_old]``, ``cached``): rows
     removed and added one at a time instead of a new factorisation (the set changes at a few edge elements between
-    zone updates). Returns the new size, or -1 where the changes exceed ``max_changes`` or a row cannot be added
-    (the caller factorises anew)."""
+    zone updates). Returns the new size, or -1 where more than ``max_changes`` rows are removed or a row cannot be
+    added (the caller factorises anew). Rows added cost no more than a new factorisation (a row added is a row of
+    the same left-looking factorisation), so any number of them is added; a row removed costs a rank-one update of
+    the rows after it."""
     n = contact.size
-    changes = 0
+    removed = 0
     for i in range(n):
-        if contact[i] != cached[i]:
-            changes += 1
-    if changes > max_changes:
+        if cached[i] and not contact[i]:
+            removed += 1
+    if removed > max_changes:
         return -1
     m = m_old
     for k in range(m_old - 1, -1, -1):  # removals, from the end (earlier positions stay valid)
@@ -313,7 +315,7 @@ def zone_solve(kernel, reverse, h, total, sigmas, reaches, per_element, periodic
         sigma += sigmas[z]
     p = np.zeros(n)
     gap = np.zeros(n)
-    state = (p, gap, np.zeros(n, np.int64), np.zeros((n, n)), np.zeros(n), np.zeros(n), np.zeros(n),
+    state = (p, gap, np.zeros(n, np.int64), np.empty((n, n)), np.zeros(n), np.zeros(n), np.zeros(n),
              np.zeros(n + 1, np.bool_), np.zeros((max_sets, n), np.bool_), np.zeros(n, np.bool_),
              np.zeros(n, np.int64), np.zeros(1, np.int64), np.zeros(n))
     h_eff = np.empty(n)
