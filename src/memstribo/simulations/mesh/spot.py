@@ -13,8 +13,8 @@ cycle's contacts only at the steps these two numbers are taken from:
   positions solved. The check's assumption, the one thing it does not verify: **R changes nowhere by more than
   twice the largest change measured where R is largest.** Under it the largest finer R, and so the finer margin, is
   the one computed.
-* **the mean COF** (and the mean adhesion force): estimated on an evenly spaced subsample of the finer steps (every
-  :data:`COF_STRIDE`-th; about 60 at the default steps), paired with the coarse cycle at the same positions
+* **the mean COF** (and the mean adhesion force): estimated on an evenly spaced subsample of the finer steps (about
+  :data:`COF_SAMPLES`, each solved with the step before it), paired with the coarse cycle at the same positions
   (interpolated linearly at the finer cycle's new positions): the relative change of sum(F_f s) / sum((F_N + F_adh)
   s) over the subsample. A statistical estimate, not an exact one: it reads the same roughness at the same places,
   so the noise of the roughness largely cancels; its spread is measured in bench/bench_convergence.py
@@ -36,10 +36,10 @@ import numpy as np
 
 from memstribo.simulations.mesh.verdict import TOLERANCE, relative_change, sliding_average
 
-__all__ = ["spot_check", "COF_STRIDE", "BUDGET"]
+__all__ = ["spot_check", "COF_SAMPLES", "BUDGET"]
 
-#: Every this many finer steps one is solved for the mean COF and the mean adhesion force.
-COF_STRIDE = 16
+#: About this many finer steps, evenly spaced, are solved for the mean COF and the mean adhesion force.
+COF_SAMPLES = 48
 
 #: The spot check is given up where it would solve more than this fraction of the finer cycle's steps.
 BUDGET = 0.35
@@ -201,6 +201,9 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
     coarse_at = np.interp(finer.positions, coarse_c, coarse_r)  # coarse R at the finer positions
     band = TOLERANCE * abs(margin)
     checked = set(np.flatnonzero(coarse_at >= r_max - band).tolist())
+    stride = max(1, steps // COF_SAMPLES)
+    sample = np.arange(stride // 2, steps, stride)
+    budget -= 2 * sample.size  # the subsample for the mean COF, each step with the one before it
     cache = {}
     finer_r = {}
     for _ in range(_ROUNDS):
@@ -223,7 +226,6 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
     largest = max(finer_r.values())
     fine_margin = f_t - largest
     # the mean COF and the mean adhesion force on an evenly spaced subsample, paired with the coarser cycle
-    sample = np.arange(COF_STRIDE // 2, steps, COF_STRIDE)
     finer.solve(sample)
     if finer.exceeded:
         return None
