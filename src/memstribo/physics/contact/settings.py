@@ -88,7 +88,7 @@ class SolverSettings:
     load control by the compiled loop (:mod:`memstribo.physics._zone_kernel`; ``dense_solve_max`` still bounds the
     plain problem, which builds the whole matrix) [elements]. The loop reads the n numbers of the Toeplitz influence
     matrix, not the matrix, so its cost grows like n times the contact set: the thesis load case on an 8 um face
-    (1116-element windows) took 15 ms per solve by the FFT-based solver and takes 3-4 ms by the loop (issue #25).
+    (1116-element windows) took 15 ms per solve by the FFT-based solver and takes 2.8 ms by the loop (issue #25).
     Its state is the one the loop reaches from the non-adhesive solution (the loading branch, ``cohesive_start``);
     the FFT-based solver above 1024 elements started the zone from a coarser grid's adhesive solution instead.
     Set by bench/bench_convergence.py (``--parts thesis``)."""
