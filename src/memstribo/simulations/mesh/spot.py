@@ -21,8 +21,9 @@ cycle's contacts only at the steps these two numbers are taken from:
   (``--parts spot``).
 
 Each step's contact is solved as in the whole cycle (its state does not depend on the step before it: the loading
-branch, :func:`memstribo.simulations.mesh.contacts._loading_branch`), so the steps solved give the numbers the whole
-finer cycle has there (to the solver's tolerance). The check is given up (None: the caller runs the whole finer
+branch, :func:`memstribo.simulations.mesh.contacts._loading_branch`), and each step is solved with the step before it
+(the elastic interlocking energy of a step is that of the change since the step before), so the steps solved give the
+numbers the whole finer cycle has there (to the solver's tolerance; tests/test_convergence.py). The check is given up (None: the caller runs the whole finer
 cycle) for dissimilar teeth (the F_t/F_f fixed point couples the steps), for the surface contact, where a checked
 step's contact reaches the ends of its window, or where the steps needed exceed :data:`BUDGET` of the finer cycle.
 """
@@ -34,6 +35,7 @@ import math
 
 import numpy as np
 
+from memstribo.references import cites
 from memstribo.simulations.mesh.verdict import TOLERANCE, relative_change, sliding_average
 
 __all__ = ["spot_check", "COF_SAMPLES", "BUDGET"]
@@ -164,6 +166,7 @@ def _resisting(finer, i, distance, cache):
     return total
 
 
+@cites("model")
 def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, realisation=0) -> dict | None:
     """The changes of the margin and the mean COF from a cycle to a finer one, from the finer steps that decide them.
 
@@ -172,7 +175,7 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
     dataset : xarray.Dataset
         The coarser cycle (:func:`memstribo.simulations.mesh.simulate_mesh`).
     params, steps
-        The finer cycle's parameter set and steps (twice the steps, or twice the grid's resolution).
+        The finer cycle's parameter set and number of steps [-] (twice the steps, or twice the grid's resolution).
     roughness, coating, wear, realisation
         As for :func:`memstribo.simulations.mesh.simulate_mesh` (the coarser cycle's).
 
@@ -181,9 +184,9 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
     dict or None
         ``margin`` (its change, of |margin| of the coarser cycle), ``margin_ft`` (of F_t), ``cof`` (estimated change of
         the mean COF), ``adhesion`` (estimated change of the mean adhesion force), all [-], ``passed`` (margin and COF
-        below 2 %), ``solved`` (finer steps solved), ``steps`` (of the finer cycle) and ``positions_checked`` (finer
-        positions whose R was computed); None where the spot check does not apply (module docstring): the whole finer
-        cycle is then needed.
+        below 2 %), ``solved`` (finer steps solved), ``steps`` (of the finer cycle), ``positions_checked`` (finer
+        positions whose R was computed) and ``stiction_margin`` (the finer cycle's margin [N]); None where the spot
+        check does not apply (module docstring): the whole finer cycle is then needed.
     """
     if params["mesh_contact"] != "line" or float(dataset.attrs.get("dundurs_beta", 0.0)) != 0.0:
         return None
