@@ -325,3 +325,26 @@ def test_a_passed_spot_check_keeps_the_cycle_and_a_failed_one_runs_the_finer(par
     _, summary = refined_cycle(params, steps=11, step_refinements=1, grid_refinements=1)
     assert summary["steps"] == 21 and summary["elements_across_contact"] == 80
     assert not any("spot" in text for text in summary["refinement"])
+
+
+def test_a_map_points_check_takes_the_spot_check_where_given_its_cycle(params, monkeypatch):
+    """check_cycle with the point's cycle runs no finer cycle where both spot checks pass, and the finer cycles where
+    they do not apply."""
+    from memstribo.simulations.mesh import cycle as cycle_module
+    from memstribo.simulations.mesh import spot
+    from memstribo.simulations.mesh.convergence import check_cycle
+
+    dataset = simulate_mesh(params, steps=11)
+    monkeypatch.setattr(spot, "spot_check", lambda *args, **options: {
+        "margin": 0.003, "margin_ft": 0.0, "cof": 0.004, "adhesion": 0.0, "passed": True, "solved": 3, "steps": 21,
+        "positions_checked": 1, "stiction_margin": 0.0})
+    runs = []
+    real = cycle_module.simulate_mesh
+    monkeypatch.setattr(cycle_module, "simulate_mesh", lambda *args, **options: runs.append(options) or real(*args,
+                                                                                                          **options))
+    check = check_cycle(params, steps=11, baseline=summarize(dataset), dataset=dataset)
+    assert check == {"converged": True, "step_change_margin": 0.003, "step_change_cof": 0.004,
+                     "grid_change_margin": 0.003, "grid_change_cof": 0.004} and runs == []
+    monkeypatch.setattr(spot, "spot_check", lambda *args, **options: None)
+    check = check_cycle(params, steps=11, baseline=summarize(dataset), dataset=dataset)
+    assert len(runs) == 2 and isinstance(check["converged"], bool)

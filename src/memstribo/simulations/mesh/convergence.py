@@ -236,15 +236,30 @@ CHECK_KEYS = ("converged", "step_change_margin", "step_change_cof", "grid_change
 
 @cites("model")
 def check_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, realisation=0, baseline=None,
-                simulate=None, summarize=None) -> dict:
+                simulate=None, summarize=None, dataset=None) -> dict:
     """Whether a sweep or map point's cycle is converged: one comparison at twice the steps and one at twice the grid.
 
     The check of :func:`refined_cycle` without its refinement (a point of a sweep or a map keeps its settings, so
     that its neighbours are comparable, and says whether they hold): ``converged`` is true when the margin (of
     |margin|) and the mean COF change by less than 2 % at ``2 N - 1`` steps and at a doubled grid resolution
     (MODEL 7d). Parameters as for :func:`refined_cycle`; ``baseline`` is the point's own summary where already
-    computed. Returns the keys of :data:`CHECK_KEYS` (changes [-]).
+    computed, ``dataset`` its cycle: with it (and the default ``simulate`` and ``summarize``) each comparison is first
+    the spot check (:func:`memstribo.simulations.mesh.spot.spot_check`), the whole finer cycle run only where that
+    fails or does not apply. Returns the keys of :data:`CHECK_KEYS` (changes [-]).
     """
+    spotted = {}
+    if dataset is not None and simulate is None and summarize is None:
+        from memstribo.simulations.mesh.spot import spot_check
+
+        n = int(params["mesh_steps"] if steps is None else steps)
+        for key, (p, m) in (("step", (params, 2 * n - 1)), ("grid", (_finer_grid(params), n))):
+            change = spot_check(dataset, p, roughness, m, coating=coating, wear=wear, realisation=realisation)
+            if change is not None and change["passed"]:
+                spotted[key] = change
+        if len(spotted) == 2:
+            return {"converged": True, "step_change_margin": spotted["step"]["margin"],
+                    "step_change_cof": spotted["step"]["cof"], "grid_change_margin": spotted["grid"]["margin"],
+                    "grid_change_cof": spotted["grid"]["cof"]}
     if simulate is None or summarize is None:
         from memstribo.simulations.mesh.cycle import simulate_mesh
         from memstribo.simulations.mesh.verdict import summarize as summary_of
@@ -257,8 +272,8 @@ def check_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, r
         return summarize(simulate(p, roughness, steps=n, coating=coating, wear=wear, realisation=realisation))
 
     baseline = run(params, steps) if baseline is None else baseline
-    step = compare_cycles(run(params, 2 * steps - 1), baseline)
-    grid = compare_cycles(run(_finer_grid(params), steps), baseline)
+    step = spotted.get("step") or compare_cycles(run(params, 2 * steps - 1), baseline)
+    grid = spotted.get("grid") or compare_cycles(run(_finer_grid(params), steps), baseline)
     return {"converged": bool(step["passed"] and grid["passed"]), "step_change_margin": step["margin"],
             "step_change_cof": step["cof"], "grid_change_margin": grid["margin"], "grid_change_cof": grid["cof"]}
 
