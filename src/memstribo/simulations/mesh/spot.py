@@ -99,6 +99,11 @@ class _Finer:
     def solved(self) -> int:
         return self.solves
 
+    def cost(self, indices) -> int:
+        """Steps :meth:`solve` would solve for ``indices`` (those not known yet, each with the step before it)."""
+        wanted = {int(i) for i in indices if math.isnan(self.friction[int(i)])}
+        return len(wanted | {i - 1 for i in wanted if i > 0})
+
     def window_steps(self, b, distance):
         """The steps whose sliding intervals meet the averaging window of step b (the steps its average reads)."""
         edges = self.edges
@@ -211,7 +216,7 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
     finer_r = {}
     for _ in range(_ROUNDS):
         needed = _steps_for(finer, checked, distance)
-        if finer.solved() + 2 * len(needed - set(np.flatnonzero(~np.isnan(finer.friction)).tolist())) > budget:
+        if finer.solved() + finer.cost(needed) > budget:
             return None
         finer.solve(needed)
         if finer.exceeded:
