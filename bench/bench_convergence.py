@@ -1,13 +1,19 @@
 """Benchmark of a verdict that holds still (issue #25): the self-refining cycle, the step and grid changes, the
 adhesion force against the grid, dissimilar teeth, and the thesis's load case on an 8 um face.
 
-    OMP_NUM_THREADS=1 python bench/bench_convergence.py [--parts refine steps grid adhesion dissimilar thesis]
-        [--realisations 0 1] [--thesis-steps 25]
+    OMP_NUM_THREADS=1 python bench/bench_convergence.py [--parts refine steps grid adhesion dissimilar thesis spot]
+        [--realisations 0 1] [--thesis-steps 25] [--sets silicon_thesis silicon_oxide_air]
 
 Every part prints one JSON line with its numbers, the CPU and wall time, and the machine's load average at its
 start and end (the development machine is shared: the CPU time is the fairer number). One core per process
 (SolverSettings.fft_workers = 1, OMP_NUM_THREADS=1). Also the benchmark named by SolverSettings.cohesive_start:
 ``steps`` compares the margin at 481, 961 and 1921 steps (the loading-branch state makes it hold still).
+``spot`` compares the spot check (:mod:`memstribo.simulations.mesh.spot`) with the whole finer cycle on each
+comparison the refined cycle makes first (481 -> 961 steps, 40 -> 80 elements across 2a at 481 steps), for each
+parameter set of ``--sets`` and realisation: the changes of the margin and the mean COF both give, and the CPU time of
+each. ``refine`` runs the self-refining cycle (``memstribo mesh``) of each set; ``thesis --thesis-steps 481`` the
+whole thesis load case without the refinement (``memstribo mesh --load-case thesis --set face_width=8um
+--no-refine``).
 """
 
 from __future__ import annotations
@@ -40,7 +46,9 @@ def main(argv=None):
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--parts", nargs="+", default=["refine", "steps", "dissimilar"],
-                        choices=("refine", "steps", "grid", "adhesion", "dissimilar", "thesis"))
+                        choices=("refine", "steps", "grid", "adhesion", "dissimilar", "thesis", "spot"))
+    parser.add_argument("--sets", nargs="+", default=["silicon_thesis"],
+                        help="parameter sets of the parts refine and spot")
     parser.add_argument("--realisations", nargs="+", type=int, default=[0, 1])
     parser.add_argument("--thesis-steps", type=int, default=25)
     args = parser.parse_args(argv)
@@ -50,13 +58,37 @@ def main(argv=None):
     def summary(p, steps, realisation=0):
         return summarize(simulate_mesh(p, steps=steps, realisation=realisation))
 
+    if "spot" in args.parts:  # the spot check against the whole finer cycle, on the refined cycle's first comparisons
+        from memstribo.simulations.mesh.spot import spot_check
+        from memstribo.simulations.mesh.verdict import compare_cycles
+
+        for name in args.sets:
+            base = parameter_set(name)
+            for k in args.realisations:
+                coarse, t_coarse = _timed(lambda: simulate_mesh(base, steps=481, realisation=k))
+                for what, finer, steps in (("steps", base, 961),
+                                           ("grid", base.updated({"mesh_elements_across_contact": 80}), 481)):
+                    fine, t_full = _timed(lambda: summarize(simulate_mesh(finer, steps=steps, realisation=k)))
+                    full = compare_cycles(fine, summarize(coarse))
+                    spot, t_spot = _timed(lambda: spot_check(coarse, finer, None, steps, realisation=k))
+                    _line("spot", set=name, realisation=k, check=what, full_margin=full["margin"], full_cof=full["cof"],
+                          full_adhesion=full["adhesion"], full_passed=full["passed"],
+                          spot_margin=None if spot is None else spot["margin"],
+                          spot_cof=None if spot is None else spot["cof"],
+                          spot_adhesion=None if spot is None else spot["adhesion"],
+                          spot_passed=None if spot is None else spot["passed"],
+                          spot_solved=None if spot is None else spot["solved"], finer_steps=steps,
+                          full_cpu_s=t_full["cpu_s"], spot_cpu_s=t_spot["cpu_s"], coarse_cpu_s=t_coarse["cpu_s"],
+                          load_before=t_full["load_before"], load_after=t_spot["load_after"])
     if "refine" in args.parts:  # the default cycle with its refinement (memstribo mesh)
-        for k in args.realisations:
-            (_, s), t = _timed(lambda: refined_cycle(params, realisation=k))
-            _line("refine", realisation=k, converged=s["converged"], steps=s["steps"],
-                  elements_across_contact=s["elements_across_contact"], margin_mN=s["stiction_margin"] * 1e3,
-                  cof_mean=s["cof_mean"], adhesion_force_uN=s["adhesion_force_mean"] * 1e6,
-                  refinement=s["refinement"], **t)
+        for name in args.sets:
+            chosen = parameter_set(name)
+            for k in args.realisations:
+                (_, s), t = _timed(lambda: refined_cycle(chosen, realisation=k))
+                _line("refine", set=name, realisation=k, converged=s["converged"], steps=s["steps"],
+                      elements_across_contact=s["elements_across_contact"], margin_mN=s["stiction_margin"] * 1e3,
+                      cof_mean=s["cof_mean"], adhesion_force_uN=s["adhesion_force_mean"] * 1e6,
+                      refinement=s["refinement"], **t)
     if "steps" in args.parts:  # the margin at 2x and 4x the steps (the issue's first measurement)
         for k in args.realisations:
             for across in (40, 80):

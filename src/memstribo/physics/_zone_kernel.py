@@ -7,8 +7,14 @@ here: the same fixed point, the same settling rule, the same inner active-set so
 (Cholesky) solves on each contact set; only the order of the floating-point sums differs (matrix
 products over the non-zero columns only). Between zone updates the contact set changes at a few edge
 elements: its factor is updated (rows removed by a rank-one update of the trailing block, rows added
-at the end) rather than computed anew where at most an eighth of the set (at least 4 elements) changes
-(issue #25: 3.9 -> 2.4 ms per solve at 160 elements across the Hertz width, the same results to round-off). Imported lazily (with numba: ~0.3 s) and
+at the end) rather than computed anew where at most an eighth of the set (at least 4 elements) is removed; any
+number of rows is added (issue #25: 3.9 -> 2.4 ms per solve at 160 elements across the Hertz width, the same
+results to round-off). The influence matrix of the uniform grid is Toeplitz (A[i, j] = kernel[|i - j|]): the loop
+reads its n numbers, not the n x n matrix (10 MB at the 1116 elements of the thesis load case, past the caches),
+and the dot products of the factorisation and of its solves are summed in any order (vectorised; ``_REORDERED_SUMS``):
+1116 elements 7.9 -> 3.1 ms per solve, 381 elements 1.39 -> 0.82 ms (issue #25, bench/bench_convergence.py), the
+same zone updates, pressures within 1.5e-8 of their largest; the product of the cohesive fractions with the matrix
+is updated by the columns whose fraction changed (2.8 ms at 1116 elements, 0.71 ms at 381). Imported lazily (with numba: ~0.3 s) and
 compiled once per machine (numba's cache, next to this file or in the user's cache directory;
 without a writable one, once per process).
 
@@ -27,21 +33,32 @@ from numba import njit
 SETTLED, UNSETTLED, FAILED = 0, 1, 2
 
 
-def _jit(function):
+def _jit(function, **options):
     """``numba.njit`` with numba's cache, or without it where no cache folder is writable (numba raises then;
-    each process compiles anew, ~6 s)."""
+    each process compiles anew, ~6 s). ``options``: more of njit's (``fastmath``)."""
     try:
-        return njit(cache=True, nogil=True)(function)
+        return njit(cache=True, nogil=True, **options)(function)
     except RuntimeError:  # "cannot cache function ...: no locator available"
-        return njit(nogil=True)(function)
+        return njit(nogil=True, **options)(function)
 
 
-@_jit
-def _cholesky(matrix, indices, m, factor):
-    """Lower Cholesky factor of matrix[indices[:m], indices[:m]] into factor[:m, :m]; False if not positive definite."""
+#: The dot products of the Cholesky factorisation and its updates may be summed in any order (vectorised: 2.4x at
+#: 165 elements); the factor then differs from the one summed in order by round-off (2e-15 of its largest entry).
+_REORDERED_SUMS = {"reassoc", "contract"}
+
+
+def _jit_sums(function):
+    """:func:`_jit` with the sums of ``function`` free to be reordered (:data:`_REORDERED_SUMS`)."""
+    return _jit(function, fastmath=_REORDERED_SUMS)
+
+
+@_jit_sums
+def _cholesky(kernel, indices, m, factor):
+    """Lower Cholesky factor of A[indices[:m], indices[:m]] into factor[:m, :m], A[i, j] = kernel[|i - j|] (a symmetric
+    Toeplitz matrix: the influence matrix of a uniform grid); False if not positive definite."""
     for j in range(m):
         jj = indices[j]
-        s = matrix[jj, jj]
+        s = kernel[0]
         for k in range(j):
             s -= factor[j, k] * factor[j, k]
         if not s > 0.0:  # also NaN
@@ -49,14 +66,14 @@ def _cholesky(matrix, indices, m, factor):
         d = math.sqrt(s)
         factor[j, j] = d
         for i in range(j + 1, m):
-            t = matrix[indices[i], jj]
+            t = kernel[abs(indices[i] - jj)]
             for k in range(j):
                 t -= factor[i, k] * factor[j, k]
             factor[i, j] = t / d
     return True
 
 
-@_jit
+@_jit_sums
 def _cholesky_solve(factor, m, b, out):
     """out[:m] = (L L^T)^-1 b[:m]."""
     for i in range(m):
@@ -64,11 +81,12 @@ def _cholesky_solve(factor, m, b, out):
         for k in range(i):
             s -= factor[i, k] * out[k]
         out[i] = s / factor[i, i]
-    for i in range(m - 1, -1, -1):
-        s = out[i]
-        for k in range(i + 1, m):
-            s -= factor[k, i] * out[k]
-        out[i] = s / factor[i, i]
+    for i in range(m - 1, -1, -1):  # L^T by rows of L (contiguous; the column of L^T was read with a stride of n)
+        value = out[i] / factor[i, i]
+        out[i] = value
+        row = factor[i, :i]
+        for k in range(i):
+            out[k] -= row[k] * value
 
 
 @_jit
@@ -94,19 +112,19 @@ def _delete_from_factor(factor, m, k, x):
             x[i] = c * x[i] - sn * factor[k + i, k + j]
 
 
-@_jit
-def _append_to_factor(matrix, factor, order, m, j):
-    """Add element j as row and column m of the factor of matrix[order[:m], order[:m]] (O(m^2)); False if the matrix
-    is then not positive definite."""
+@_jit_sums
+def _append_to_factor(kernel, factor, order, m, j):
+    """Add element j as row and column m of the factor of A[order[:m], order[:m]] (A[i, j] = kernel[|i - j|]; O(m^2));
+    False if the matrix is then not positive definite."""
     total = 0.0
     for i in range(m):
-        value = matrix[order[i], j]
+        value = kernel[abs(order[i] - j)]
         for t in range(i):
             value -= factor[i, t] * factor[m, t]
         value /= factor[i, i]
         factor[m, i] = value
         total += value * value
-    d2 = matrix[j, j] - total
+    d2 = kernel[0] - total
     if not d2 > 0.0:
         return False
     factor[m, m] = math.sqrt(d2)
@@ -115,17 +133,19 @@ def _append_to_factor(matrix, factor, order, m, j):
 
 
 @_jit
-def _update_factor(matrix, contact, cached, order, m_old, factor, x, max_changes):
+def _update_factor(kernel, contact, cached, order, m_old, factor, x, max_changes):
     """The factor of the contact set from the factor of the previous set (``order[:m_old]``, ``cached``): rows
     removed and added one at a time instead of a new factorisation (the set changes at a few edge elements between
-    zone updates). Returns the new size, or -1 where the changes exceed ``max_changes`` or a row cannot be added
-    (the caller factorises anew)."""
+    zone updates). Returns the new size, or -1 where more than ``max_changes`` rows are removed or a row cannot be
+    added (the caller factorises anew). Rows added cost no more than a new factorisation (a row added is a row of
+    the same left-looking factorisation), so any number of them is added; a row removed costs a rank-one update of
+    the rows after it."""
     n = contact.size
-    changes = 0
+    removed = 0
     for i in range(n):
-        if contact[i] != cached[i]:
-            changes += 1
-    if changes > max_changes:
+        if cached[i] and not contact[i]:
+            removed += 1
+    if removed > max_changes:
         return -1
     m = m_old
     for k in range(m_old - 1, -1, -1):  # removals, from the end (earlier positions stay valid)
@@ -136,26 +156,51 @@ def _update_factor(matrix, contact, cached, order, m_old, factor, x, max_changes
             m -= 1
     for i in range(n):
         if contact[i] and not cached[i]:
-            if not _append_to_factor(matrix, factor, order, m, i):
+            if not _append_to_factor(kernel, factor, order, m, i):
                 return -1
             m += 1
     return m
 
 
 @_jit
-def _columns_product(matrix, values, support, count, out):
-    """out = matrix @ values for values non-zero only at support[:count] (matrix symmetric: rows are read)."""
+def _columns_product(kernel, reverse, values, support, count, out):
+    """out = A @ values for values non-zero only at support[:count], A[i, j] = kernel[|i - j|] (Toeplitz).
+
+    ``reverse[k] = kernel[n - 1 - k]``, so that both halves of a column are read forwards (vectorised); each out[i]
+    sums the columns in the order of ``support``, as the product with the full matrix did (the same numbers).
+    """
     out[:] = 0.0
     n = out.size
+    last = n - 1
     for c in range(count):
         j = support[c]
         v = values[j]
-        for i in range(n):
-            out[i] += matrix[j, i] * v
+        left, before = out[:j], reverse[last - j:last]  # kernel[j - i] = reverse[last - j + i], i < j
+        for i in range(j):
+            left[i] += before[i] * v
+        right, after = out[j:], kernel[:n - j]
+        for i in range(n - j):
+            right[i] += after[i] * v
 
 
 @_jit
-def _contact(matrix, h, total, contact, tolerance_abs, max_sets, state):
+def _columns_product_add(kernel, reverse, values, support, count, out):
+    """out += A @ values for values non-zero only at support[:count] (:func:`_columns_product` without the reset)."""
+    n = out.size
+    last = n - 1
+    for c in range(count):
+        j = support[c]
+        v = values[j]
+        left, before = out[:j], reverse[last - j:last]
+        for i in range(j):
+            left[i] += before[i] * v
+        right, after = out[j:], kernel[:n - j]
+        for i in range(n - j):
+            right[i] += after[i] * v
+
+
+@_jit
+def _contact(kernel, reverse, h, total, contact, tolerance_abs, max_sets, state):
     """Non-adhesive contact under load control on the grid (as contact._dense_contact); fills p, gap, contact.
 
     ``state``: the work arrays and the cached factor (kept between calls while the contact set stays).
@@ -180,13 +225,13 @@ def _contact(matrix, h, total, contact, tolerance_abs, max_sets, state):
         if not same or cached[n] == 0:  # a new set (cached[n] flags a valid factor of order[:meta[0]])
             updated = -1
             if cached[n] == 1:  # the previous set's factor, rows removed and added (a few edge elements)
-                updated = _update_factor(matrix, contact, cached, order, meta[0], factor, x, max(4, m // 8))
+                updated = _update_factor(kernel, contact, cached, order, meta[0], factor, x, max(4, m // 8))
             cached[n] = 0
             if updated == m:
                 for i in range(m):
                     indices[i] = order[i]
             else:  # factorise anew, in the order of the elements
-                if not _cholesky(matrix, indices, m, factor):
+                if not _cholesky(kernel, indices, m, factor):
                     return False, 0.0
                 for i in range(m):
                     order[i] = indices[i]
@@ -218,7 +263,7 @@ def _contact(matrix, h, total, contact, tolerance_abs, max_sets, state):
         p[:] = 0.0
         for i in range(m):
             p[indices[i]] = delta * ones[i] + y[i]
-        _columns_product(matrix, p, indices, m, gap)
+        _columns_product(kernel, reverse, p, indices, m, gap)
         for i in range(n):
             gap[i] += h[i] - delta
             new[i] = gap[i] < -tolerance_abs
@@ -279,11 +324,12 @@ def _fraction(gap, sigmas, reaches, per_element, contact, periodic, out):
 
 
 @_jit
-def zone_solve(matrix, h, total, sigmas, reaches, per_element, periodic, fraction, contact, tolerance_abs,
+def zone_solve(kernel, reverse, h, total, sigmas, reaches, per_element, periodic, fraction, contact, tolerance_abs,
                max_updates, max_sets, fraction_tolerance, load_tolerance, max_change, aitken_min, aitken_max):
     """The cohesive-zone fixed point on a small grid (contact._dense_capillary); see the module's docstring.
 
-    ``fraction`` and ``contact`` hold the start and are overwritten. Returns (status, p, gap, delta, updates).
+    ``kernel[k]``: the influence matrix at offset k (A[i, j] = kernel[|i - j|], k < n), ``reverse[k] = kernel[n - 1 -
+    k]``. ``fraction`` and ``contact`` hold the start and are overwritten. Returns (status, p, gap, delta, updates).
     """
     n = h.size
     sigma = 0.0
@@ -291,7 +337,7 @@ def zone_solve(matrix, h, total, sigmas, reaches, per_element, periodic, fractio
         sigma += sigmas[z]
     p = np.zeros(n)
     gap = np.zeros(n)
-    state = (p, gap, np.zeros(n, np.int64), np.zeros((n, n)), np.zeros(n), np.zeros(n), np.zeros(n),
+    state = (p, gap, np.zeros(n, np.int64), np.empty((n, n)), np.zeros(n), np.zeros(n), np.zeros(n),
              np.zeros(n + 1, np.bool_), np.zeros((max_sets, n), np.bool_), np.zeros(n, np.bool_),
              np.zeros(n, np.int64), np.zeros(1, np.int64), np.zeros(n))
     h_eff = np.empty(n)
@@ -301,24 +347,29 @@ def zone_solve(matrix, h, total, sigmas, reaches, per_element, periodic, fractio
     history = np.zeros((3, n))  # the last three gaps (ring), for the Aitken extrapolation
     stored = 0
     extrapolated = np.empty(n)
+    pulled[:] = 0.0  # A @ applied: the product of the fractions applied so far, updated by their changes only
+    applied = np.zeros(n)
+    change_of = np.empty(n)
     for outer in range(1, max_updates + 1):
         extra = 0.0
         count = 0
         for i in range(n):
             extra += fraction[i]
-            if fraction[i] != 0.0:
+            if fraction[i] != applied[i]:
                 support[count] = i
+                change_of[i] = fraction[i] - applied[i]
+                applied[i] = fraction[i]
                 count += 1
         extra *= sigma
         if total + extra <= 0.0:
             return FAILED, p, gap, 0.0, outer
         if extra > 0.0:
-            _columns_product(matrix, fraction, support, count, pulled)
+            _columns_product_add(kernel, reverse, change_of, support, count, pulled)
             for i in range(n):
                 h_eff[i] = h[i] - sigma * pulled[i]
         else:
             h_eff[:] = h
-        ok, delta = _contact(matrix, h_eff, total + extra, contact, tolerance_abs, max_sets, state)
+        ok, delta = _contact(kernel, reverse, h_eff, total + extra, contact, tolerance_abs, max_sets, state)
         if not ok:
             return FAILED, p, gap, 0.0, outer
         _fraction(gap, sigmas, reaches, per_element, contact, periodic, new)

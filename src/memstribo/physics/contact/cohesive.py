@@ -317,7 +317,7 @@ def _solve_capillary(separation, dx, contact_modulus, load, mean_pressure, appro
     stress = sum(sigma for sigma, _ in zones)
     reach_max = max(float(np.max(r)) for _, r in zones)
     solution = None
-    if approach is None and not periodic and h.size <= settings.dense_solve_max:  # small free-boundary grids: dense
+    if approach is None and not periodic and h.size <= settings.zone_kernel_max:  # small free-boundary grids: dense
         solution = _small_capillary(h, dx, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
                                     reference_distance, initial_pressure, stress, reach_max, zones,
                                     settings=settings)
@@ -365,7 +365,8 @@ def _solve_adhesive(separation, dx, contact_modulus, load, mean_pressure, approa
         sigma0 = h0 = 0.0
     elif not internal and zones is None:  # a zone the grid does not resolve: the same w, one it resolves
         zones, h0 = resolved_zones(dx, modulus, sigma0, h0, settings.zone_elements, settings.contact_only_range)
-    if dense and approach is None and not periodic and not internal and n <= settings.dense_solve_max:
+    if (dense and approach is None and not periodic and not internal
+            and n <= (settings.zone_kernel_max if sigma0 else settings.dense_solve_max)):
         solution = _dense_adhesive(h, dx, modulus, load, mean_pressure, tolerance, max_iterations, reference_distance,
                                    initial_pressure, sigma0, h0, zones, start, settings)
         if solution is not None:

@@ -83,6 +83,16 @@ class SolverSettings:
     solves) is dominated by the per-call overhead of the FFT-based solver. Set by bench/bench_mesh.py and
     bench/bench_map.py (bench/results-map.txt)."""
 
+    zone_kernel_max: int = 4096
+    """Free-boundary grids up to this many elements solve the cohesive-zone problems (Maugis-Dugdale, capillary) under
+    load control by the compiled loop (:mod:`memstribo.physics._zone_kernel`; ``dense_solve_max`` still bounds the
+    plain problem, which builds the whole matrix) [elements]. The loop reads the n numbers of the Toeplitz influence
+    matrix, not the matrix, so its cost grows like n times the contact set: the thesis load case on an 8 um face
+    (1116-element windows) took 15 ms per solve by the FFT-based solver and takes 2.8 ms by the loop (issue #25).
+    Its state is the one the loop reaches from the non-adhesive solution (the loading branch, ``cohesive_start``);
+    the FFT-based solver above 1024 elements started the zone from a coarser grid's adhesive solution instead.
+    Set by bench/bench_convergence.py (``--parts thesis``)."""
+
     sparse_fraction_max: int = 8
     """Cohesive fractions of at most this many candidate elements are evaluated element by element instead of
     vectorised over the grid [elements] (the same numbers; per-call overhead). Set by bench/bench_zone_updates.py."""
