@@ -26,7 +26,7 @@ def spec(tiny: bool):
     return map_spec({
         "name": "thesis pair: drive torque x face width",
         "realisations": 2 if tiny else 4,
-        "steps": 11 if tiny else 31,
+        "steps": 11 if tiny else 481,  # the default mesh_steps: each point checks that it converged (MODEL 7d)
         "plot": ["drive_torque", "face_width"],
         "grid": {
             "drive_torque": {"start": "3e-8 N*m", "stop": "3e-7 N*m", "num": n},

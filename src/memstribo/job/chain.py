@@ -447,7 +447,7 @@ class RunChain:
         self.results["mesh"] = dataset
         summary = cycle_summary(dataset)
         summary.update(mesh.run_check(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
-                                 baseline=summary))  # twice the steps and twice the grid (MODEL 7d)
+                                      baseline=summary, dataset=dataset))  # 2x the steps, 2x the grid (MODEL 7d)
         count = self.options.realisations
         if count > 1:
             first = dict(summary, realisation=0, seed=[int(self.model_params["roughness_seed"]), 0])

@@ -363,7 +363,7 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
         values["stiction_probability"] = study["stiction_probability"]
         values["stiction_probability_low"], values["stiction_probability_high"] = study["stiction_probability_ci"]
         values["uncertainty_samples"] = study["samples"]
-    values.update(_converged(params, surface, steps, coating_object, wear, summaries[0]))
+    values.update(_converged(params, surface, steps, coating_object, wear, summaries[0], first))
     values.update(cycles_to_failure=math.nan, cycles_to_stiction=math.nan, critical_wear=math.nan)
     note = ""
     if coating is None:
@@ -398,15 +398,16 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
 map_point.units = {key: quantity_unit(key) for key in MAP_RESULTS}
 
 
-def _converged(params, surface, steps, coating, wear, first) -> dict:
+def _converged(params, surface, steps, coating, wear, first, dataset=None) -> dict:
     """``converged`` (1.0 or 0.0, NaN where unchecked) and the changes of the point's first realisation at twice
     the steps and at twice the grid's resolution (MODEL 7d; :func:`memstribo.simulations.mesh.convergence.check_cycle`).
-    Unchecked where ``mesh_step_refinements`` or ``mesh_grid_refinements`` is 0."""
+    Unchecked where ``mesh_step_refinements`` or ``mesh_grid_refinements`` is 0. ``dataset``: that cycle, so that
+    each comparison is first the spot check (the whole finer cycle only where it fails, :mod:`.mesh.spot`)."""
     if not (params["mesh_step_refinements"] and params["mesh_grid_refinements"]):
         return {"converged": math.nan, "step_change_margin": math.nan, "grid_change_margin": math.nan}
     from memstribo.simulations.mesh.convergence import check_cycle
 
-    check = check_cycle(params, surface, steps=steps, coating=coating, wear=wear, baseline=first)
+    check = check_cycle(params, surface, steps=steps, coating=coating, wear=wear, baseline=first, dataset=dataset)
     return {"converged": float(check["converged"]), "step_change_margin": check["step_change_margin"],
             "grid_change_margin": check["grid_change_margin"]}
 

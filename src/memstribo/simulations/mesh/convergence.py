@@ -278,10 +278,11 @@ def check_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, r
             "step_change_cof": step["cof"], "grid_change_margin": grid["margin"], "grid_change_cof": grid["cof"]}
 
 
-def run_check(params, roughness=None, *, steps=None, baseline=None) -> dict:
-    """:func:`check_cycle` for the run chain's bare cycle, with ``step_converged`` the two checks together (the
-    report's key); {} where ``mesh_step_refinements`` or ``mesh_grid_refinements`` is 0 (no check)."""
+def run_check(params, roughness=None, *, steps=None, baseline=None, dataset=None) -> dict:
+    """:func:`check_cycle` for the run chain's bare cycle (``dataset``, where given, for the spot check), with
+    ``step_converged`` the two checks together (the report's key); {} where ``mesh_step_refinements`` or
+    ``mesh_grid_refinements`` is 0 (no check)."""
     if not (params["mesh_step_refinements"] and params["mesh_grid_refinements"]):
         return {}
-    check = check_cycle(params, roughness, steps=steps, baseline=baseline)
+    check = check_cycle(params, roughness, steps=steps, baseline=baseline, dataset=dataset)
     return {**check, "step_converged": check["converged"]}

@@ -90,14 +90,16 @@ def sweep(params, parameter, values, roughness=None, *, steps=None, coating=None
             summary.update({k: v for k, v in ensemble.items() if k not in ("summaries", "per_realisation")})
             if parameter == "humidity":  # each realisation's margin, for its critical humidity
                 summary["stiction_margin_realisations"] = [r["stiction_margin"] for r in ensemble["per_realisation"]]
+            dataset = None
         else:
-            summary = summarize(simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear,
-                                              warm_start=warm))
+            dataset = simulate_mesh(point_params, roughness, steps=steps, coating=coating, wear=wear, warm_start=warm)
+            summary = summarize(dataset)
         summary["converged"] = None
-        if check:
+        if check:  # with the point's cycle, each comparison is first the spot check (mesh.spot)
             from memstribo.simulations.mesh.convergence import check_cycle
 
-            summary.update(check_cycle(point_params, roughness, steps=steps, coating=coating, wear=wear))
+            summary.update(check_cycle(point_params, roughness, steps=steps, coating=coating, wear=wear,
+                                       dataset=dataset))
         points.append({**head, **summary})
     return points
 
