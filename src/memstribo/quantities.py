@@ -415,6 +415,17 @@ _ENTRIES = [
     ("stiction_count", "1", "stiction count", "samples (realisations, or realisations x constant sets) that stick"),
     ("stiction_probability_ci", "1", "stiction probability interval",
      "95 % confidence interval [low, high] of the stiction probability from the number of samples (Wilson)"),
+    ("solve_sets", "1", "solve sets", "distinct values per realisation of the constants that need a contact solve "
+     "(null: every constant set its own); the bond energies keep every set's"),
+    ("solve_seconds", "s", "contact solve time", "wall time the uncertainty study spent solving meshing cycles"),
+    ("rescale_seconds", "s", "rescaling time", "wall time the uncertainty study spent rescaling solved cycles to "
+     "other bond energies"),
+    ("design_effect", "1", "design effect of shared contact solves",
+     "variance of P(stiction) over the samples that share a contact solve (a realisation and the solve's constants), "
+     "over the binomial variance of independent samples, at least 1 (Kish 1965); the interval uses "
+     "effective_samples = samples / design_effect"),
+    ("effective_samples", "1", "effective samples", "samples / design_effect: the independent samples worth as much "
+     "as the study's correlated ones (its interval of P(stiction) is Wilson's at this count)"),
     ("stiction_probability_text", _TEXT, "stiction probability with interval",
      "the count and its interval, e.g. '0 of 16 (95 % CI 0-19 %)'"),
     ("startup_stiction_count", "1", "start-up stiction count", "roughness realisations whose start-up margin is "
