@@ -231,6 +231,29 @@ def test_many_sets_of_one_cycle_rescale_as_full_reruns(params):
         rescale_cycles(cycle, params, [{"vdw_bond_energy": 1e-20}, {"youngs_modulus": 150e9}])
 
 
+def test_a_coated_cycle_rescales_both_vdw_energies(params):
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.uncertainty.rescale import reduce_cycle, rescalable, rescale_cycle
+
+    steps, wear = 21, 0.5
+
+    def cycle(p):
+        return simulate_mesh(p, steps=steps, coating=get_coating("OTS", p), wear=wear)
+
+    nominal = reduce_cycle(cycle(params))
+    bare, coated = np.asarray(nominal["bonds_vdw_bare"]), np.asarray(nominal["bonds_vdw_coated"])
+    assert bare.sum() > 0 and coated.sum() > 0  # half the gear blocks worn: both kinds of block bond
+    assert bare + coated == pytest.approx(np.asarray(nominal["bonds_vdw"]), rel=1e-12)
+    assert "coating_vdw_bond_energy" in rescalable(nominal) and "vdw_bond_energy" in rescalable(nominal)
+    new = {"vdw_bond_energy": 1.086e-20, "coating_vdw_bond_energy": 1.2e-21}
+    fast = rescale_cycle(nominal, params, new)
+    full = summarize(cycle(params.updated(new)))
+    for key in ("stiction_margin", "cof_mean", "cof_vdw", "friction_force_mean"):
+        assert fast[key] == pytest.approx(full[key], rel=1e-9), key
+    assert fast["cof_vdw"] != pytest.approx(summarize(nominal)["cof_vdw"], rel=1e-3)
+
+
 # --- sensitivity and critical values ------------------------------------------------------------------------------
 def test_sobol_indices_of_the_ishigami_function():
     from memstribo.uncertainty.study import _saltelli_design, sobol_indices

@@ -95,6 +95,10 @@ _ENTRIES = [
     ("energy_capillary", "J", "energy of capillary menisci", "energy dissipated by breaking capillary menisci"),
     ("bonds_chemical", "1", "chemical bonds", "chemical bonds between touching atomic blocks N_chem (3-10)"),
     ("bonds_vdw", "1", "vdW bonds", "van der Waals bonds N_vdW, weighted by the interface model (3-12)"),
+    ("bonds_vdw_bare", "1", "vdW bonds over bare gear blocks", "the part of bonds_vdw over gear blocks whose coating "
+     "is worn (coated cycles; U_vdW of silicon acts on them)"),
+    ("bonds_vdw_coated", "1", "vdW bonds over coated gear blocks", "the part of bonds_vdw over gear blocks still "
+     "coated (coated cycles; the coating's U_vdW acts on them)"),
     ("sliding_distance", "m", "sliding distance", "sliding distance |u1 - u2| dt of the step (as a scalar: in all)"),
     ("sliding_velocity", "m/s", "sliding velocity", "sliding velocity u1 - u2 (4-12)"),
     ("time", "s", "time", "time since the first point of contact (4-18)"),

@@ -13,9 +13,11 @@ margin ``F_t - max R``, the cycle's COF ``sum E / integral (F_N + F_adh) ds`` (t
 does not involve the bond energies). :func:`rescale_cycle` recomputes these from one solved cycle's
 dataset; it agrees with a full rerun to round-off (tests/test_uncertainty.py).
 
-Not rescaled: a coated cycle's vdW energy (the dataset holds the vdW bond count of bare and coated
-blocks together; :data:`SPLIT_VARIABLES` would allow it), and anything that changes the contact
-solve or the block mechanics (moduli, Hamaker constant, D0, block geometry, threshold strain).
+A coated cycle (worn blocks, ``wear`` < 1) writes its vdW bond count over bare and over coated gear
+blocks apart (:data:`SPLIT_VARIABLES`): U_vdW of silicon acts on the first, the coating's on the second,
+and both rescale. Not rescaled: anything that changes the contact solve or the block mechanics
+(moduli, Hamaker constant, D0, block geometry, threshold strain, the coating's work of adhesion), and a
+coated cycle's vdW energies when its dataset predates the split (then U_chem only).
 """
 
 from __future__ import annotations
@@ -36,8 +38,8 @@ CYCLE_VARIABLES = ("time", "sliding_distance", "normal_force", "adhesion_force",
                    "friction_force_chemical", "friction_force_vdw", "friction_force_elastic",
                    "friction_force_capillary", "contact_converged")
 
-#: per-step variables a coated cycle would need for its vdW energies to be rescaled (not written by the
-#: meshing cycle yet: the vdW bond count of the bare and of the coated gear blocks)
+#: per-step variables of a coated cycle that let its vdW energies be rescaled: the vdW bond count over the bare
+#: and over the coated gear blocks (written by the meshing cycle when it has a coating)
 SPLIT_VARIABLES = ("bonds_vdw_bare", "bonds_vdw_coated")
 
 
@@ -54,8 +56,8 @@ def _coated(dataset) -> bool:
 
 def rescalable(dataset) -> tuple[str, ...]:
     """The constants :func:`rescale_cycle` can change on this cycle: both bond energies for bare
-    flanks; ``bond_energy`` only on a coated cycle (the dataset lacks :data:`SPLIT_VARIABLES`), and
-    the vdW energies too where it has them (then also ``coating_vdw_bond_energy``)."""
+    flanks; on a coated cycle also ``coating_vdw_bond_energy`` (its dataset has :data:`SPLIT_VARIABLES`),
+    or ``bond_energy`` only where the dataset lacks them (written before the split)."""
     if not _coated(dataset):
         return RESCALED
     if all(name in dataset for name in SPLIT_VARIABLES):

@@ -85,7 +85,9 @@ class _Runner:
         if self._rescalable is None:
             from memstribo.uncertainty.rescale import RESCALED
 
-            self._rescalable = RESCALED if not self.coating_name or self.wear >= 1.0 else ("bond_energy",)
+            # a coated cycle writes its vdW bonds over bare and coated blocks apart: both U_vdW rescale
+            coated = bool(self.coating_name) and self.wear < 1.0
+            self._rescalable = RESCALED + ("coating_vdw_bond_energy",) if coated else RESCALED
         return self._rescalable
 
     def _split(self, constants: Mapping):
@@ -440,8 +442,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         ``dominant``, ``critical_curve``, ``designer_sentence``, ``priors``, ``sampled_constants``,
         ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
         ``design_effect`` and ``effective_samples`` [-] (samples that share a contact solve: :func:`_probability`),
-        ``solve_seconds`` and ``rescale_seconds`` [s] (wall time of the solves and of the rescalings of the main
-        design and the Sobol' rows where they share the runner), ``elapsed`` [s], ``warnings``.
+        ``solve_seconds`` and ``rescale_seconds`` [s] (wall time of the solves and of the rescalings; the counts
+        and times include the Sobol' rows and the critical values), ``elapsed`` [s], ``warnings``.
 
     Raises
     ------
@@ -469,17 +471,25 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         nominal = runner.summaries([(r, {}) for r in range(R)])
         sets_count, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
+        runners = [runner]
         if sensitivity and sampled:
-            _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear,
-                         client, progress, sobol_samples or 32, sobol_steps, critical, threshold, curve_points)
+            runners.append(_sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps,
+                                        coating_name, wear, client, progress, sobol_samples or 32, sobol_steps,
+                                        critical, threshold, curve_points))
         result["warnings"] = _warnings(result)
-        result.update(solves=runner.solves, rescalings=runner.rescalings, solve_seconds=runner.solve_seconds,
-                      rescale_seconds=runner.rescale_seconds)
+        _count(result, runners)
         result["elapsed"] = time.perf_counter() - start
         return result
     finally:
         if own_client:
             client.close()
+
+
+def _count(result, runners):
+    """Solves, rescalings and their wall times [s] over the runners (the Sobol' rows' own where its steps differ)."""
+    runners = list({id(r): r for r in runners}.values())
+    for name in ("solves", "rescalings", "solve_seconds", "rescale_seconds"):
+        result[name] = sum(getattr(r, name) for r in runners)
 
 
 def _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget):
@@ -551,6 +561,8 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
 
 def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear, client,
                  progress, sobol_samples, sobol_steps, critical, threshold, curve_points):
+    """Sobol' indices, critical values and the curve of the dominant constant into ``result``; returns the
+    runner of the Sobol' rows (``runner`` itself unless ``sobol_steps`` differs), for its counts."""
     names = list(sampled)
     factors = names + [REALISATION_FACTOR]
     design = _saltelli_design(len(factors), int(sobol_samples), seed)
@@ -583,7 +595,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
                               "failed_rows": int(sum(failed))}
     constants_ranked = [n for n in ranked if n != REALISATION_FACTOR]
     if not constants_ranked:
-        return
+        return sobol_runner
     dominant = constants_ranked[0]
     result["dominant"] = dominant
 
@@ -627,6 +639,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         curve["ci_low"].append(p["ci"][0])
         curve["ci_high"].append(p["ci"][1])
     result["critical_curve"] = curve
+    return sobol_runner
 
 
 def _coating_nominal(name, coating_name):
