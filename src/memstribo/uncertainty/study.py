@@ -211,7 +211,7 @@ def _probability(summaries, confidence):
         low, high = below["ci"][0], above["ci"][1]
         deff = max(below["design_effect"], above["design_effect"])
     estimate = k / (n - failed) if n > failed else float("nan")
-    shared = f", design effect {deff:.3g} of samples sharing a contact solve" if deff > 1.0 else ""
+    shared = f", design effect {deff:.3g} (samples share contact solves)" if deff > 1.0 else ""
     return {"count": k, "samples": n, "failed": failed, "probability": estimate, "ci": [low, high],
             "design_effect": deff, "effective_samples": n / deff,
             "text": format_probability(k, n, confidence, interval=(low, high))
