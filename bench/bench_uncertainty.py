@@ -11,7 +11,9 @@ Cases (``--case``, several allowed):
   cutoff_distance, youngs_modulus, atomic_width, threshold_strain; the others fixed) plus the roughness
   realisation, at N = 256 (``--sobol-samples``): N (8 + 1 + 2) rows. Goal: under 10 minutes on 2 cores.
 - ``speedup``: the same batch of cycles (``--cycles``, default 32) on one process and on a local Dask
-  cluster of 2 workers. Goal: speed-up >= 1.8.
+  cluster of 2 workers. Goal: speed-up >= 1.8. Also the CPU time of the serial run, of each worker and
+  of the main process: ``cpu_speedup`` (serial CPU over the busier worker's) is the speed-up an idle
+  2-core machine gives if the main process's CPU stays small, whatever the load.
 - ``rescale``: one rescaling against one solve of the default cycle, and 16 sets of one cycle at once.
 
 Each case prints wall time, the number of contact solves and rescalings, and the machine's load
@@ -163,11 +165,18 @@ def _warm_up():
     return True
 
 
+def _cpu_now():
+    return time.process_time()
+
+
 def case_speedup(args, params):
+    """Wall time of the same cycles serial and on 2 workers; and the CPU time each side spent, so that the
+    speed-up an idle machine would give can be told from the one a shared machine allows: serial CPU over
+    the busier worker's CPU (``cpu_speedup``; the main process's CPU, the scheduler's, is given beside it)."""
     from memstribo.uncertainty.study import _Runner
 
     points = [(r, {}) for r in range(args.cycles)]
-    timings = {}
+    timings, cpu = {}, {}
     for workers in (0, 2):
         client = _client(workers)
         try:
@@ -176,14 +185,22 @@ def case_speedup(args, params):
             else:
                 _warm_up()
             runner = _Runner(params, None, args.steps, None, 1.0, client, False)
+            before = client.run(_cpu_now) if client is not None else {}
+            main = time.process_time()
             start = time.perf_counter()
             runner.summaries(points)
             timings[workers] = time.perf_counter() - start
+            cpu[workers] = {"main": time.process_time() - main}
+            if client is not None:
+                after = client.run(_cpu_now)
+                cpu[workers]["workers"] = sorted(after[w] - before[w] for w in after)
         finally:
             if client is not None:
                 client.close()
+    busiest = max(cpu[2]["workers"])
     return {"case": "speedup", "cycles": args.cycles, "serial_s": timings[0], "two_workers_s": timings[2],
-            "speedup": timings[0] / timings[2]}
+            "speedup": timings[0] / timings[2], "serial_cpu_s": cpu[0]["main"], "workers_cpu_s": cpu[2]["workers"],
+            "main_cpu_with_workers_s": cpu[2]["main"], "cpu_speedup": cpu[0]["main"] / busiest}
 
 
 def case_rescale(args, params):
