@@ -15,6 +15,8 @@ Cases (``--case``, several allowed):
   of the main process: ``cpu_speedup`` (serial CPU over the busier worker's) is the speed-up an idle
   2-core machine gives if the main process's CPU stays small, whatever the load.
 - ``rescale``: one rescaling against one solve of the default cycle, and 16 sets of one cycle at once.
+- ``contention``: the CPU time of a cycle alone and in two plain processes at once (no Dask): the part of
+  the workers' extra CPU that any two processes pay on the machine.
 
 Each case prints wall time, the number of contact solves and rescalings, and the machine's load
 average before and after (the machine may be shared: compare within one run). With ``--workers 0``
@@ -203,6 +205,32 @@ def case_speedup(args, params):
             "main_cpu_with_workers_s": cpu[2]["main"], "cpu_speedup": cpu[0]["main"] / busiest}
 
 
+def _cycles_cpu(first, n, steps):
+    """CPU time per cycle [s] of ``n`` default cycles (realisations ``first``...) in this process."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh
+
+    params = get_parameter_values()
+    _warm_up()
+    start = time.process_time()
+    for r in range(first, first + n):
+        simulate_mesh(params, realisation=r, steps=steps)
+    return (time.process_time() - start) / n
+
+
+def case_contention(args, params):
+    """CPU time of a cycle alone and with two plain processes side by side (no Dask): what running two
+    at once costs on this machine, apart from Dask (``--cycles`` per process, default 32; 12 is enough)."""
+    import multiprocessing
+
+    n = max(1, args.cycles // 2)
+    alone = _cycles_cpu(0, n, args.steps)
+    with multiprocessing.get_context("spawn").Pool(2) as pool:
+        pair = pool.starmap(_cycles_cpu, [(0, n, args.steps), (n, n, args.steps)])
+    return {"case": "contention", "cycles_each": n, "cpu_per_cycle_alone_s": alone, "cpu_per_cycle_pair_s": pair,
+            "cost_of_a_pair": sum(pair) / 2 / alone - 1.0}
+
+
 def case_rescale(args, params):
     from memstribo.simulations.mesh import simulate_mesh, summarize
     from memstribo.uncertainty.rescale import reduce_cycle, rescale_cycle, rescale_cycles
@@ -222,7 +250,8 @@ def case_rescale(args, params):
     return {"case": "rescale", "cpu_solve_s": solve, "cpu_rescale_one_s": one, "cpu_rescale_per_set_of_16_s": many}
 
 
-CASES = {"samples": case_samples, "sobol": case_sobol, "speedup": case_speedup, "rescale": case_rescale}
+CASES = {"samples": case_samples, "sobol": case_sobol, "speedup": case_speedup, "rescale": case_rescale,
+         "contention": case_contention}
 
 
 def main():
