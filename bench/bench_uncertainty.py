@@ -98,7 +98,8 @@ class _CpuClock:
     def split(self, solves, rescalings) -> dict:
         return {"cpu_s": self.total, "cpu_solves_s": self.solve, "cpu_rescalings_s": self.rescale,
                 "cpu_other_s": self.total - self.solve - self.rescale,
-                "cpu_per_solve_s": self.solve / max(solves, 1), "cpu_per_rescaling_s": self.rescale / max(rescalings, 1)}
+                "cpu_per_solve_s": self.solve / max(solves, 1),
+                "cpu_per_rescaling_s": self.rescale / max(rescalings, 1)}
 
 
 def _study(args, params, clock, **kwargs):

@@ -192,7 +192,8 @@ def _client_of(client):
 
 def _probability(summaries, confidence):
     """Count, estimate and interval of P(stiction); samples that share a cycle (``cycle_id``: a grouped design,
-    fixed solve constants) widen it by their design effect (:func:`memstribo.uncertainty.intervals.clustered_interval`)."""
+    fixed solve constants) widen it by their design effect
+    (:func:`memstribo.uncertainty.intervals.clustered_interval`)."""
     from memstribo.uncertainty.intervals import binomial_interval, clustered_interval, format_probability
 
     n = len(summaries)
@@ -378,7 +379,8 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
                          "may use: use fewer samples or fewer steps.")
     if solve_sets is not None and (isinstance(solve_sets, bool) or not isinstance(solve_sets, (int, np.integer))
                                    or solve_sets < 1):
-        raise InputError(f"solve_sets must be a whole number >= 1 (distinct solves per realisation), got {solve_sets!r}.")
+        raise InputError(f"solve_sets must be a whole number >= 1 (distinct solves per realisation), "
+                         f"got {solve_sets!r}.")
     if samples == "auto" and (isinstance(budget, bool) or int(budget) < realisations):
         raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
 
