@@ -428,8 +428,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     solve_sets : int, optional
         Distinct values per realisation of the constants that need a new contact solve (default:
         every constant set its own); the bond energies are rescaled and keep every set's value
-        (:func:`_design`). Fewer solves; the samples of a group share their contact solution, so they
-        are correlated and the interval (which counts them as independent) is then optimistic.
+        (:func:`_design`). Fewer solves; the samples of a group share their contact solution and are
+        correlated: the interval is Wilson's at ``samples / design_effect`` samples (:func:`_probability`).
 
     Returns
     -------
