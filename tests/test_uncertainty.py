@@ -64,6 +64,39 @@ def test_bad_interval_input(k, n, confidence):
 
 
 # --- priors --------------------------------------------------------------------------------------------------
+def test_wilson_interval_of_a_whole_count_is_the_binomial_one():
+    from memstribo.uncertainty.intervals import wilson_interval
+
+    for k, n in ((0, 16), (3, 16), (151, 256), (16, 16)):
+        assert wilson_interval(k / n, n) == pytest.approx(binomial_interval(k, n), abs=1e-12)
+
+
+def test_clustered_interval_counts_correlated_samples_honestly():
+    from memstribo.uncertainty.intervals import clustered_interval, wilson_interval
+
+    # every sample its own cluster: the binomial interval, design effect 1
+    flags = [True] * 5 + [False] * 11
+    alone = clustered_interval(flags, list(range(16)))
+    assert alone["design_effect"] == 1.0 and alone["ci"] == pytest.approx(binomial_interval(5, 16))
+    # clusters of 4 whose samples always agree: 12 clusters worth n_c - 1 = 11 samples. The cluster-robust
+    # variance n_c/(n_c - 1) sum (y_i - p m)^2 / n^2 is then p (1 - p)/(n_c - 1): design effect n / (n_c - 1)
+    clusters = [i // 4 for i in range(48)]
+    agree = [c < 5 for c in clusters]
+    out = clustered_interval(agree, clusters)
+    assert out["design_effect"] == pytest.approx(48 / 11)
+    assert out["ci"] == pytest.approx(wilson_interval(5 / 12, 11))
+    assert out["ci"][1] - out["ci"][0] > np.subtract(*binomial_interval(20, 48)[::-1])
+    # every sample agrees (p = 0): no variance to estimate, the worst case (one sample per cluster)
+    none = clustered_interval([False] * 48, clusters)
+    assert none["design_effect"] == 48 / 12 and none["ci"] == pytest.approx(wilson_interval(0.0, 12))
+    # independent samples in clusters: design effect near 1 (never below)
+    rng = np.random.default_rng(3)
+    independent = clustered_interval(list(rng.random(4000) < 0.3), [i // 8 for i in range(4000)])
+    assert 1.0 <= independent["design_effect"] < 1.3
+    with pytest.raises(InputError):
+        clustered_interval([True, False], [0])
+
+
 def test_ppf_properties():
     u = np.linspace(0.0, 1.0, 11)
     for prior in (Prior("x", "uniform", 2.0, 6.0), Prior("x", "loguniform", 1e-21, 1e-19),
@@ -179,6 +212,48 @@ def test_rescaled_bond_energies_equal_a_full_rerun(params):
         rescale_cycle(nominal, params, {"youngs_modulus": 150e9})
 
 
+def test_many_sets_of_one_cycle_rescale_as_full_reruns(params):
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.uncertainty.rescale import reduce_cycle, rescale_cycles
+
+    steps = 21
+    cycle = reduce_cycle(simulate_mesh(params, steps=steps))
+    sets = [{"vdw_bond_energy": 1.086e-20}, {"vdw_bond_energy": 2.0e-20, "bond_energy": 4.0e-19}]
+    together = rescale_cycles(cycle, params, sets)
+    for overrides, fast in zip(sets, together):
+        full = summarize(simulate_mesh(params.updated(overrides), steps=steps))
+        for key in ("stiction_margin", "resisting_force_max", "cof_mean", "cof_vdw", "cof_chemical", "mesh_efficiency",
+                    "friction_force_mean"):
+            assert fast[key] == pytest.approx(full[key], rel=1e-9), key
+    # the summary of the cycle given by the caller is the one it would compute
+    assert rescale_cycles(cycle, params, sets, base=summarize(cycle)) == together
+    with pytest.raises(InputError, match="cannot be changed"):
+        rescale_cycles(cycle, params, [{"vdw_bond_energy": 1e-20}, {"youngs_modulus": 150e9}])
+
+
+def test_a_coated_cycle_rescales_both_vdw_energies(params):
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.uncertainty.rescale import reduce_cycle, rescalable, rescale_cycle
+
+    steps, wear = 21, 0.5
+
+    def cycle(p):
+        return simulate_mesh(p, steps=steps, coating=get_coating("OTS", p), wear=wear)
+
+    nominal = reduce_cycle(cycle(params))
+    bare, coated = np.asarray(nominal["bonds_vdw_bare"]), np.asarray(nominal["bonds_vdw_coated"])
+    assert bare.sum() > 0 and coated.sum() > 0  # half the gear blocks worn: both kinds of block bond
+    assert bare + coated == pytest.approx(np.asarray(nominal["bonds_vdw"]), rel=1e-12)
+    assert "coating_vdw_bond_energy" in rescalable(nominal) and "vdw_bond_energy" in rescalable(nominal)
+    new = {"vdw_bond_energy": 1.086e-20, "coating_vdw_bond_energy": 1.2e-21}
+    fast = rescale_cycle(nominal, params, new)
+    full = summarize(cycle(params.updated(new)))
+    for key in ("stiction_margin", "cof_mean", "cof_vdw", "friction_force_mean"):
+        assert fast[key] == pytest.approx(full[key], rel=1e-9), key
+    assert fast["cof_vdw"] != pytest.approx(summarize(nominal)["cof_vdw"], rel=1e-3)
+
+
 # --- sensitivity and critical values ------------------------------------------------------------------------------
 def test_sobol_indices_of_the_ishigami_function():
     from memstribo.uncertainty.study import _saltelli_design, sobol_indices
@@ -237,6 +312,42 @@ def test_uncertainty_study_small(params):
         assert entry["total"] <= 0.1 or entry["critical_value"] is not None or entry["note"]
 
 
+def test_the_study_interval_counts_samples_sharing_a_cycle_once_per_design_effect():
+    from memstribo.uncertainty.intervals import clustered_interval
+    from memstribo.uncertainty.study import _probability
+
+    flags = [c < 3 for c in range(8) for _ in range(4)]  # 8 cycles of 4 samples that agree
+    shared = [{"stiction": f, "cycle_id": i // 4} for i, f in enumerate(flags)]
+    alone = [{"stiction": f, "cycle_id": i} for i, f in enumerate(flags)]
+    p = _probability(shared, 0.95)
+    assert p["count"] == 12 and p["ci"] == clustered_interval(flags, [i // 4 for i in range(32)])["ci"]
+    assert p["design_effect"] > 1 and "design effect" in p["text"]
+    assert _probability(alone, 0.95)["ci"] == pytest.approx(binomial_interval(12, 32))
+
+
+def test_samples_that_share_a_solve_widen_the_interval(params):
+    from memstribo.uncertainty.study import uncertainty_study
+
+    grouped = uncertainty_study(params, samples=8, realisations=2, steps=11, sensitivity=False, solve_sets=1)
+    assert grouped["solves"] == 2 + 2 and grouped["rescalings"] == 8
+    k, n = grouped["stiction_count"], grouped["samples"]
+    assert grouped["design_effect"] >= 1.0
+    assert grouped["effective_samples"] == pytest.approx(n / grouped["design_effect"])
+    low, high = grouped["stiction_probability_ci"]
+    plain_low, plain_high = binomial_interval(k, n)
+    assert low <= plain_low and high >= plain_high and low <= grouped["stiction_probability"] <= high
+    with pytest.raises(InputError, match="solve_sets"):
+        uncertainty_study(params, samples=8, realisations=2, steps=11, sensitivity=False, solve_sets=0)
+
+
+def test_sobol_bootstrap_intervals_are_reproducible():
+    from memstribo.uncertainty.study import _saltelli_design, sobol_indices
+
+    design = _saltelli_design(3, 16, seed=0)
+    y = design[:, 0] + 2 * design[:, 1] ** 2
+    assert sobol_indices(["a", "b", "c"], {"y": y}, 16) == sobol_indices(["a", "b", "c"], {"y": y}, 16)
+
+
 # --- the command line ---------------------------------------------------------------------------------------
 @pytest.mark.parametrize("argv, message", [
     (("--uncertainty", "0"), "at least 1"),
@@ -245,6 +356,7 @@ def test_uncertainty_study_small(params):
     (("--uncertainty", "4", "--fix", "bond_energy,bond_energy"), "named twice"),
     (("--uncertainty", "4", "--set", "bond_energy=4e-19", "--fix", "bond_energy"), "named twice"),
     (("--fix", "bond_energy"), "need --uncertainty"),
+    (("--solve-sets", "2"), "need --uncertainty"),
     (("--uncertainty", "5000000"), "memory"),
 ])
 def test_bad_uncertainty_input_exits_2(cli, argv, message):

@@ -100,6 +100,10 @@ _ENTRIES = [
     ("energy_capillary", "J", "energy of capillary menisci", "energy dissipated by breaking capillary menisci"),
     ("bonds_chemical", "1", "chemical bonds", "chemical bonds between touching atomic blocks N_chem (3-10)"),
     ("bonds_vdw", "1", "vdW bonds", "van der Waals bonds N_vdW, weighted by the interface model (3-12)"),
+    ("bonds_vdw_bare", "1", "vdW bonds over bare gear blocks", "the part of bonds_vdw over gear blocks whose coating "
+     "is worn (coated cycles; U_vdW of silicon acts on them)"),
+    ("bonds_vdw_coated", "1", "vdW bonds over coated gear blocks", "the part of bonds_vdw over gear blocks still "
+     "coated (coated cycles; the coating's U_vdW acts on them)"),
     ("sliding_distance", "m", "sliding distance", "sliding distance |u1 - u2| dt of the step (as a scalar: in all)"),
     ("sliding_velocity", "m/s", "sliding velocity", "sliding velocity u1 - u2 (4-12)"),
     ("time", "s", "time", "time since the first point of contact (4-18)"),
@@ -420,6 +424,17 @@ _ENTRIES = [
     ("stiction_count", "1", "stiction count", "samples (realisations, or realisations x constant sets) that stick"),
     ("stiction_probability_ci", "1", "stiction probability interval",
      "95 % confidence interval [low, high] of the stiction probability from the number of samples (Wilson)"),
+    ("solve_sets", "1", "solve sets", "distinct values per realisation of the constants that need a contact solve "
+     "(null: every constant set its own); the bond energies keep every set's"),
+    ("solve_seconds", "s", "contact solve time", "wall time the uncertainty study spent solving meshing cycles"),
+    ("rescale_seconds", "s", "rescaling time", "wall time the uncertainty study spent rescaling solved cycles to "
+     "other bond energies"),
+    ("design_effect", "1", "design effect of shared contact solves",
+     "variance of P(stiction) over the samples that share a contact solve (a realisation and the solve's constants), "
+     "over the binomial variance of independent samples, at least 1 (Kish 1965); the interval uses "
+     "effective_samples = samples / design_effect"),
+    ("effective_samples", "1", "effective samples", "samples / design_effect: the independent samples worth as much "
+     "as the study's correlated ones (its interval of P(stiction) is Wilson's at this count)"),
     ("stiction_probability_text", _TEXT, "stiction probability with interval",
      "the count and its interval, e.g. '0 of 16 (95 % CI 0-19 %)'"),
     ("startup_stiction_count", "1", "start-up stiction count", "roughness realisations whose start-up margin is "

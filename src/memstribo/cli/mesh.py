@@ -51,6 +51,10 @@ def register(subparsers, parents):
     parser.add_argument("--sobol-samples", type=int, metavar="N",
                         help="with --uncertainty: base samples of the Sobol' design, a power of two (default 32): "
                              "N x (constants + 3) cycles or rescalings")
+    parser.add_argument("--solve-sets", type=int, metavar="G",
+                        help="with --uncertainty: the constants that need a contact solve take G values per "
+                             "realisation, the bond energies keep every set's (fewer solves: faster; the interval "
+                             "is widened by the design effect of the samples that share a solve; default: all)")
     parser.add_argument("--workers", type=int, metavar="N",
                         help="with --uncertainty or --realisations: run the cycles on a local Dask cluster of N "
                              "worker processes")
@@ -237,7 +241,8 @@ UNCERTAINTY_KEYS = ("stiction_probability", "stiction_probability_ci", "stiction
                     "stiction_probability_nominal_text", "realisations", "constant_sets", "margin_quantiles",
                     "margin_quantiles_nominal", "startup_margin_quantiles", "cof_quantiles", "cof_split_quantiles",
                     "sensitivity", "dominant_constant", "designer_sentence", "sampled_constants", "fixed_constants",
-                    "unconverged_samples", "failed_samples", "priors")
+                    "unconverged_samples", "failed_samples", "priors", "solve_sets", "design_effect",
+                    "effective_samples")
 
 
 #: Keys only the JSON carries (the readable output gives them as notes).
@@ -251,8 +256,9 @@ def _uncertainty_option(args):
 
     text = getattr(args, "uncertainty", None)
     if text is None:
-        if getattr(args, "fix", None) or getattr(args, "sobol_samples", None) is not None:
-            raise InputError("--fix and --sobol-samples need --uncertainty N|auto.")
+        if getattr(args, "fix", None) or getattr(args, "sobol_samples", None) is not None \
+                or getattr(args, "solve_sets", None) is not None:
+            raise InputError("--fix, --sobol-samples and --solve-sets need --uncertainty N|auto.")
         return None
     text = str(text).strip().lower()
     if text == "auto":
@@ -316,7 +322,7 @@ def _uncertainty(args, params, roughness, options, samples, realisations):
                                    realisations=None if args.realisations is None else realisations,
                                    steps=options["steps"], coating=options["coating"], wear=options["wear"],
                                    client=client, progress=options["progress"], fixed=fixed,
-                                   sobol_samples=args.sobol_samples)
+                                   sobol_samples=args.sobol_samples, solve_sets=getattr(args, "solve_sets", None))
     finally:
         _close(client, args)
     result["uncertainty_samples"] = result.pop("samples")

@@ -10,7 +10,8 @@ from __future__ import annotations
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["binomial_interval", "format_probability", "ensemble_interval", "half_width", "METHODS"]
+__all__ = ["binomial_interval", "clustered_interval", "wilson_interval", "format_probability", "ensemble_interval",
+           "half_width", "METHODS"]
 
 #: interval methods: memstribo's name -> scipy.stats.BinomTestResult.proportion_ci's
 METHODS = {"wilson": "wilson", "clopper-pearson": "exact", "exact": "exact", "wilsoncc": "wilsoncc"}
@@ -60,6 +61,85 @@ def binomial_interval(k, n, confidence=0.95, method="wilson") -> tuple[float, fl
     ci = binomtest(k, n).proportion_ci(confidence_level=float(confidence), method=METHODS[method])
     low, high = float(ci.low), float(ci.high)
     return (0.0 if k == 0 else low), (1.0 if k == n else high)
+
+
+@cites("wilson_1927")
+def wilson_interval(p, n, confidence=0.95) -> tuple[float, float]:
+    """Wilson score interval of a proportion ``p`` [-] from ``n`` samples [-], ``n`` not necessarily whole.
+
+    ``(p + z^2/2n -+ z sqrt(p (1 - p)/n + z^2/4n^2)) / (1 + z^2/n)`` with ``z`` the normal quantile of
+    ``(1 + confidence)/2`` (Wilson 1927); for a whole ``n`` it is :func:`binomial_interval`'s (to round-off).
+    An effective sample count (:func:`clustered_interval`) is not whole. Returns (low, high) [-].
+    """
+    from scipy.stats import norm
+
+    p, n = float(p), float(n)
+    if not n > 0.0:
+        raise InputError(f"Wilson interval: n must be positive, got {n!r}.")
+    if not 0.0 <= p <= 1.0:
+        raise InputError(f"Wilson interval: p must lie in [0, 1], got {p!r}.")
+    if not 0.0 < float(confidence) < 1.0:
+        raise InputError(f"Wilson interval: confidence must lie strictly between 0 and 1, got {confidence!r}.")
+    z = float(norm.ppf(0.5 + 0.5 * float(confidence)))
+    scale = 1.0 + z * z / n
+    centre = (p + z * z / (2.0 * n)) / scale
+    half = z / scale * (p * (1.0 - p) / n + z * z / (4.0 * n * n)) ** 0.5
+    return (0.0 if p == 0.0 else max(0.0, centre - half)), (1.0 if p == 1.0 else min(1.0, centre + half))
+
+
+@cites("wilson_1927", "kish_1965")
+def clustered_interval(flags, clusters, confidence=0.95) -> dict:
+    """Interval of a probability from samples of which some share a cluster (a contact solution), honestly widened.
+
+    Samples that share a cluster (in the uncertainty study: a roughness realisation and the constants of one
+    contact solve, with their own bond energies) are correlated, and ``n`` of them carry less information
+    than ``n`` independent ones. The design effect (Kish 1965) is the ratio of the variance of the estimate
+    over clusters, ``n_c/(n_c - 1) sum_i (y_i - p m_i)^2 / n^2`` (``y_i`` events among the ``m_i`` samples of
+    cluster ``i``; the cluster-robust variance of a ratio estimate) to the binomial ``p (1 - p) / n``, never
+    below 1; where every sample agrees (``p`` = 0 or 1) it is the worst case ``n / n_c`` (every cluster one
+    sample's worth). The interval is then Wilson's (:func:`wilson_interval`) with ``n / deff`` samples.
+
+    Parameters
+    ----------
+    flags : sequence of bool or 0/1
+        The event (stiction) per sample [-].
+    clusters : sequence of hashable
+        The cluster of each sample (the same value: the same contact solution).
+    confidence : float
+        Level [-].
+
+    Returns
+    -------
+    dict
+        ``ci`` ([low, high], [-]), ``design_effect`` [-], ``effective_samples`` [-], ``clusters`` [-].
+        Where no cluster holds two samples: :func:`binomial_interval`, design effect 1.
+    """
+    import numpy as np
+
+    y = np.asarray([1.0 if f else 0.0 for f in flags])
+    n = y.size
+    if n < 1 or len(clusters) != n:
+        raise InputError(f"clustered interval: {n} samples and {len(clusters)} cluster labels (need >= 1, equal).")
+    labels: dict = {}
+    index = np.array([labels.setdefault(c, len(labels)) for c in clusters])
+    n_c = len(labels)
+    if n_c == n:
+        k = int(y.sum())
+        return {"ci": list(binomial_interval(k, n, confidence)), "design_effect": 1.0, "effective_samples": float(n),
+                "clusters": n_c}
+    p = float(y.mean())
+    if n_c == 1:
+        deff = float(n)
+    elif 0.0 < p < 1.0:
+        events = np.bincount(index, weights=y, minlength=n_c)
+        sizes = np.bincount(index, minlength=n_c)
+        variance = n_c / (n_c - 1.0) * float(((events - p * sizes) ** 2).sum()) / n ** 2
+        deff = max(1.0, variance / (p * (1.0 - p) / n))
+    else:
+        deff = n / n_c
+    deff = min(deff, float(n))
+    return {"ci": list(wilson_interval(p, n / deff, confidence)), "design_effect": deff,
+            "effective_samples": n / deff, "clusters": n_c}
 
 
 def half_width(k, n, confidence=0.95, method="wilson") -> float:

@@ -13,9 +13,11 @@ margin ``F_t - max R``, the cycle's COF ``sum E / integral (F_N + F_adh) ds`` (t
 does not involve the bond energies). :func:`rescale_cycle` recomputes these from one solved cycle's
 dataset; it agrees with a full rerun to round-off (tests/test_uncertainty.py).
 
-Not rescaled: a coated cycle's vdW energy (the dataset holds the vdW bond count of bare and coated
-blocks together; :data:`SPLIT_VARIABLES` would allow it), and anything that changes the contact
-solve or the block mechanics (moduli, Hamaker constant, D0, block geometry, threshold strain).
+A coated cycle (worn blocks, ``wear`` < 1) writes its vdW bond count over bare and over coated gear
+blocks apart (:data:`SPLIT_VARIABLES`): U_vdW of silicon acts on the first, the coating's on the second,
+and both rescale. Not rescaled: anything that changes the contact solve or the block mechanics
+(moduli, Hamaker constant, D0, block geometry, threshold strain, the coating's work of adhesion), and a
+coated cycle's vdW energies when its dataset predates the split (then U_chem only).
 """
 
 from __future__ import annotations
@@ -25,7 +27,8 @@ import numpy as np
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["RESCALED", "CYCLE_VARIABLES", "SPLIT_VARIABLES", "reduce_cycle", "rescalable", "rescale_cycle"]
+__all__ = ["RESCALED", "CYCLE_VARIABLES", "SPLIT_VARIABLES", "reduce_cycle", "rescalable", "rescale_cycle",
+           "rescale_cycles"]
 
 #: the constants that enter the cycle only through the bond energies (linear), per kind of cycle
 RESCALED = ("bond_energy", "vdw_bond_energy")
@@ -35,8 +38,8 @@ CYCLE_VARIABLES = ("time", "sliding_distance", "normal_force", "adhesion_force",
                    "friction_force_chemical", "friction_force_vdw", "friction_force_elastic",
                    "friction_force_capillary", "contact_converged")
 
-#: per-step variables a coated cycle would need for its vdW energies to be rescaled (not written by the
-#: meshing cycle yet: the vdW bond count of the bare and of the coated gear blocks)
+#: per-step variables of a coated cycle that let its vdW energies be rescaled: the vdW bond count over the bare
+#: and over the coated gear blocks (written by the meshing cycle when it has a coating)
 SPLIT_VARIABLES = ("bonds_vdw_bare", "bonds_vdw_coated")
 
 
@@ -53,8 +56,8 @@ def _coated(dataset) -> bool:
 
 def rescalable(dataset) -> tuple[str, ...]:
     """The constants :func:`rescale_cycle` can change on this cycle: both bond energies for bare
-    flanks; ``bond_energy`` only on a coated cycle (the dataset lacks :data:`SPLIT_VARIABLES`), and
-    the vdW energies too where it has them (then also ``coating_vdw_bond_energy``)."""
+    flanks; on a coated cycle also ``coating_vdw_bond_energy`` (its dataset has :data:`SPLIT_VARIABLES`),
+    or ``bond_energy`` only where the dataset lacks them (written before the split)."""
     if not _coated(dataset):
         return RESCALED
     if all(name in dataset for name in SPLIT_VARIABLES):
@@ -91,68 +94,98 @@ def rescale_cycle(dataset, params_nominal, overrides) -> dict:
         A constant that this cycle cannot rescale (it changes the contact solve or the block
         mechanics, or the cycle is coated), or a variable the dataset lacks.
     """
+    return rescale_cycles(dataset, params_nominal, [overrides])[0]
+
+
+@cites("thesis", "model")
+def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[dict]:
+    """:func:`rescale_cycle` of one solved cycle for many sets of bond energies (issue 27 item 6).
+
+    The parts that do not depend on the bond energies (the summary of the cycle, the gear pair, the
+    sliding averages of the elastic and capillary friction, the COF's denominator) are computed once;
+    each set then costs its two bond friction forces, their sliding averages and R(c). Each set's
+    arithmetic is :func:`rescale_cycle`'s, in the same order: the same numbers to the last bit.
+
+    Parameters
+    ----------
+    dataset, params_nominal
+        As for :func:`rescale_cycle`.
+    overrides_list : sequence of Mapping[str, float]
+        One mapping of new bond energies [J] per set.
+    base : dict, optional
+        ``summarize(dataset)`` when the caller has it already [SI].
+
+    Returns
+    -------
+    list of dict
+        One summary per set, as :func:`rescale_cycle` returns.
+    """
     from memstribo.physics.gear import GearPair
     from memstribo.simulations.mesh import resisting_force, sliding_average, summarize
+    from memstribo.simulations.tooth_life import TOOTH_LIFE_KEYS
 
     allowed = rescalable(dataset)
-    for name in overrides:
-        if name not in allowed:
-            raise InputError(f"rescale_cycle: '{name}' cannot be changed without a new cycle (allowed here: "
-                             f"{', '.join(allowed)}); run simulate_mesh with it.")
+    for overrides in overrides_list:
+        for name in overrides:
+            if name not in allowed:
+                raise InputError(f"rescale_cycle: '{name}' cannot be changed without a new cycle (allowed here: "
+                                 f"{', '.join(allowed)}); run simulate_mesh with it.")
     missing = [name for name in CYCLE_VARIABLES if name not in dataset and name != "friction_force_capillary"]
     if missing:
         raise InputError(f"rescale_cycle: the dataset lacks {', '.join(missing)}.")
-    f_chem, f_vdw = _bond_friction(dataset, params_nominal, overrides)
     f_el = np.asarray(dataset["friction_force_elastic"], dtype=float)
     f_cap = (np.asarray(dataset["friction_force_capillary"], dtype=float) if "friction_force_capillary" in dataset
              else np.zeros_like(f_el))
     sliding = np.asarray(dataset["sliding_distance"], dtype=float)
     averaging = float(dataset.attrs["friction_averaging_distance"])
-    parts = [sliding_average(f, sliding, averaging) for f in (f_chem, f_vdw, f_el, f_cap)]
-    friction_avg = parts[0] + parts[1] + parts[2] + parts[3]  # the cycle's order of summation
+    avg_el, avg_cap = (sliding_average(f, sliding, averaging) for f in (f_el, f_cap))
     pair = GearPair.from_parameters(params_nominal)
     c = np.asarray(dataset["c"], dtype=float)
-    resisting = resisting_force(c, friction_avg, pair.first_contact, pair.last_contact, pair.base_pitch)
     f_t = float(dataset.attrs["tangential_force_total"])
-    margin = f_t - float(resisting.max())
-
-    energy = {"energy_chemical": f_chem * sliding, "energy_vdw": f_vdw * sliding, "energy_elastic": f_el * sliding,
-              "energy_capillary": f_cap * sliding}
+    e_el, e_cap = f_el * sliding, f_cap * sliding
     denominator = np.asarray(dataset["normal_force"] + dataset["adhesion_force"], dtype=float)
     work = float((denominator * sliding).sum())
-    split = {f"cof_{k.split('_')[1]}": (float(v.sum()) / work if work > 0 else 0.0) for k, v in energy.items()}
     time = np.asarray(dataset["time"], dtype=float)
     weights = np.gradient(time) if time.size > 1 else np.ones(1)
     weights = weights / weights.sum()
-    total_energy = sum(float(v.sum()) for v in energy.values())
     input_power = float(dataset.attrs["input_power"])
     period = pair.base_pitch / pair.contact_point_speed
-
-    base = summarize(dataset)  # the keys the bond energies do not change (adhesion, contact, warnings)
-    base.update({
-        "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split["cof_capillary"],
-        **split,
-        "cof_max": float(np.max(friction_avg / denominator)),
-        "friction_force_mean": float((friction_avg * weights).sum()),
-        "friction_force_max": float(friction_avg.max()),
-        "resisting_force_max": float(resisting.max()),
-        "stiction": bool(margin < 0),
-        "stiction_margin": margin,
-        "mesh_efficiency": 1.0 - total_energy / (input_power * period),
-        "energy_dissipated": total_energy,
-        **{k: float(v.sum()) for k, v in energy.items()},
-        "rescaled": True,
-    })
+    base = summarize(dataset) if base is None else base  # the keys the bond energies do not change
     # the start-up verdict (peak instantaneous force at rest, MODEL 7d) is not rescaled yet: its keys would be the
     # nominal energies' (stale), so they are blanked; its per-mechanism peak forces would make it rescalable
     # the tooth's strength and temperature follow the nominal friction force too: blanked likewise
-    from memstribo.simulations.tooth_life import TOOTH_LIFE_KEYS
-
     stale = [key for key in base if key.startswith("startup") or key in TOOTH_LIFE_KEYS]
-    for key in stale:
-        base[key] = None
-    base["not_rescaled"] = stale
-    return base
+    out = []
+    for overrides in overrides_list:
+        f_chem, f_vdw = _bond_friction(dataset, params_nominal, overrides)
+        friction_avg = (sliding_average(f_chem, sliding, averaging) + sliding_average(f_vdw, sliding, averaging)
+                        + avg_el + avg_cap)  # the cycle's order of summation
+        resisting = resisting_force(c, friction_avg, pair.first_contact, pair.last_contact, pair.base_pitch)
+        margin = f_t - float(resisting.max())
+        energy = {"energy_chemical": f_chem * sliding, "energy_vdw": f_vdw * sliding, "energy_elastic": e_el,
+                  "energy_capillary": e_cap}
+        split = {f"cof_{k.split('_')[1]}": (float(v.sum()) / work if work > 0 else 0.0) for k, v in energy.items()}
+        total_energy = sum(float(v.sum()) for v in energy.values())
+        summary = dict(base)
+        summary.update({
+            "cof_mean": split["cof_chemical"] + split["cof_vdw"] + split["cof_elastic"] + split["cof_capillary"],
+            **split,
+            "cof_max": float(np.max(friction_avg / denominator)),
+            "friction_force_mean": float((friction_avg * weights).sum()),
+            "friction_force_max": float(friction_avg.max()),
+            "resisting_force_max": float(resisting.max()),
+            "stiction": bool(margin < 0),
+            "stiction_margin": margin,
+            "mesh_efficiency": 1.0 - total_energy / (input_power * period),
+            "energy_dissipated": total_energy,
+            **{k: float(v.sum()) for k, v in energy.items()},
+            "rescaled": True,
+        })
+        for key in stale:
+            summary[key] = None
+        summary["not_rescaled"] = list(stale)
+        out.append(summary)
+    return out
 
 
 def _bond_friction(dataset, params_nominal, overrides):

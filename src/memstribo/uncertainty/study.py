@@ -73,16 +73,21 @@ class _Runner:
         self.params, self.roughness, self.steps = params, roughness, steps
         self.coating_name, self.wear, self.client, self.progress = coating_name, wear, client, progress
         self.cache: dict = {}
+        self.summary_cache: dict = {}
+        self.ids: dict = {}
         self.solves = 0
         self.rescalings = 0
         self.solve_seconds = 0.0
+        self.rescale_seconds = 0.0
         self._rescalable = None
 
     def rescalable(self) -> tuple[str, ...]:
         if self._rescalable is None:
             from memstribo.uncertainty.rescale import RESCALED
 
-            self._rescalable = RESCALED if not self.coating_name or self.wear >= 1.0 else ("bond_energy",)
+            # a coated cycle writes its vdW bonds over bare and coated blocks apart: both U_vdW rescale
+            coated = bool(self.coating_name) and self.wear < 1.0
+            self._rescalable = RESCALED + ("coating_vdw_bond_energy",) if coated else RESCALED
         return self._rescalable
 
     def _split(self, constants: Mapping):
@@ -98,8 +103,7 @@ class _Runner:
 
     def summaries(self, points) -> list[dict]:
         """Summaries of ``points`` [(realisation, {constant: value})]; a failed point: {"failed": True, "error"}."""
-        from memstribo.simulations.mesh import summarize
-        from memstribo.uncertainty.rescale import rescale_cycle
+        from memstribo.uncertainty.rescale import rescale_cycles
 
         todo = {}
         for realisation, constants in points:
@@ -123,23 +127,44 @@ class _Runner:
                 self.cache[key] = p if isinstance(p, str) else next(it)
             self.solves += len(keys)
             self.solve_seconds += time.perf_counter() - start
-        out = []
-        for realisation, constants in points:
+        out: list = [None] * len(points)
+        rescale: dict = {}  # cycle key -> (solve-relevant constants, [(index, bond energies)])
+        for i, (realisation, constants) in enumerate(points):
             solved, rescaled = self._split(constants)
-            cycle = self.cache[self._key(realisation, solved)]
+            key = self._key(realisation, solved)
+            cycle = self.cache[key]
             if isinstance(cycle, str):
-                out.append({"failed": True, "error": cycle, "realisation": realisation})
-                continue
-            if rescaled:
-                summary = rescale_cycle(cycle, self._params(solved), rescaled)
-                self.rescalings += 1
+                out[i] = {"failed": True, "error": cycle, "realisation": realisation, "cycle_id": self._id(key)}
+            elif rescaled:
+                rescale.setdefault(key, (solved, []))[1].append((i, rescaled))
             else:
-                summary = summarize(cycle)
-            if "startup_margin" in cycle.attrs and not rescaled:
-                summary.setdefault("startup_margin", float(cycle.attrs["startup_margin"]))
+                out[i] = dict(self._summary(key))
+                if "startup_margin" in cycle.attrs:
+                    out[i].setdefault("startup_margin", float(cycle.attrs["startup_margin"]))
+        start = time.perf_counter()
+        for key, (solved, items) in rescale.items():  # every set of one cycle at once (rescale_cycles)
+            results = rescale_cycles(self.cache[key], self._params(solved), [r for _, r in items],
+                                     base=self._summary(key))
+            self.rescalings += len(items)
+            for (i, _), summary in zip(items, results):
+                out[i] = summary
+        self.rescale_seconds += time.perf_counter() - start
+        for (realisation, constants), summary in zip(points, out):
             summary["realisation"] = realisation
-            out.append(summary)
+            summary["cycle_id"] = self._id(self._key(realisation, self._split(constants)[0]))
         return out
+
+    def _summary(self, key) -> dict:
+        """``summarize`` of the cached cycle ``key``, computed once."""
+        from memstribo.simulations.mesh import summarize
+
+        if key not in self.summary_cache:
+            self.summary_cache[key] = summarize(self.cache[key])
+        return self.summary_cache[key]
+
+    def _id(self, key) -> int:
+        """A number per distinct cycle: the samples that share it share their contact solution."""
+        return self.ids.setdefault(key, len(self.ids))
 
     def _run(self, args):
         n = len(args)
@@ -166,17 +191,32 @@ def _client_of(client):
 
 
 def _probability(summaries, confidence):
-    from memstribo.uncertainty.intervals import binomial_interval, format_probability
+    """Count, estimate and interval of P(stiction); samples that share a cycle (``cycle_id``: a grouped design,
+    fixed solve constants) widen it by their design effect
+    (:func:`memstribo.uncertainty.intervals.clustered_interval`)."""
+    from memstribo.uncertainty.intervals import binomial_interval, clustered_interval, format_probability
 
     n = len(summaries)
     failed = sum(1 for s in summaries if s.get("failed"))
     k = sum(1 for s in summaries if not s.get("failed") and s["stiction"])
-    low = binomial_interval(k, n, confidence)[0]
-    high = binomial_interval(k + failed, n, confidence)[1]  # a failed point may stick or not: both covered
+    clusters = [s.get("cycle_id") for s in summaries]
+    deff = 1.0
+    if None in clusters or len(set(clusters)) == n:
+        low = binomial_interval(k, n, confidence)[0]
+        high = binomial_interval(k + failed, n, confidence)[1]  # a failed point may stick or not: both covered
+    else:
+        low_flags = [bool(not s.get("failed") and s["stiction"]) for s in summaries]
+        high_flags = [bool(s.get("failed") or s["stiction"]) for s in summaries]
+        below, above = clustered_interval(low_flags, clusters, confidence), \
+            clustered_interval(high_flags, clusters, confidence)
+        low, high = below["ci"][0], above["ci"][1]
+        deff = max(below["design_effect"], above["design_effect"])
     estimate = k / (n - failed) if n > failed else float("nan")
+    shared = f", design effect {deff:.3g} (samples share contact solves)" if deff > 1.0 else ""
     return {"count": k, "samples": n, "failed": failed, "probability": estimate, "ci": [low, high],
+            "design_effect": deff, "effective_samples": n / deff,
             "text": format_probability(k, n, confidence, interval=(low, high))
-            + (f", {failed} failed" if failed else "")}
+            + (f", {failed} failed" if failed else "") + shared}
 
 
 def _quantiles(values):
@@ -217,8 +257,9 @@ def sobol_indices(names, outputs: Mapping[str, np.ndarray], base_samples: int, s
             result[output] = {n: {"first": 0.0, "first_ci": [0.0, 0.0], "total": 0.0, "total_ci": [0.0, 0.0]}
                               for n in names}
             continue
+        # SALib seeds its bootstrap only for a truthy seed (seed 0 would draw new intervals each run): seed + 1
         si = sobol_analyze.analyze(problem, y, calc_second_order=False, num_resamples=resamples,
-                                   conf_level=confidence, seed=seed)
+                                   conf_level=confidence, seed=int(seed) + 1)
         result[output] = {
             n: {"first": float(si["S1"][j]), "first_ci": [float(si["S1"][j] - si["S1_conf"][j]),
                                                           float(si["S1"][j] + si["S1_conf"][j])],
@@ -322,7 +363,7 @@ def _design(sampled, realisations, sets, solve_sets, rescalable, seed):
     return points
 
 
-def _check_samples(samples, realisations, steps_of_cycle):
+def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET, solve_sets=None):
     from memstribo.parameters.definitions import MEMORY_LIMIT_BYTES
 
     if samples != "auto":
@@ -336,6 +377,12 @@ def _check_samples(samples, realisations, steps_of_cycle):
         raise InputError(f"{n} samples of {steps_of_cycle}-step cycles would keep about {need / 2**30:.1f} GiB of "
                          f"cycles in memory, more than the {MEMORY_LIMIT_BYTES / 2**31:.0f} GiB an uncertainty study "
                          "may use: use fewer samples or fewer steps.")
+    if solve_sets is not None and (isinstance(solve_sets, bool) or not isinstance(solve_sets, (int, np.integer))
+                                   or solve_sets < 1):
+        raise InputError(f"solve_sets must be a whole number >= 1 (distinct solves per realisation), "
+                         f"got {solve_sets!r}.")
+    if samples == "auto" and (isinstance(budget, bool) or int(budget) < realisations):
+        raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
 
 
 @cites("model", "wilson_1927", "sobol_2001", "saltelli_2010")
@@ -381,8 +428,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     solve_sets : int, optional
         Distinct values per realisation of the constants that need a new contact solve (default:
         every constant set its own); the bond energies are rescaled and keep every set's value
-        (:func:`_design`). Fewer solves; the samples of a group share their contact solution, so they
-        are correlated and the interval (which counts them as independent) is then optimistic.
+        (:func:`_design`). Fewer solves; the samples of a group share their contact solution and are
+        correlated: the interval is Wilson's at ``samples / design_effect`` samples (:func:`_probability`).
 
     Returns
     -------
@@ -396,7 +443,9 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         total, total_ci, cof_first, cof_first_ci, cof_total, cof_total_ci, critical_value, note}}),
         ``dominant``, ``critical_curve``, ``designer_sentence``, ``priors``, ``sampled_constants``,
         ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
-        ``elapsed`` [s], ``warnings``.
+        ``design_effect`` and ``effective_samples`` [-] (samples that share a contact solve: :func:`_probability`),
+        ``solve_seconds`` and ``rescale_seconds`` [s] (wall time of the solves and of the rescalings; the counts
+        and times include the Sobol' rows and the critical values), ``elapsed`` [s], ``warnings``.
 
     Raises
     ------
@@ -416,23 +465,21 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     if realisations is None:
         realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
     n_steps = int(params["mesh_steps"] if steps is None else steps)
-    _check_samples(samples, realisations, n_steps)
-    if samples == "auto" and (isinstance(budget, bool) or int(budget) < realisations):
-        raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
+    _check_samples(samples, realisations, n_steps, budget, solve_sets)
     client, own_client = _client_of(client)
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
         R = int(realisations)
-        nominal_points = [(r, {}) for r in range(R)]
-        nominal = runner.summaries(nominal_points)
+        nominal = runner.summaries([(r, {}) for r in range(R)])
         sets_count, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
+        runners = [runner]
         if sensitivity and sampled:
-            _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear,
-                         client, progress, sobol_samples or 32, sobol_steps, critical, threshold, curve_points)
+            runners.append(_sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps,
+                                        coating_name, wear, client, progress, sobol_samples or 32, sobol_steps,
+                                        critical, threshold, curve_points))
         result["warnings"] = _warnings(result)
-        result["solves"] = runner.solves
-        result["rescalings"] = runner.rescalings
+        _count(result, runners)
         result["elapsed"] = time.perf_counter() - start
         return result
     finally:
@@ -440,11 +487,16 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
             client.close()
 
 
+def _count(result, runners):
+    """Solves, rescalings and their wall times [s] over the runners (the Sobol' rows' own where its steps differ)."""
+    runners = list({id(r): r for r in runners}.values())
+    for name in ("solves", "rescalings", "solve_seconds", "rescale_seconds"):
+        result[name] = sum(getattr(r, name) for r in runners)
+
+
 def _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget):
     """(constant sets per realisation, summaries) of the design; ``samples="auto"`` doubles the sets until the
     interval's half-width is below :data:`TARGET_HALF_WIDTH` or the budget is spent."""
-    from memstribo.uncertainty.intervals import half_width
-
     if samples != "auto":
         sets_count = max(1, int(samples) // R)
         return sets_count, runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
@@ -452,7 +504,7 @@ def _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget):
     while True:
         summaries = runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
         p = _probability(summaries, confidence)
-        if (half_width(p["count"], p["samples"], confidence) < TARGET_HALF_WIDTH and not p["failed"]) \
+        if (0.5 * (p["ci"][1] - p["ci"][0]) < TARGET_HALF_WIDTH and not p["failed"]) \
                 or 2 * R * sets_count > int(budget):
             return sets_count, summaries
         sets_count *= 2
@@ -481,6 +533,8 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
         "stiction_count": p_all["count"],
         "samples": p_all["samples"],
         "stiction_probability_text": p_all["text"],
+        "design_effect": p_all["design_effect"],
+        "effective_samples": p_all["effective_samples"],
         "stiction_probability_nominal": p_nom["probability"],
         "stiction_probability_nominal_ci": p_nom["ci"],
         "stiction_count_nominal": p_nom["count"],
@@ -509,6 +563,8 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
 
 def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear, client,
                  progress, sobol_samples, sobol_steps, critical, threshold, curve_points):
+    """Sobol' indices, critical values and the curve of the dominant constant into ``result``; returns the
+    runner of the Sobol' rows (``runner`` itself unless ``sobol_steps`` differs), for its counts."""
     names = list(sampled)
     factors = names + [REALISATION_FACTOR]
     design = _saltelli_design(len(factors), int(sobol_samples), seed)
@@ -541,7 +597,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
                               "failed_rows": int(sum(failed))}
     constants_ranked = [n for n in ranked if n != REALISATION_FACTOR]
     if not constants_ranked:
-        return
+        return sobol_runner
     dominant = constants_ranked[0]
     result["dominant"] = dominant
 
@@ -585,6 +641,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         curve["ci_low"].append(p["ci"][0])
         curve["ci_high"].append(p["ci"][1])
     result["critical_curve"] = curve
+    return sobol_runner
 
 
 def _coating_nominal(name, coating_name):

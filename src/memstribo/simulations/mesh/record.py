@@ -23,6 +23,9 @@ def cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, r
     block_load, block_coords = _block_table(cycle["block_loads"], step)
     data = {name: var(name, values) for name, values in _variables(params, setup, cycle, verdict, step).items()}
     data["load_share"].attrs["long_name"] = f"load share of the pair ({params['load_sharing']}, Figure 4-11)"
+    if coating is not None:  # vdW bonds over bare and over coated gear blocks: U_vdW of each rescales (issue 27)
+        data["bonds_vdw_bare"] = var("bonds_vdw_bare", cycle["out"]["vdw_bonds_bare"])
+        data["bonds_vdw_coated"] = var("bonds_vdw_coated", cycle["out"]["vdw_bonds_coated"])
     data["block_load"] = var("block_load", block_load, dims=("step", "block"))
     coords = {
         "step": ("step", step, quantity_attrs("step")),

@@ -77,7 +77,8 @@ def _attraction(pressure, gap, info, zone, ctx):
 _TOTALS = ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh", "contact_width", "max_pressure",
            "unconverged", "residual", "iterations", "window_exceeded", "approach", "rigid_atomic_blocks", "vdw_edge",
            "f_cap", "f_cap_adh", "wetted", "f_chem_rigid", "f_vdw_capped", "f_vdw_over", "f_vdw_static_capped",
-           "plastic_elements", "contact_elements", "f_cap_pull", "bridged", "f_cap_bridge")
+           "plastic_elements", "contact_elements", "f_cap_pull", "bridged", "f_cap_bridge",
+           "vdw_bonds_bare", "vdw_bonds_coated")  # vdW bonds over bare / coated gear blocks (rescaling, issue 27)
 
 
 def _kinematics(setup):
@@ -321,6 +322,9 @@ def _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row):
     w_x = np.where(bare_x, ctx.w_si, ctx.w_coat) if coating is not None else ctx.w_si
     n_vdw = friction.vdw_bond_count(w_adh, dx, bond) * inside  # (3-12), bonds per element
     out["vdw_bonds"] += n_vdw.sum(axis=1)
+    if coating is not None:
+        out["vdw_bonds_bare"] += np.where(bare_x, n_vdw, 0.0).sum(axis=1)
+        out["vdw_bonds_coated"] += np.where(bare_x, 0.0, n_vdw).sum(axis=1)
     per_element = friction.friction_force(friction.bond_breaking_energy(n_vdw, u_vdw_x, bond, bond), bond)
     out["f_vdw"] += per_element.sum(axis=1)
     # local limits (MODEL 7d): an element's bonds transmit at most the ideal shear strength over its area
