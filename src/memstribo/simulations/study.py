@@ -92,7 +92,11 @@ LOCAL_CLUSTER_QUIET: dict[str, Any] = {"dashboard_address": None,
 #: than 16 384 values is mapped and unmapped afresh: a meshing cycle then costs 44 % more CPU (0.481 ->
 #: 0.694 s, bench/results-map.txt entry 7). memstribo's own clusters leave glibc's default (None unsets
 #: the variable; Dask's thread limits of 1 stay); for a cluster of your own see docs/studies.md.
-LOCAL_CLUSTER_ENVIRON: dict[str, Any] = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}
+#: Dask's statistical profiler samples each worker's stack every 10 ms; on 2 single-thread workers the
+#: uncertainty study's speed-up was 1.78-1.84 with it and 1.86 without (CPU; bench/bench_uncertainty.py --case
+#: speedup, docs/uncertainty.md): memstribo's own clusters turn it off (the dashboard's profile page is then empty).
+LOCAL_CLUSTER_ENVIRON: dict[str, Any] = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
+                                         "distributed.worker.profile.enabled": False}
 
 #: How long to wait for an existing Dask scheduler before giving up.
 CONNECT_TIMEOUT = "10s"
