@@ -350,3 +350,22 @@ def test_a_map_points_check_takes_the_spot_check_where_given_its_cycle(params, m
     monkeypatch.setattr(spot, "spot_check", lambda *args, **options: None)
     check = check_cycle(params, steps=11, baseline=summarize(dataset), dataset=dataset)
     assert len(runs) == 2 and isinstance(check["converged"], bool)
+
+
+def test_the_spot_check_of_a_margin_near_zero_checks_the_largest_resisting_force(params):
+    """With a margin near 0 the band of positions within 2 % of |margin| below R's maximum is narrower than the
+    interpolation error where the finer positions do not fall exactly on the coarser ones; the position where the
+    coarser R reads largest is checked all the same (before: an empty band, ValueError, in the map example's
+    4 um face at 84 nN m)."""
+    from memstribo.simulations.mesh.spot import spot_check
+
+    coarse = simulate_mesh(params, steps=241)
+    resisting = np.asarray(coarse["resisting_force"])
+    top = int(np.argmax(resisting))
+    position = np.asarray(coarse["position"], dtype=float).copy()
+    neighbour = top - 1 if top == position.size - 1 else top + 1
+    position[top] += 0.25 * (position[neighbour] - position[top])  # the maximum now lies between finer positions
+    coarse = coarse.assign(position=(coarse["position"].dims, position))
+    coarse.attrs["tangential_force_total"] = float(resisting.max()) * (1.0 + 1e-12)  # margin ~ 0
+    spot = spot_check(coarse, params, None, 481)
+    assert spot is not None and spot["positions_checked"] >= 1
