@@ -87,14 +87,10 @@ LOCAL_CLUSTER_QUIET: dict[str, Any] = {"dashboard_address": None,
                                        "scheduler_kwargs": {"dashboard_address": "127.0.0.1:0"},
                                        "silence_logs": logging.ERROR}
 
-#: Dask's nannies export MALLOC_TRIM_THRESHOLD_=65536 to their workers (to hand freed memory back to the
-#: system sooner). Any such setting also fixes glibc's mmap threshold at 128 kB, so every array of more
-#: than 16 384 values is mapped and unmapped afresh: a meshing cycle then costs 44 % more CPU (0.481 ->
-#: 0.694 s, bench/results-map.txt entry 7). memstribo's own clusters leave glibc's default (None unsets
-#: the variable; Dask's thread limits of 1 stay); for a cluster of your own see docs/studies.md.
-#: Dask's statistical profiler samples each worker's stack every 10 ms; on 2 single-thread workers the
-#: uncertainty study's speed-up was 1.78-1.84 with it and 1.86 without (CPU; bench/bench_uncertainty.py --case
-#: speedup, docs/uncertainty.md): memstribo's own clusters turn it off (the dashboard's profile page is then empty).
+#: Dask's nannies export MALLOC_TRIM_THRESHOLD_=65536, which also fixes glibc's mmap threshold at 128 kB: every array
+#: of over 16 384 values is then mapped afresh, and a meshing cycle costs 44 % more CPU (0.481 -> 0.694 s,
+#: bench/results-map.txt entry 7); None unsets it (Dask's thread limits of 1 stay; your own cluster: docs/studies.md).
+#: Dask's sampling profiler is off: 2-worker speed-up 1.86 without it, 1.78-1.84 with it (CPU; docs/uncertainty.md).
 LOCAL_CLUSTER_ENVIRON: dict[str, Any] = {"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
                                          "distributed.worker.profile.enabled": False}
 
