@@ -170,17 +170,7 @@ def _columns_product(kernel, reverse, values, support, count, out):
     sums the columns in the order of ``support``, as the product with the full matrix did (the same numbers).
     """
     out[:] = 0.0
-    n = out.size
-    last = n - 1
-    for c in range(count):
-        j = support[c]
-        v = values[j]
-        left, before = out[:j], reverse[last - j:last]  # kernel[j - i] = reverse[last - j + i], i < j
-        for i in range(j):
-            left[i] += before[i] * v
-        right, after = out[j:], kernel[:n - j]
-        for i in range(n - j):
-            right[i] += after[i] * v
+    _columns_product_add(kernel, reverse, values, support, count, out)
 
 
 @_jit
@@ -191,7 +181,7 @@ def _columns_product_add(kernel, reverse, values, support, count, out):
     for c in range(count):
         j = support[c]
         v = values[j]
-        left, before = out[:j], reverse[last - j:last]
+        left, before = out[:j], reverse[last - j:last]  # kernel[j - i] = reverse[last - j + i], i < j
         for i in range(j):
             left[i] += before[i] * v
         right, after = out[j:], kernel[:n - j]
