@@ -9,7 +9,7 @@ start and end (the development machine is shared: the CPU time is the fairer num
 (SolverSettings.fft_workers = 1, OMP_NUM_THREADS=1). Also the benchmark named by SolverSettings.cohesive_start:
 ``steps`` compares the margin at 481, 961 and 1921 steps (the loading-branch state makes it hold still).
 ``spot`` compares the spot check (:mod:`memstribo.simulations.mesh.spot`) with the whole finer cycle on each
-comparison the refined cycle makes first (481 -> 961 steps, 40 -> 80 elements across 2a at 481 steps), for each
+comparison the refined cycle makes first (481 -> 961 steps, 48 -> 96 elements across 2a at 481 steps), for each
 parameter set of ``--sets`` and realisation: the changes of the margin and the mean COF both give, and the CPU time of
 each. ``refine`` runs the self-refining cycle (``memstribo mesh``) of each set; ``thesis --thesis-steps 481`` the
 whole thesis load case without the refinement (``memstribo mesh --load-case thesis --set face_width=8um
@@ -53,6 +53,7 @@ def main(argv=None):
     parser.add_argument("--thesis-steps", type=int, default=25)
     args = parser.parse_args(argv)
     params = parameter_set()
+    default = int(params["mesh_elements_across_contact"])  # the default grid (48 elements across 2a)
     simulate_mesh(params, steps=11)  # the compiled zone loop: loaded (and compiled once per machine) before timing
 
     def summary(p, steps, realisation=0):
@@ -67,7 +68,8 @@ def main(argv=None):
             for k in args.realisations:
                 coarse, t_coarse = _timed(lambda: simulate_mesh(base, steps=481, realisation=k))
                 for what, finer, steps in (("steps", base, 961),
-                                           ("grid", base.updated({"mesh_elements_across_contact": 80}), 481)):
+                                           ("grid", base.updated({"mesh_elements_across_contact": 2 * default}),
+                                            481)):
                     fine, t_full = _timed(lambda: summarize(simulate_mesh(finer, steps=steps, realisation=k)))
                     full = compare_cycles(fine, summarize(coarse))
                     spot, t_spot = _timed(lambda: spot_check(coarse, finer, None, steps, realisation=k))
@@ -91,7 +93,7 @@ def main(argv=None):
                       refinement=s["refinement"], **t)
     if "steps" in args.parts:  # the margin at 2x and 4x the steps (the first measurement)
         for k in args.realisations:
-            for across in (40, 80):
+            for across in (default, 2 * default):
                 p = params.updated({"mesh_elements_across_contact": across})
                 rows = []
                 for steps in (481, 961, 1921):
@@ -102,11 +104,11 @@ def main(argv=None):
                       change_2x=abs(rows[1]["margin_mN"] / rows[0]["margin_mN"] - 1),
                       change_4x=abs(rows[2]["margin_mN"] / rows[0]["margin_mN"] - 1))
     if "grid" in args.parts or "adhesion" in args.parts:  # the grid (adhesion: up to 320 elements across 2a)
-        largest = 320 if "adhesion" in args.parts else 160
+        largest = 320 if "adhesion" in args.parts else 4 * default
         steps = 481 if "grid" in args.parts else 121
         for k in args.realisations[:1] if "adhesion" in args.parts else args.realisations:
             rows = []
-            for across in (40, 80, 160, 320):
+            for across in (default, 2 * default, 4 * default, 320):
                 if across > largest:
                     break
                 s, t = _timed(lambda: summary(params.updated({"mesh_elements_across_contact": across}), steps, k))
