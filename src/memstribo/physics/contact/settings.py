@@ -179,7 +179,7 @@ class SolverSettings:
     """Warm start of each zone update's inner solve (load control) extrapolated along the last change of p+;
     False: the last p+ as it is (the former start). Set by bench/bench_adhesive_contact.py."""
 
-    aitken_max_ratio: float = 0.95
+    aitken_max_ratio: float = 0.9
     """Largest convergence ratio used in the Aitken extrapolation of the zone updates [dimensionless]: larger
     extrapolates creeping fronts further, at the risk of overshoot. bench/bench_zone_updates.py."""
 
