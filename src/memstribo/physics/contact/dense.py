@@ -228,6 +228,27 @@ def _small_contact(h, dx, modulus, load, mean_pressure, tolerance, reference_dis
                            message=message, dx=dx, periodic=False, coarse_iterations=0)
 
 
+def _zone_arrays(zones, n):
+    """(sigmas [Pa], reaches [m] per zone and element, whether a zone's reach is per element, summed stress [Pa]) of
+    ``zones`` ((sigma, reach) pairs, a reach a number or one per element) on a grid of n elements, as the compiled
+    zone loop reads them."""
+    sigmas = np.array([float(s) for s, _ in zones])
+    reaches = np.empty((len(zones), n))
+    per_element = np.zeros(len(zones), dtype=bool)
+    for k, (_, reach) in enumerate(zones):
+        reaches[k] = reach
+        per_element[k] = np.ndim(reach) > 0
+    return sigmas, reaches, per_element, float(sigmas.sum())
+
+
+@functools.lru_cache(maxsize=16)
+def _scalar_zone_arrays(zones, n):
+    """:func:`_zone_arrays` of zones whose reaches are numbers, kept per (zones, n): a cycle's ~10^4 solves share a
+    few. The compiled loop only reads them (they stay writeable: a read-only array would be another numba
+    signature)."""
+    return _zone_arrays(zones, n)
+
+
 @cites("maugis_1992", "rey_2017", "bazrafshan_2017", "model")  # the fixed point of _cohesive_iteration
 def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start, tolerance, *, settings):
     """The capillary (and vdW) zone problem on a small grid under load control, by dense matrices.
@@ -246,13 +267,10 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
 
     n = h.size
     kernel, reverse = _toeplitz_kernel(n, dx, modulus, periodic, reference)
-    sigmas = np.array([float(s) for s, _ in zones])
-    reaches = np.empty((len(zones), n))
-    per_element = np.zeros(len(zones), dtype=bool)
-    for k, (_, reach) in enumerate(zones):
-        reaches[k] = reach
-        per_element[k] = np.ndim(reach) > 0
-    sigma = float(sigmas.sum())
+    try:  # zones of numbers (the Maugis-Dugdale zone, the menisci of one height): their arrays are kept
+        sigmas, reaches, per_element, sigma = _scalar_zone_arrays(zones, n)
+    except TypeError:  # a range per element (an array: not hashable)
+        sigmas, reaches, per_element, sigma = _zone_arrays(zones, n)
     top = float(h.max())
     scale = top if top > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
     if p_start is not None and settings.cohesive_start == "loading":  # the contact set only: the loading branch
