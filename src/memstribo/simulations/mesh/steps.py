@@ -316,17 +316,23 @@ def _chemical_bonds(out, ctx, setup, flank_states, bare2, row):
     xa2 = flank_states[1][1].reshape(n_steps, -1)
     t1 = touch1.reshape(n_steps, -1)
     t2 = touch2.reshape(n_steps, -1)
-    overlap_len = np.clip(w_at - np.abs(xa1[:, :, None] - xa2[:, None, :]), 0.0, None)
-    overlap_len = overlap_len * (t1[:, :, None] & t2[:, None, :])
+    # the overlap of each pair (steps, pinion atoms, gear atoms), clip(w_at - |x1 - x2|, 0) where both touch, in one
+    # array (10^6 values a row of a default cycle: each pass over it counts)
+    overlap_len = np.subtract(xa1[:, :, None], xa2[:, None, :])
+    np.abs(overlap_len, out=overlap_len)
+    np.subtract(w_at, overlap_len, out=overlap_len)
+    np.maximum(overlap_len, 0.0, out=overlap_len)
+    np.multiply(overlap_len, t1[:, :, None] & t2[:, None, :], out=overlap_len)
     chem = friction.chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)  # (3-10)
     out["chem_bonds"] += chem
     # all bonds break once per bond length of sliding (3.5): the force is that energy per bond length (3-1)
     out["f_chem"] += friction.friction_force(friction.bond_breaking_energy(chem, ctx.params["bond_energy"], bond, bond),
                                              bond)
     # local limits (MODEL 7d): the bonds of pairs of which one atomic block is past the threshold strain
-    rigid = (flank_states[0][6][..., :m].reshape(n_steps, -1)[:, :, None]
-             | flank_states[1][6][..., :m].reshape(n_steps, -1)[:, None, :])
-    rigid_bonds = friction.chemical_bond_count(across, (overlap_len * rigid).sum(axis=(1, 2)), bond)
+    rigid1 = flank_states[0][6][..., :m].reshape(n_steps, -1)
+    rigid2 = flank_states[1][6][..., :m].reshape(n_steps, -1)
+    np.multiply(overlap_len, rigid1[:, :, None] | rigid2[:, None, :], out=overlap_len)
+    rigid_bonds = friction.chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)
     out["f_chem_rigid"] += friction.friction_force(
         friction.bond_breaking_energy(rigid_bonds, ctx.params["bond_energy"], bond, bond), bond)
 
