@@ -229,17 +229,19 @@ def _flank_blocks(out, ctx, pressure, gap, rolls):
     cumulative = np.concatenate([np.zeros((n_steps, 1)), np.cumsum(pressure, axis=1) * dx], axis=1)
     edges_x = np.concatenate([grid - 0.5 * dx, [grid[-1] + 0.5 * dx]])
 
-    def footprint_load(x_centre):
-        """w_adh * integral of p over [x - w_adh/2, x + w_adh/2] for x (steps, slots)."""
-        lo = np.clip(x_centre - 0.5 * w_adh, edges_x[0], edges_x[-1])
-        hi = np.clip(x_centre + 0.5 * w_adh, edges_x[0], edges_x[-1])
-        f_hi = _interp_rows(hi, edges_x, cumulative, cumulative[:, 0], cumulative[:, -1])
-        f_lo = _interp_rows(lo, edges_x, cumulative, cumulative[:, 0], cumulative[:, -1])
-        return w_adh * (f_hi - f_lo)
+    def footprint_loads(centres):
+        """w_adh * integral of p over [x - w_adh/2, x + w_adh/2] for the x (steps, slots) of each of ``centres``."""
+        ends = [np.clip(end, edges_x[0], edges_x[-1]) for x in centres for end in (x + 0.5 * w_adh, x - 0.5 * w_adh)]
+        # every flank's ends in one interpolation (the rows of each step alike)
+        f = np.split(_interp_rows(np.concatenate(ends, axis=1), edges_x, cumulative, cumulative[:, 0],
+                                  cumulative[:, -1]), np.cumsum([x.shape[1] for x in ends])[:-1], axis=1)
+        return [w_adh * (f[2 * i] - f[2 * i + 1]) for i in range(len(centres))]
 
-    def local_gap(x):
-        """Deformed gap at x (steps, ...) [m]; far outside the window: effectively no contact."""
-        return _interp_rows(x, grid, gap, 1.0, 1.0)
+    def local_gaps(points):
+        """Deformed gap at each of ``points`` (steps, slots, ...) [m]; far outside the window: effectively no
+        contact."""
+        values = _interp_rows(np.concatenate(points, axis=1), grid, gap, 1.0, 1.0)
+        return np.split(values, np.cumsum([x.shape[1] for x in points])[:-1], axis=1)
 
     # lattices: pinion block k centred at sigma = (k + 1/2) w_adh -> x = s1 - sigma; gear: x = sigma - s2
     s1, s2, scale = rolls
@@ -247,12 +249,11 @@ def _flank_blocks(out, ctx, pressure, gap, rolls):
     k2 = _lattice(s2, w_adh, ctx.half)
     x1 = s1[:, None] - (k1 + 0.5) * w_adh
     x2 = (k2 + 0.5) * w_adh - s2[:, None]
+    # pinion: sigma increases -> x decreases; symmetric offsets; the gear's pitch stretched by its turn
+    atoms = [x_blocks[..., None] - ctx.offsets * stretch for x_blocks, stretch in ((x1, 1.0), (x2, scale))]
     flank_states = []
-    for x_blocks, stretch in ((x1, 1.0), (x2, scale)):
-        loads = footprint_load(x_blocks)
-        # pinion: sigma increases -> x decreases; symmetric offsets; the gear's pitch stretched by its turn
-        x_atoms = x_blocks[..., None] - ctx.offsets * stretch
-        overlap_row = -local_gap(x_atoms)  # (steps, slots, m)
+    for x_blocks, x_atoms, loads, gaps in zip((x1, x2), atoms, footprint_loads((x1, x2)), local_gaps(atoms)):
+        overlap_row = -gaps  # (steps, slots, m)
         overlap = np.repeat(overlap_row, m, axis=-1)  # m x m atomic blocks, rows across the width alike
         loaded = loads > 0
         atomic_force = np.zeros(overlap.shape)
@@ -316,25 +317,46 @@ def _chemical_bonds(out, ctx, setup, flank_states, bare2, row):
     xa2 = flank_states[1][1].reshape(n_steps, -1)
     t1 = touch1.reshape(n_steps, -1)
     t2 = touch2.reshape(n_steps, -1)
-    # the overlap of each pair (steps, pinion atoms, gear atoms), clip(w_at - |x1 - x2|, 0) where both touch, in one
-    # array (10^6 values a row of a default cycle: each pass over it counts)
-    overlap_len = np.subtract(xa1[:, :, None], xa2[:, None, :])
-    np.abs(overlap_len, out=overlap_len)
-    np.subtract(w_at, overlap_len, out=overlap_len)
-    np.maximum(overlap_len, 0.0, out=overlap_len)
-    np.multiply(overlap_len, t1[:, :, None] & t2[:, None, :], out=overlap_len)
-    chem = friction.chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)  # (3-10)
+    rigid1 = flank_states[0][6][..., :m].reshape(n_steps, -1)
+    rigid2 = flank_states[1][6][..., :m].reshape(n_steps, -1)
+    overlap_sum, rigid_sum = _pair_overlaps(ctx, xa1, xa2, t1, t2, rigid1, rigid2, w_at)
+    chem = friction.chemical_bond_count(across, overlap_sum, bond)  # (3-10)
     out["chem_bonds"] += chem
     # all bonds break once per bond length of sliding (3.5): the force is that energy per bond length (3-1)
     out["f_chem"] += friction.friction_force(friction.bond_breaking_energy(chem, ctx.params["bond_energy"], bond, bond),
                                              bond)
     # local limits (MODEL 7d): the bonds of pairs of which one atomic block is past the threshold strain
-    rigid1 = flank_states[0][6][..., :m].reshape(n_steps, -1)
-    rigid2 = flank_states[1][6][..., :m].reshape(n_steps, -1)
-    np.multiply(overlap_len, rigid1[:, :, None] | rigid2[:, None, :], out=overlap_len)
-    rigid_bonds = friction.chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)
+    rigid_bonds = friction.chemical_bond_count(across, rigid_sum, bond)
     out["f_chem_rigid"] += friction.friction_force(
         friction.bond_breaking_energy(rigid_bonds, ctx.params["bond_energy"], bond, bond), bond)
+
+
+def _pair_overlaps(ctx, xa1, xa2, t1, t2, rigid1, rigid2, w_at):
+    """Per step, the summed overlap [m] of the pairs of touching opposing atomic blocks, all pairs and those with a
+    block past the threshold strain: sum over i, j of clip(w_at - |x1_i - x2_j|, 0) t1_i t2_j (and (r1_i | r2_j)).
+
+    ``xa1``, ``t1``, ``rigid1``: the pinion's atomic blocks (steps, A), positions [m], touching, rigid; ``xa2``, ...
+    the gear's (steps, B). Each step's A x B terms are summed as one array (numpy's pairwise sum, the order the
+    numbers were always summed in); only the rows of the pinion's touching blocks (a fifth) are computed, written
+    into a zero array kept on ``ctx`` for the cycle's rows (10^6 terms a row of a default cycle) and zeroed again.
+    """
+    shape = (xa1.shape[0], xa1.shape[1], xa2.shape[1])
+    pairs = getattr(ctx, "pair_terms", None)
+    if pairs is None or pairs.shape != shape:
+        pairs = ctx.pair_terms = np.zeros(shape)
+    steps, blocks = np.nonzero(t1)
+    terms = np.subtract(xa1[steps, blocks][:, None], xa2[steps])  # clip(w_at - |x1 - x2|, 0) t2
+    np.abs(terms, out=terms)
+    np.subtract(w_at, terms, out=terms)
+    np.maximum(terms, 0.0, out=terms)
+    np.multiply(terms, t2[steps], out=terms)
+    pairs[steps, blocks] = terms
+    overlap = pairs.sum(axis=(1, 2))
+    np.multiply(terms, rigid1[steps, blocks][:, None] | rigid2[steps], out=terms)
+    pairs[steps, blocks] = terms
+    rigid = pairs.sum(axis=(1, 2))
+    pairs[steps, blocks] = 0.0
+    return overlap, rigid
 
 
 def _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row):
