@@ -13,12 +13,10 @@ import numpy as np
 
 from memstribo.errors import InputError
 
-_FLOATS = (float, np.float64)
-
 
 def _finite_number(value) -> bool:
     """``np.isscalar(value) and np.isfinite(value)``, by ``math.isfinite`` for a float (the common case)."""
-    if type(value) in _FLOATS:
+    if type(value) is float or type(value) is np.float64:
         return math.isfinite(value)
     return bool(np.isscalar(value) and np.isfinite(value))
 
