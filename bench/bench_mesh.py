@@ -2,7 +2,9 @@
 
 Run: ``python bench/bench_mesh.py [--steps 121 241 481 961] [--across 20 40 80] [--repeat 2] [--profile]
 [--ensemble 16 --workers 2] [--json]``, or ``python bench/bench_mesh.py --adhesion maugis none [--repeat 3]``
-(only the default cycle's time with and without the Maugis-Dugdale zone, no memory tracing).
+(only the default cycle's time with and without the Maugis-Dugdale zone, no memory tracing), or
+``python bench/bench_mesh.py --cycle --across 40 48 --repeat 3`` (only the CPU time of the default cycle and of the
+self-refining cycle of ``memstribo mesh``, issue #25 item 5: under 1.5 s on one core).
 
 1. The default cycle (torque load case, 481 steps, grid sized from the Hertz width: 40 elements
    across 2a, 10 rows each with its own synthetic roughness line)
@@ -97,6 +99,33 @@ def _adhesion_only(values, repeat):
     return 0
 
 
+def _cycle_only(across, repeat):
+    """CPU seconds (best of ``repeat``) of the default cycle and of the self-refining cycle (``memstribo mesh``:
+    :func:`refined_cycle`, realisation 0) at each number of elements across 2a, with the load average."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh
+    from memstribo.simulations.mesh.convergence import refined_cycle
+
+    base = get_parameter_values()
+    simulate_mesh(base, steps=base["mesh_steps"])  # warm-up: the compiled zone loop, caches
+    out = {"load_average_before": os.getloadavg(), "cycles": []}
+    for value in across:
+        params = base.updated({"mesh_elements_across_contact": value})
+        point = {"elements_across_contact": value}
+        for name, run in (("cycle_cpu_seconds", lambda: simulate_mesh(params, steps=params["mesh_steps"])),
+                          ("refined_cpu_seconds", lambda: refined_cycle(params))):
+            best = float("inf")
+            for _ in range(max(repeat, 1)):
+                start = time.process_time()
+                run()
+                best = min(best, time.process_time() - start)
+            point[name] = round(best, 3)
+        out["cycles"].append(point)
+    out["load_average_after"] = os.getloadavg()
+    print(json.dumps(out, indent=2))
+    return 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, nargs="+", default=[121, 241, 481, 961])
@@ -110,9 +139,14 @@ def main(argv=None):
     parser.add_argument("--adhesion", nargs="+", choices=("maugis", "none"),
                         help="only time the default cycle with each contact_adhesion (no memory tracing, best of "
                              "--repeat) and stop")
+    parser.add_argument("--cycle", action="store_true",
+                        help="only the CPU time of the default cycle and of the self-refining cycle (memstribo mesh) "
+                             "at each --across (best of --repeat) and stop")
     args = parser.parse_args(argv)
     if args.adhesion:
         return _adhesion_only(args.adhesion, args.repeat)
+    if args.cycle:
+        return _cycle_only(args.across, args.repeat)
 
     import numpy as np
     import scipy

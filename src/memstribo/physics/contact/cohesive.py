@@ -4,6 +4,7 @@ or approach control (Rey et al. 2017, Bazrafshan et al. 2017; docs/contact.md "A
 from __future__ import annotations
 
 import dataclasses
+import functools
 import time
 
 import numpy as np
@@ -441,8 +442,16 @@ def _zone_kind(sigma0, h0, zones):
     widened = (zones is not None and len(zones) == 2 and np.ndim(zones[1][1]) == 0
                and zones[1][1] < 1e-3 * zones[0][1])  # the contact-only part has (almost) no range
     if not widened:
-        return f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)"
+        return _kind_text(sigma0, h0)
     (sigma, h), _ = zones
+    return _kind_text(sigma0, h0, sigma, h)
+
+
+@functools.lru_cache(maxsize=16)
+def _kind_text(sigma0, h0, sigma=None, h=None):
+    """:func:`_zone_kind`'s text, kept per zone (a meshing cycle's ~10^4 solves share one)."""
+    if sigma is None:
+        return f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)"
     return (f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {sigma * h / sigma0:.4g} m; the zone is "
             f"narrower than this grid resolves: the same w over sigma = {sigma:.4g} Pa, h = {h:.4g} m outside the "
             f"contact)")

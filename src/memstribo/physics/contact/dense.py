@@ -15,6 +15,19 @@ from memstribo.physics.contact.inputs import _check_adhesive_inputs
 from memstribo.references import cites
 
 
+_kernel_module = None  # memstribo.physics._zone_kernel, once imported (numba: on first use)
+
+
+def _compiled():
+    """The compiled zone loop's module, imported on first use (an import statement costs ~2 us per solve)."""
+    global _kernel_module
+    if _kernel_module is None:
+        from memstribo.physics import _zone_kernel
+
+        _kernel_module = _zone_kernel
+    return _kernel_module
+
+
 @functools.lru_cache(maxsize=8)
 def _toeplitz_kernel(n, dx, contact_modulus, periodic, reference_distance):
     """(kernel, reversed kernel) of the influence matrix of a uniform grid of n elements: A[i, j] = kernel[|i - j|]
@@ -228,8 +241,29 @@ def _small_contact(h, dx, modulus, load, mean_pressure, tolerance, reference_dis
                            message=message, dx=dx, periodic=False, coarse_iterations=0)
 
 
+def _zone_arrays(zones, n):
+    """(sigmas [Pa], reaches [m] per zone and element, whether a zone's reach is per element, summed stress [Pa]) of
+    ``zones`` ((sigma, reach) pairs, a reach a number or one per element) on a grid of n elements, as the compiled
+    zone loop reads them."""
+    sigmas = np.array([float(s) for s, _ in zones])
+    reaches = np.empty((len(zones), n))
+    per_element = np.zeros(len(zones), dtype=bool)
+    for k, (_, reach) in enumerate(zones):
+        reaches[k] = reach
+        per_element[k] = np.ndim(reach) > 0
+    return sigmas, reaches, per_element, float(sigmas.sum())
+
+
+@functools.lru_cache(maxsize=16)
+def _scalar_zone_arrays(zones, n):
+    """:func:`_zone_arrays` of zones whose reaches are numbers, kept per (zones, n): a cycle's ~10^4 solves share a
+    few. The compiled loop only reads them (they stay writeable: a read-only array would be another numba
+    signature)."""
+    return _zone_arrays(zones, n)
+
+
 @cites("maugis_1992", "rey_2017", "bazrafshan_2017", "model")  # the fixed point of _cohesive_iteration
-def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start, tolerance, *, settings):
+def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start, tolerance, top=None, *, settings):
     """The capillary (and vdW) zone problem on a small grid under load control, by dense matrices.
 
     The same fixed point on the cohesive fraction as :func:`_cohesive_iteration` (traction
@@ -239,21 +273,18 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
     ``settings.zone_max_change``; Aitken extrapolation of creeping fronts every third update), each
     inner problem solved exactly (Cholesky on the contact set, primal-dual active set as
     :func:`_dense_contact`). The loop is compiled (:func:`memstribo.physics._zone_kernel.zone_solve`):
-    a meshing cycle makes ~10^4 of these solves of ~20 updates each. ``h`` has its minimum at 0.
+    a meshing cycle makes ~10^4 of these solves of ~20 updates each. ``h`` has its minimum at 0; ``top``: its
+    maximum [m], where the caller has it.
     Returns (p, gap, contact, fraction, delta, updates) or None where it cannot (the general solver then runs).
     """
-    from memstribo.physics._zone_kernel import SETTLED, zone_solve  # numba: imported on first use
-
+    compiled = _compiled()
     n = h.size
     kernel, reverse = _toeplitz_kernel(n, dx, modulus, periodic, reference)
-    sigmas = np.array([float(s) for s, _ in zones])
-    reaches = np.empty((len(zones), n))
-    per_element = np.zeros(len(zones), dtype=bool)
-    for k, (_, reach) in enumerate(zones):
-        reaches[k] = reach
-        per_element[k] = np.ndim(reach) > 0
-    sigma = float(sigmas.sum())
-    top = float(h.max())
+    try:  # zones of numbers (the Maugis-Dugdale zone, the menisci of one height): their arrays are kept
+        sigmas, reaches, per_element, sigma = _scalar_zone_arrays(zones, n)
+    except TypeError:  # a range per element (an array: not hashable)
+        sigmas, reaches, per_element, sigma = _zone_arrays(zones, n)
+    top = float(h.max()) if top is None else top
     scale = top if top > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
     if p_start is not None and settings.cohesive_start == "loading":  # the contact set only: the loading branch
         contact = p_start > 0.0
@@ -265,11 +296,11 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
     else:
         fraction = np.zeros(n)
         contact = np.zeros(n, dtype=bool)
-    status, p, gap, delta, updates = zone_solve(
+    status, p, gap, delta, updates = compiled.zone_solve(
         kernel, reverse, np.ascontiguousarray(h, dtype=float), float(total), sigmas, reaches, per_element, bool(periodic),
         fraction, contact, tolerance * scale, settings.adhesive_max_outer, settings.max_outer,
         settings.fraction_tolerance, settings.zone_load_tolerance, settings.zone_max_change, settings.aitken_min_ratio, settings.aitken_max_ratio)
-    if status != SETTLED:
+    if status != compiled.SETTLED:
         return None
     return p, gap, contact, fraction, delta, updates
 
@@ -294,12 +325,12 @@ def _small_capillary(separation, dx, contact_modulus, load, mean_pressure, perio
     h = h - offset
     total = float(load) / dx if load is not None else float(mean_pressure) * n
     p_start = np.asarray(initial_pressure, dtype=float) if initial_pressure is not None else None
-    state = _dense_capillary(h, dx, modulus, total, bool(periodic), reference, zones, p_start, tolerance,
+    top = float(h.max())
+    state = _dense_capillary(h, dx, modulus, total, bool(periodic), reference, zones, p_start, tolerance, top,
                              settings=settings)
     if state is None:
         return None
     p, gap, contact, fraction, delta, outer = state
-    top = float(h.max())
     scale = top if top > 0 else max(abs(total) * dx / modulus, reach)
     # complementarity residual as the general solver's: penetration outside the contact set (its gap is exact:
     # zero on the set, so the smallest gap is the deepest penetration outside it, if any)

@@ -229,19 +229,19 @@ def _flank_blocks(out, ctx, pressure, gap, rolls):
     cumulative = np.concatenate([np.zeros((n_steps, 1)), np.cumsum(pressure, axis=1) * dx], axis=1)
     edges_x = np.concatenate([grid - 0.5 * dx, [grid[-1] + 0.5 * dx]])
 
-    def footprint_load(x_centre):
-        """w_adh * integral of p over [x - w_adh/2, x + w_adh/2] for x (steps, slots)."""
-        lo = np.clip(x_centre - 0.5 * w_adh, edges_x[0], edges_x[-1])
-        hi = np.clip(x_centre + 0.5 * w_adh, edges_x[0], edges_x[-1])
-        f_hi = np.stack([np.interp(hi[i], edges_x, cumulative[i]) for i in range(n_steps)])
-        f_lo = np.stack([np.interp(lo[i], edges_x, cumulative[i]) for i in range(n_steps)])
-        return w_adh * (f_hi - f_lo)
+    def footprint_loads(centres):
+        """w_adh * integral of p over [x - w_adh/2, x + w_adh/2] for the x (steps, slots) of each of ``centres``."""
+        ends = [np.clip(end, edges_x[0], edges_x[-1]) for x in centres for end in (x + 0.5 * w_adh, x - 0.5 * w_adh)]
+        # every flank's ends in one interpolation (the rows of each step alike)
+        f = np.split(_interp_rows(np.concatenate(ends, axis=1), edges_x, cumulative, cumulative[:, 0],
+                                  cumulative[:, -1]), np.cumsum([x.shape[1] for x in ends])[:-1], axis=1)
+        return [w_adh * (f[2 * i] - f[2 * i + 1]) for i in range(len(centres))]
 
-    def local_gap(x):
-        """Deformed gap at x (steps, ...) [m]; far outside the window: effectively no contact."""
-        flat = x.reshape(n_steps, -1)
-        values = np.stack([np.interp(flat[i], grid, gap[i], left=1.0, right=1.0) for i in range(n_steps)])
-        return values.reshape(x.shape)
+    def local_gaps(points):
+        """Deformed gap at each of ``points`` (steps, slots, ...) [m]; far outside the window: effectively no
+        contact."""
+        values = _interp_rows(np.concatenate(points, axis=1), grid, gap, 1.0, 1.0)
+        return np.split(values, np.cumsum([x.shape[1] for x in points])[:-1], axis=1)
 
     # lattices: pinion block k centred at sigma = (k + 1/2) w_adh -> x = s1 - sigma; gear: x = sigma - s2
     s1, s2, scale = rolls
@@ -249,12 +249,11 @@ def _flank_blocks(out, ctx, pressure, gap, rolls):
     k2 = _lattice(s2, w_adh, ctx.half)
     x1 = s1[:, None] - (k1 + 0.5) * w_adh
     x2 = (k2 + 0.5) * w_adh - s2[:, None]
+    # pinion: sigma increases -> x decreases; symmetric offsets; the gear's pitch stretched by its turn
+    atoms = [x_blocks[..., None] - ctx.offsets * stretch for x_blocks, stretch in ((x1, 1.0), (x2, scale))]
     flank_states = []
-    for x_blocks, stretch in ((x1, 1.0), (x2, scale)):
-        loads = footprint_load(x_blocks)
-        # pinion: sigma increases -> x decreases; symmetric offsets; the gear's pitch stretched by its turn
-        x_atoms = x_blocks[..., None] - ctx.offsets * stretch
-        overlap_row = -local_gap(x_atoms)  # (steps, slots, m)
+    for x_blocks, x_atoms, loads, gaps in zip((x1, x2), atoms, footprint_loads((x1, x2)), local_gaps(atoms)):
+        overlap_row = -gaps  # (steps, slots, m)
         overlap = np.repeat(overlap_row, m, axis=-1)  # m x m atomic blocks, rows across the width alike
         loaded = loads > 0
         atomic_force = np.zeros(overlap.shape)
@@ -270,6 +269,65 @@ def _flank_blocks(out, ctx, pressure, gap, rolls):
             out["rigid_atomic_blocks"] += rigid_mask.sum(axis=(1, 2))
         flank_states.append((x_blocks, x_atoms, loads, atomic_force, atomic_comp, adhesive_comp, rigid_mask))
     return k1, k2, flank_states
+
+
+def _interp_rows(x, xp, fp, left, right):
+    """``np.interp(x[i], xp, fp[i], left[i], right[i])`` of every row i at once [units of fp], value for value.
+
+    ``x`` (rows, ...), ``xp`` (N,) increasing, ``fp`` (rows, N); ``left``, ``right``: a number or one per row. The
+    rows of a cycle's step loop (481 steps: ~10^5 calls of np.interp per refined cycle) in a few array operations,
+    each value by numpy's own rule (``arr_interp`` in numpy/_core/src/multiarray/compiled_base.c): fp[j] where
+    x = xp[j] (j = N - 1 included), else ``slope (x - xp[j]) + fp[j]`` with ``slope = (fp[j+1] - fp[j]) / (xp[j+1] -
+    xp[j])`` for xp[j] < x < xp[j+1]; ``left`` below xp[0], ``right`` above xp[N - 1], NaN at NaN. (Where that
+    formula gives NaN numpy tries another: such rows are handed to np.interp.)
+    """
+    rows, n = fp.shape[0], xp.size
+    flat = x.reshape(rows, -1)
+    j = _bracket(xp, flat)  # xp[j] <= x < xp[j + 1]; N - 1 at x >= xp[N - 1] and NaN
+    inner = np.clip(j, 0, n - 2)
+    at = inner + (np.arange(rows) * n)[:, None]  # into fp's rows, flattened
+    table = np.ravel(fp)
+    f0, f1 = table.take(at), table.take(at + 1)
+    x0 = xp.take(inner)
+    with np.errstate(invalid="ignore"):  # inf - inf: the rows handed to np.interp below
+        values = (f1 - f0) / (xp.take(inner + 1) - x0) * (flat - x0) + f0
+    np.copyto(values, f0, where=flat == x0)
+    high = j >= n - 1
+    if high.any():
+        np.copyto(values, f1, where=high)  # x = xp[N - 1]: fp[N - 1] (f1 there)
+        np.copyto(values, np.reshape(right, (-1, 1)), where=flat > xp[-1])
+        np.copyto(values, flat, where=np.isnan(flat))
+    low = j < 0
+    if low.any():
+        np.copyto(values, np.reshape(left, (-1, 1)), where=low)
+    odd = np.isnan(values)
+    if odd.any():  # numpy's second try where the formula gave NaN: np.interp itself
+        left, right = np.broadcast_to(np.reshape(left, -1), (rows,)), np.broadcast_to(np.reshape(right, -1), (rows,))
+        for i in np.flatnonzero((odd & ~np.isnan(flat)).any(axis=1)):
+            values[i] = np.interp(flat[i], xp, fp[i], left[i], right[i])
+    return values.reshape(x.shape)
+
+
+def _bracket(xp, x):
+    """``np.searchsorted(xp, x, side="right") - 1`` [-]: the j with xp[j] <= x < xp[j + 1] (-1 below xp[0], N - 1 from
+    xp[N - 1] on and at NaN), for an increasing ``xp`` of N >= 2 points. On a uniform grid (the cycle's) from the
+    index x / spacing, corrected by comparing with xp itself until exact (a step or two; binary searches of 10^4
+    unsorted points cost ~50 ns each); elsewhere by np.searchsorted."""
+    n = xp.size
+    with np.errstate(invalid="ignore"):
+        guess = np.floor((x - xp[0]) * ((n - 1) / (xp[-1] - xp[0])))
+    j = np.fmin(np.fmax(guess, -1.0), n - 1.0).astype(np.intp)  # NaN -> -1, set below
+    for _ in range(4):
+        down = xp.take(np.maximum(j, 0)) > x
+        down &= j >= 0
+        up = xp.take(np.minimum(j + 1, n - 1)) <= x
+        up &= j < n - 1
+        if not (down.any() or up.any()):
+            np.copyto(j, n - 1, where=np.isnan(x))
+            return j
+        j -= down
+        j += up
+    return np.searchsorted(xp, x, side="right") - 1
 
 
 def _chemical_bonds(out, ctx, setup, flank_states, bare2, row):
@@ -288,19 +346,46 @@ def _chemical_bonds(out, ctx, setup, flank_states, bare2, row):
     xa2 = flank_states[1][1].reshape(n_steps, -1)
     t1 = touch1.reshape(n_steps, -1)
     t2 = touch2.reshape(n_steps, -1)
-    overlap_len = np.clip(w_at - np.abs(xa1[:, :, None] - xa2[:, None, :]), 0.0, None)
-    overlap_len = overlap_len * (t1[:, :, None] & t2[:, None, :])
-    chem = friction.chemical_bond_count(across, overlap_len.sum(axis=(1, 2)), bond)  # (3-10)
+    rigid1 = flank_states[0][6][..., :m].reshape(n_steps, -1)
+    rigid2 = flank_states[1][6][..., :m].reshape(n_steps, -1)
+    overlap_sum, rigid_sum = _pair_overlaps(ctx, xa1, xa2, t1, t2, rigid1, rigid2, w_at)
+    chem = friction.chemical_bond_count(across, overlap_sum, bond)  # (3-10)
     out["chem_bonds"] += chem
     # all bonds break once per bond length of sliding (3.5): the force is that energy per bond length (3-1)
     out["f_chem"] += friction.friction_force(friction.bond_breaking_energy(chem, ctx.params["bond_energy"], bond, bond),
                                              bond)
     # local limits (MODEL 7d): the bonds of pairs of which one atomic block is past the threshold strain
-    rigid = (flank_states[0][6][..., :m].reshape(n_steps, -1)[:, :, None]
-             | flank_states[1][6][..., :m].reshape(n_steps, -1)[:, None, :])
-    rigid_bonds = friction.chemical_bond_count(across, (overlap_len * rigid).sum(axis=(1, 2)), bond)
+    rigid_bonds = friction.chemical_bond_count(across, rigid_sum, bond)
     out["f_chem_rigid"] += friction.friction_force(
         friction.bond_breaking_energy(rigid_bonds, ctx.params["bond_energy"], bond, bond), bond)
+
+
+def _pair_overlaps(ctx, xa1, xa2, t1, t2, rigid1, rigid2, w_at):
+    """Per step, the summed overlap [m] of the pairs of touching opposing atomic blocks, all pairs and those with a
+    block past the threshold strain: sum over i, j of clip(w_at - |x1_i - x2_j|, 0) t1_i t2_j (and (r1_i | r2_j)).
+
+    ``xa1``, ``t1``, ``rigid1``: the pinion's atomic blocks (steps, A), positions [m], touching, rigid; ``xa2``, ...
+    the gear's (steps, B). Each step's A x B terms are summed as one array (numpy's pairwise sum, the order the
+    numbers were always summed in); only the rows of the pinion's touching blocks (a fifth) are computed, written
+    into a zero array kept on ``ctx`` for the cycle's rows (10^6 terms a row of a default cycle) and zeroed again.
+    """
+    shape = (xa1.shape[0], xa1.shape[1], xa2.shape[1])
+    pairs = getattr(ctx, "pair_terms", None)
+    if pairs is None or pairs.shape != shape:
+        pairs = ctx.pair_terms = np.zeros(shape)
+    steps, blocks = np.nonzero(t1)
+    terms = np.subtract(xa1[steps, blocks][:, None], xa2[steps])  # clip(w_at - |x1 - x2|, 0) t2
+    np.abs(terms, out=terms)
+    np.subtract(w_at, terms, out=terms)
+    np.maximum(terms, 0.0, out=terms)
+    np.multiply(terms, t2[steps], out=terms)
+    pairs[steps, blocks] = terms
+    overlap = pairs.sum(axis=(1, 2))
+    np.multiply(terms, rigid1[steps, blocks][:, None] | rigid2[steps], out=terms)
+    pairs[steps, blocks] = terms
+    rigid = pairs.sum(axis=(1, 2))
+    pairs[steps, blocks] = 0.0
+    return overlap, rigid
 
 
 def _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row):
