@@ -428,6 +428,32 @@ def test_smooth_teeth_with_adhesion_reproduce_the_maugis_dugdale_line_contact(pa
         assert float(ds.contact_width[i]) > 2 * float(ds.hertz_half_width[i])
 
 
+@pytest.mark.parametrize("across, steps", [(48, 25), (80, 13)])
+def test_smooth_adhesive_teeth_stay_in_the_adhered_state_at_every_step(params, across, steps):
+    """The same smooth teeth on other grids and step counts: every step's contact is the Maugis-Dugdale line
+    contact's large (adhered) one. With the zone updates' Aitken extrapolation capped at a ratio of 0.95 (before
+    issue #25's grid change) the extrapolation overshot into the small-contact state (a contact a third as wide
+    under a zone three times wider, flagged converged) in 14 steps of 16 such cycles (40 to 80 elements across
+    2a, 7 to 49 steps), among them one step of each case here; capped at 0.9, in none."""
+    from scipy.optimize import brentq
+
+    from memstribo.physics.adhesion import nanoscale_constants
+    from memstribo.physics.closed_form import maugis_dugdale_line_load
+    from memstribo.surfaces.roughness import Profile
+
+    flat = Profile(x=np.arange(6000) * 2e-9, z=np.zeros(6000), name="flat")
+    thesis = params.updated({"load_case": "thesis", "mesh_elements_across_contact": across})
+    ds = simulate_mesh(thesis, flat, steps=steps)
+    constants = nanoscale_constants(thesis)
+    w, sigma0 = float(constants.work_of_adhesion), float(constants.maugis_stress)
+    for i in range(ds.sizes["step"]):
+        line_load = float(ds.normal_force[i]) / ds.attrs["effective_face_width"]
+        radius = float(ds.effective_radius[i])
+        a = brentq(lambda a: float(maugis_dugdale_line_load(a, radius, ds.attrs["contact_modulus"], w, sigma0)[0])
+                   - line_load, 1e-10, 1e-6)
+        assert float(ds.contact_width[i]) == pytest.approx(2 * a, abs=2 * ds.attrs["grid_spacing"]), i
+
+
 def test_adhesive_layer_one_rule_with_the_sliding_models(base):
     """Unset adhesive_layer_thickness means adhesive_height in the mesh too (thesis 3.5), bare and coated.
 
