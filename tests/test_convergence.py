@@ -195,7 +195,8 @@ def test_the_real_cycle_reports_its_changes_relative_to_what_is_decided(params):
     _, summary = refined_cycle(params, steps=31, step_refinements=1, grid_refinements=1, spot_checks=False)
     coarse = summarize(simulate_mesh(params, steps=31))
     fine = summarize(simulate_mesh(params, steps=61))
-    finer_grid = summarize(simulate_mesh(params.updated({"mesh_elements_across_contact": 80}), steps=61))
+    doubled = 2 * int(params["mesh_elements_across_contact"])
+    finer_grid = summarize(simulate_mesh(params.updated({"mesh_elements_across_contact": doubled}), steps=61))
     assert summary["step_change_margin"] == pytest.approx(abs(fine["stiction_margin"] - coarse["stiction_margin"])
                                                           / abs(coarse["stiction_margin"]), rel=1e-9)
     assert summary["grid_change_margin"] == pytest.approx(
@@ -296,7 +297,8 @@ def test_the_spot_check_gives_the_finer_cycles_margin(params, finer):
     coarse_ds = simulate_mesh(params, steps=241 if finer == "steps" else 481)
     coarse = summarize(coarse_ds)
     fine_params, steps = ((params, 481) if finer == "steps"
-                          else (params.updated({"mesh_elements_across_contact": 80}), 481))
+                          else (params.updated({"mesh_elements_across_contact":
+                                                2 * int(params["mesh_elements_across_contact"])}), 481))
     spot = spot_check(coarse_ds, fine_params, None, steps)
     fine = summarize(simulate_mesh(fine_params, steps=steps))
     assert spot is not None and spot["solved"] < steps
@@ -320,12 +322,13 @@ def test_a_passed_spot_check_keeps_the_cycle_and_a_failed_one_runs_the_finer(par
 
     monkeypatch.setattr(spot, "spot_check", passing)
     _, summary = refined_cycle(params, steps=11, step_refinements=1, grid_refinements=1)
-    assert summary["steps"] == 11 and summary["elements_across_contact"] == 40 and summary["converged"]
+    default = int(params["mesh_elements_across_contact"])
+    assert summary["steps"] == 11 and summary["elements_across_contact"] == default and summary["converged"]
     assert calls == [21, 11] and all("spot check: 7 of" in text for text in summary["refinement"])
     assert summary["step_change_margin"] == 0.001 and summary["grid_change_cof"] == 0.002
     monkeypatch.setattr(spot, "spot_check", lambda *args, **options: None)  # does not apply: the whole finer cycle
     _, summary = refined_cycle(params, steps=11, step_refinements=1, grid_refinements=1)
-    assert summary["steps"] == 21 and summary["elements_across_contact"] == 80
+    assert summary["steps"] == 21 and summary["elements_across_contact"] == 2 * default
     assert not any("spot" in text for text in summary["refinement"])
 
 

@@ -358,7 +358,7 @@ def test_cli_mesh(cli, tmp_path, afm_dir):
     # the self-refining cycle (issue #25): the finest cycle computed, with its checks
     refined = cli.json("mesh", "--steps", "11", "--set", "mesh_grid_refinements=1")
     assert refined["steps"] in (21, 41) and isinstance(refined["converged"], bool) and refined["refinement"]
-    assert refined["elements_checked"] == 80 and refined["step_change_margin"] is not None
+    assert refined["elements_checked"] == 2 * 48 and refined["step_change_margin"] is not None  # the default grid doubled
     code, out, err = cli("mesh", "--steps", "11", "--out", tmp_path)
     assert code == 0 and "cof_mean" in out
     for name in ("mesh.nc", "mesh_cycle.csv", "mesh_cof.png", "mesh_cof.svg", "mesh_energy.png", "mesh_efficiency.png",
