@@ -214,12 +214,13 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
     checked.add(int(np.argmax(coarse_at)))
     stride = max(1, steps // COF_SAMPLES)
     sample = np.arange(stride // 2, steps, stride)
-    budget -= 2 * sample.size  # the subsample for the mean COF, each step with the one before it
     cache = {}
     finer_r = {}
     for _ in range(_ROUNDS):
         needed = _steps_for(finer, checked, distance)
-        if finer.solved() + finer.cost(needed) > budget:
+        # the steps still to solve for the margin and for the mean COF's subsample (each step with the one before it;
+        # a subsample step the margin's steps hold already costs nothing more)
+        if finer.solved() + finer.cost(needed | set(sample.tolist())) > budget:
             return None
         finer.solve(needed)
         if finer.exceeded:
