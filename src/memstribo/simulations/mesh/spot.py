@@ -25,7 +25,8 @@ branch, :func:`memstribo.simulations.mesh.contacts._loading_branch`), and each s
 (the elastic interlocking energy of a step is that of the change since the step before), so the steps solved give the
 numbers the whole finer cycle has there (to the solver's tolerance; tests/test_convergence.py). The check is given up (None: the caller runs the whole finer
 cycle) for dissimilar teeth (the F_t/F_f fixed point couples the steps), for the surface contact, where a checked
-step's contact reaches the ends of its window, or where the steps needed exceed :data:`BUDGET` of the finer cycle.
+step's contact reaches the ends of its window, or where the steps needed exceed :data:`BUDGET` of the finer cycle
+(the margin's and the subsample's together, each step counted once).
 """
 
 from __future__ import annotations
