@@ -13,7 +13,9 @@ comparison the refined cycle makes first (481 -> 961 steps, 40 -> 80 elements ac
 parameter set of ``--sets`` and realisation: the changes of the margin and the mean COF both give, and the CPU time of
 each. ``refine`` runs the self-refining cycle (``memstribo mesh``) of each set; ``thesis --thesis-steps 481`` the
 whole thesis load case without the refinement (``memstribo mesh --load-case thesis --set face_width=8um
---no-refine``).
+--no-refine``); ``thesis-refined`` the same case with its refinement (``memstribo mesh --load-case thesis --set
+face_width=8um``) at each ``--thesis-across`` (mesh_elements_across_contact), with the CPU time of each whole cycle and
+each spot check of the chain.
 """
 
 from __future__ import annotations
