@@ -13,7 +13,9 @@ comparison the refined cycle makes first (481 -> 961 steps, 48 -> 96 elements ac
 parameter set of ``--sets`` and realisation: the changes of the margin and the mean COF both give, and the CPU time of
 each. ``refine`` runs the self-refining cycle (``memstribo mesh``) of each set; ``thesis --thesis-steps 481`` the
 whole thesis load case without the refinement (``memstribo mesh --load-case thesis --set face_width=8um
---no-refine``).
+--no-refine``); ``thesis-refined`` the same case with its refinement (``memstribo mesh --load-case thesis --set
+face_width=8um``) at each ``--thesis-across`` (mesh_elements_across_contact), with the CPU time of each whole cycle and
+each spot check of the chain.
 """
 
 from __future__ import annotations
@@ -46,11 +48,14 @@ def main(argv=None):
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--parts", nargs="+", default=["refine", "steps", "dissimilar"],
-                        choices=("refine", "steps", "grid", "adhesion", "dissimilar", "thesis", "spot"))
+                        choices=("refine", "steps", "grid", "adhesion", "dissimilar", "thesis", "thesis-refined",
+                                 "spot"))
     parser.add_argument("--sets", nargs="+", default=["silicon_thesis"],
                         help="parameter sets of the parts refine and spot")
     parser.add_argument("--realisations", nargs="+", type=int, default=[0, 1])
     parser.add_argument("--thesis-steps", type=int, default=25)
+    parser.add_argument("--thesis-across", nargs="+", type=int, default=[40, 48],
+                        help="mesh_elements_across_contact of the part thesis-refined")
     args = parser.parse_args(argv)
     params = parameter_set()
     default = int(params["mesh_elements_across_contact"])  # the default grid (48 elements across 2a)
@@ -131,6 +136,52 @@ def main(argv=None):
               elements=int(round(ds.attrs["window"] / ds.attrs["grid_spacing"])),
               updates_per_solve=float(ds["contact_iterations"].mean()),
               cpu_per_step_s=round(per_step, 3), cpu_481_steps_estimate_s=round(481 * per_step, 1), **t)
+
+    if "thesis-refined" in args.parts:  # memstribo mesh --load-case thesis --set face_width=8um (the refinement on)
+        for across in args.thesis_across:
+            p = params.updated({"load_case": "thesis", "face_width": 8e-6, "mesh_elements_across_contact": across})
+            with _parts_timed() as parts:
+                (_, s), t = _timed(lambda: refined_cycle(p))
+            _line("thesis-refined", elements_across_contact=across, converged=s["converged"], steps=s["steps"],
+                  elements_checked=s["elements_checked"], margin_mN=s["stiction_margin"] * 1e3,
+                  cof_mean=s["cof_mean"], adhesion_force_uN=s["adhesion_force_mean"] * 1e6, verdict=s["verdict"],
+                  refinement=s["refinement"], parts=parts, **t)
+
+
+class _parts_timed:
+    """The CPU time of each whole cycle and each spot check the refined cycle runs (a list of dicts)."""
+
+    def __enter__(self):
+        import memstribo.simulations.mesh.cycle as cycle
+        import memstribo.simulations.mesh.spot as spot
+
+        self.parts, self.modules = [], (cycle, spot)
+        self.saved = (cycle.simulate_mesh, spot.spot_check)
+        simulate, check = self.saved
+
+        def timed_simulate(params, *args, **kwargs):
+            start = time.process_time()
+            dataset = simulate(params, *args, **kwargs)
+            self.parts.append({"what": "cycle", "steps": kwargs.get("steps"),
+                               "across": int(params["mesh_elements_across_contact"]),
+                               "cpu_s": round(time.process_time() - start, 2)})
+            return dataset
+
+        def timed_check(dataset, params, roughness, steps, **kwargs):
+            start = time.process_time()
+            change = check(dataset, params, roughness, steps, **kwargs)
+            self.parts.append({"what": "spot check", "steps": steps,
+                               "across": int(params["mesh_elements_across_contact"]), "applied": change is not None, "passed": None if change is None else change["passed"],
+                               "solved": None if change is None else change["solved"],
+                               "cpu_s": round(time.process_time() - start, 2)})
+            return change
+
+        cycle.simulate_mesh, spot.spot_check = timed_simulate, timed_check
+        return self.parts
+
+    def __exit__(self, *exc):
+        self.modules[0].simulate_mesh, self.modules[1].spot_check = self.saved
+        return False
 
 
 if __name__ == "__main__":

@@ -372,3 +372,21 @@ def test_the_spot_check_of_a_margin_near_zero_checks_the_largest_resisting_force
     coarse.attrs["tangential_force_total"] = float(resisting.max()) * (1.0 + 1e-12)  # margin ~ 0
     spot = spot_check(coarse, params, None, 481)
     assert spot is not None and spot["positions_checked"] >= 1
+
+
+def test_the_spot_checks_budget_counts_each_step_it_solves_once(params, monkeypatch):
+    """The budget bounds the finer steps solved, each counted once: a step of the mean COF's subsample that the
+    margin's steps hold already costs nothing more (before, the subsample was counted in whole on top of the margin's
+    steps, and the grid check of the thesis load case on an 8 um face gave up at 167 steps of a budget of 168: issue
+    #25 item 5). The check applies with a budget of exactly the steps it solves, and gives up one step below."""
+    from memstribo.simulations.mesh import spot
+
+    coarse = simulate_mesh(params, steps=241)
+    full = spot.spot_check(coarse, params, None, 481)
+    assert full is not None
+    solved = full["solved"]
+    monkeypatch.setattr(spot, "BUDGET", solved / 481)
+    again = spot.spot_check(coarse, params, None, 481)
+    assert again is not None and again["solved"] == solved and again["margin"] == full["margin"]
+    monkeypatch.setattr(spot, "BUDGET", (solved - 1) / 481)
+    assert spot.spot_check(coarse, params, None, 481) is None
