@@ -154,9 +154,11 @@ def _with_fitted_constants(dataset, params, coating):
 
 
 #: Largest change of the stiction margin (of |margin|) and of the mean COF (of itself) between two passes of the
-#: friction fixed point of dissimilar teeth that counts as settled: well below the 2 % of the step and grid checks
-#: (issue #25).
-FIXED_POINT_TOLERANCE = 1e-3
+#: friction fixed point of dissimilar teeth that counts as settled: a quarter of the 2 % of the step and grid checks
+#: (issue #25). Not tighter: the passes' margin scatters by about +-0.5 % however many passes run (each pass starts
+#: from the last one's contact sets, and single steps' contacts flip between states; 20 GPa counter body, 48 elements
+#: across 2a: 0.3-1.3 % between passes 3 to 30), so 1e-3 was met or not by chance.
+FIXED_POINT_TOLERANCE = 5e-3
 
 
 def _friction_fixed_point(setup, params, coating, wear, modulus, beta, progress, warm_start):
