@@ -340,7 +340,11 @@ def test_limit_cycle_of_the_zone_is_damped(monkeypatch):
     assert sol.converged, sol.message
     assert sol.load == pytest.approx(kwargs["load"], rel=1e-9)
     assert np.all(sol.pressure >= -kwargs["cohesive_stress"] * (1 + 1e-12))
-    _tune(monkeypatch, stalled_updates=10**6)  # without the damping: the cycle
+    # with the Aitken extrapolation's former cap (0.95; the cap of 0.9 since issue #25 avoids this cycle,
+    # docs/interface.md) the damping settles it, and without the damping it cycles
+    _tune(monkeypatch, aitken_max_ratio=0.95)
+    assert solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs).converged
+    _tune(monkeypatch, stalled_updates=10**6)
     plain = solve_line_contact(case["separation"], float(case["dx"]), float(case["modulus"]), **kwargs)
     assert not plain.converged and "did not settle" in plain.message
 

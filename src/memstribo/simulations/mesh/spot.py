@@ -104,10 +104,15 @@ class _Finer:
     def solved(self) -> int:
         return self.solves
 
-    def cost(self, indices) -> int:
-        """Steps :meth:`solve` would solve for ``indices`` (those not known yet, each with the step before it)."""
+    def cost(self, indices, then=()) -> int:
+        """Steps :meth:`solve` would solve for ``indices`` (those not known yet, each with the step before it), and
+        then for ``then`` in a second call (a step of ``then`` right after one of ``indices`` is solved again with it:
+        a step's friction is known only where the step before it was solved in the same call)."""
         wanted = {int(i) for i in indices if math.isnan(self.friction[int(i)])}
-        return len(wanted | {i - 1 for i in wanted if i > 0})
+        first = wanted | {i - 1 for i in wanted if i > 0}
+        known = {i for i in first if i == 0 or i - 1 in first}
+        later = {int(i) for i in then if math.isnan(self.friction[int(i)]) and int(i) not in known}
+        return len(first) + len(later | {i - 1 for i in later if i > 0})
 
     def window_steps(self, b, distance):
         """The steps whose sliding intervals meet the averaging window of step b (the steps its average reads)."""
@@ -225,7 +230,7 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
         needed = _steps_for(finer, checked, distance)
         # the steps still to solve for the margin and for the mean COF's subsample (each step with the one before it;
         # a subsample step the margin's steps hold already costs nothing more)
-        if finer.solved() + finer.cost(needed | set(sample.tolist())) > budget:
+        if finer.solved() + finer.cost(needed, then=sample.tolist()) > budget:
             return None
         finer.solve(needed)
         if finer.exceeded:
