@@ -406,6 +406,15 @@ def test_smooth_teeth_with_adhesion_reproduce_the_maugis_dugdale_line_contact(pa
     """Flat roughness with the default Maugis-Dugdale zone in the contact solve (MODEL 7c): the contact width at
     each step is the closed-form Maugis-Dugdale line contact's 2a at that step's line load and radius (Baney & Hui
     1997), within two elements, and wider than Hertz's."""
+    thesis = params.updated({"load_case": "thesis"})
+    assert thesis["contact_adhesion"] == "maugis"
+    ds = _smooth_adhesive_cycle(thesis, steps=7)
+    assert (ds.contact_width.values > 2 * ds.hertz_half_width.values).all()
+
+
+def _smooth_adhesive_cycle(params, steps):
+    """The meshing cycle of flat teeth with the Maugis-Dugdale zone, each step's contact width checked against the
+    closed-form line contact's 2a (Baney & Hui 1997) at that step's line load and radius, within two elements."""
     from scipy.optimize import brentq
 
     from memstribo.physics.adhesion import nanoscale_constants
@@ -413,10 +422,8 @@ def test_smooth_teeth_with_adhesion_reproduce_the_maugis_dugdale_line_contact(pa
     from memstribo.surfaces.roughness import Profile
 
     flat = Profile(x=np.arange(6000) * 2e-9, z=np.zeros(6000), name="flat")
-    thesis = params.updated({"load_case": "thesis"})
-    assert thesis["contact_adhesion"] == "maugis"
-    ds = simulate_mesh(thesis, flat, steps=7)
-    constants = nanoscale_constants(thesis)
+    ds = simulate_mesh(params, flat, steps=steps)
+    constants = nanoscale_constants(params)
     w, sigma0 = float(constants.work_of_adhesion), float(constants.maugis_stress)
     modulus = ds.attrs["contact_modulus"]
     for i in range(ds.sizes["step"]):
@@ -425,7 +432,7 @@ def test_smooth_teeth_with_adhesion_reproduce_the_maugis_dugdale_line_contact(pa
         a = brentq(lambda a: float(maugis_dugdale_line_load(a, radius, modulus, w, sigma0)[0]) - line_load,
                    1e-10, 1e-6)
         assert float(ds.contact_width[i]) == pytest.approx(2 * a, abs=2 * ds.attrs["grid_spacing"]), i
-        assert float(ds.contact_width[i]) > 2 * float(ds.hertz_half_width[i])
+    return ds
 
 
 @pytest.mark.parametrize("across, steps", [(48, 25), (80, 13)])
@@ -435,23 +442,7 @@ def test_smooth_adhesive_teeth_stay_in_the_adhered_state_at_every_step(params, a
     issue #25's grid change) the extrapolation overshot into the small-contact state (a contact a third as wide
     under a zone three times wider, flagged converged) in 14 steps of 16 such cycles (40 to 80 elements across
     2a, 7 to 49 steps), among them one step of each case here; capped at 0.9, in none."""
-    from scipy.optimize import brentq
-
-    from memstribo.physics.adhesion import nanoscale_constants
-    from memstribo.physics.closed_form import maugis_dugdale_line_load
-    from memstribo.surfaces.roughness import Profile
-
-    flat = Profile(x=np.arange(6000) * 2e-9, z=np.zeros(6000), name="flat")
-    thesis = params.updated({"load_case": "thesis", "mesh_elements_across_contact": across})
-    ds = simulate_mesh(thesis, flat, steps=steps)
-    constants = nanoscale_constants(thesis)
-    w, sigma0 = float(constants.work_of_adhesion), float(constants.maugis_stress)
-    for i in range(ds.sizes["step"]):
-        line_load = float(ds.normal_force[i]) / ds.attrs["effective_face_width"]
-        radius = float(ds.effective_radius[i])
-        a = brentq(lambda a: float(maugis_dugdale_line_load(a, radius, ds.attrs["contact_modulus"], w, sigma0)[0])
-                   - line_load, 1e-10, 1e-6)
-        assert float(ds.contact_width[i]) == pytest.approx(2 * a, abs=2 * ds.attrs["grid_spacing"]), i
+    _smooth_adhesive_cycle(params.updated({"load_case": "thesis", "mesh_elements_across_contact": across}), steps)
 
 
 def test_adhesive_layer_one_rule_with_the_sliding_models(base):
