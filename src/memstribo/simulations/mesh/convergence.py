@@ -16,8 +16,10 @@ solved only at the steps the margin is taken from (its R(c) where R is largest: 
 assumption its docstring states) and on an evenly spaced subsample for the mean COF (an estimate, paired with the
 cycle at the same positions). A spot check that passes is the comparison: the cycle is kept (not replaced by the
 finer one, which is not computed) and the sentence in ``refinement`` says how many finer steps were solved. One that
-fails, or does not apply, costs about a fifth of the finer cycle and leads to the whole finer cycle, compared as
-before (issue #25: the default ``memstribo mesh`` 19 -> 4 s CPU, realisation 0; bench/bench_convergence.py).
+fails costs what it solved (a fifth to a third of the finer cycle on the default case, at most ``spot.BUDGET`` of it)
+and leads to the whole finer cycle, compared as before; one that does not apply (dissimilar teeth, the surface contact,
+over the budget) leads there at once (issue #25: the default ``memstribo mesh`` 19 -> 4 s CPU, realisation 0, then
+1.3 s at 48 elements across 2a; bench/bench_convergence.py).
 
 The reported adhesion force is checked on the grid too (< 5 % on grid halving, MODEL 7d); it
 does not decide the verdict (it enters the COF, which is checked), so it is reported as resolved
