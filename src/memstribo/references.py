@@ -312,6 +312,23 @@ REFERENCES: dict[str, str] = {
         "doi:10.1557/JMR.1997.0010"
     ),
     "tabor_1951": "D. Tabor, The Hardness of Metals, Clarendon Press, Oxford, 1951.",
+    "li_2011": (
+        "Q. Li, T. E. Tullis, D. Goldsby, R. W. Carpick, 'Frictional ageing from interfacial bonding and the origins "
+        "of rate and state friction', Nature 480 (2011) 233-236. doi:10.1038/nature10589"
+    ),
+    "tian_2020": (
+        "K. Tian, Z. Li, N. N. Gosvami, D. L. Goldsby, I. Szlufarska, R. W. Carpick, 'Linear aging behavior at short "
+        "timescales in nanoscale contacts', Phys. Rev. Lett. 124 (2020) 026801. doi:10.1103/PhysRevLett.124.026801"
+    ),
+    "prandtl_1928": (
+        "L. Prandtl, 'Ein Gedankenmodell zur kinetischen Theorie der festen Koerper', Z. Angew. Math. Mech. 8 (1928) "
+        "85-106; G. A. Tomlinson, 'A molecular theory of friction', Phil. Mag. 7 (1929) 905-939; the threshold "
+        "eta = 4 pi^2 U0 / (k a^2) as in A. Socoliuc et al., Phys. Rev. Lett. 92 (2004) 134301."
+    ),
+    "buckingham_1949": (
+        "E. Buckingham, Analytical Mechanics of Gears, McGraw-Hill, 1949 (Dover reprint 1988), ch. 18: friction "
+        "forces and moments of involute teeth, sliding velocity proportional to the distance from the pitch point."
+    ),
     "roundy_cohen_2001": (
         "D. Roundy, M. L. Cohen, 'Ideal strength of diamond, Si, and Ge', Phys. Rev. B 64 (2001) 212103. "
         "doi:10.1103/PhysRevB.64.212103"
