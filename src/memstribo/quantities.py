@@ -129,14 +129,26 @@ _ENTRIES = [
      "against the ideal shear strength of silicon (MODEL 7c)"),
     ("max_contact_pressure", "Pa", "largest contact pressure", "largest element pressure of the rough contact"),
     # --- what the verdict hangs on (MODEL 7d, issue #26) --------------------------------------------------------
-    ("static_friction_force", "N", "start-up friction force", "the force that starts a pair at rest: the peak lateral "
-     "force of its bonds, every bond formed (peak_bond_force, 2.69 x the kinetic force), plus its elastic and "
-     "capillary friction; never below the kinetic friction force"),
-    ("startup_resisting_force", "N", "start-up resisting force", "R(c) at start-up: the start-up friction forces of "
-     "every pair in mesh when one pair rests at c"),
+    ("static_friction_force", "N", "start-up friction force", "the force that starts a pair at rest (MODEL 7f): the "
+     "largest, over the sliding offset, of its rows' bond forces at their registries (each bond's lateral law, peak "
+     "1.27 U / D), times the share formed after the dwell, plus its elastic and capillary friction"),
+    ("startup_resisting_force", "N", "start-up resisting force", "R_s(c): the start-up torque balance as a force at the "
+     "pinion's pitch radius, the load torque and every pair in mesh with its friction's moment arm (the flanks' radii "
+     "of curvature; MODEL 7f)"),
+    ("bonds_chemical_row", "1", "chemical bonds per row", "chemical bonds of each nanoblock row (3-10)"),
+    ("bonds_vdw_bare_row", "1", "vdW bonds over bare gear blocks per row", "vdW bonds of each row over bare gear blocks "
+     "(3-12)"),
+    ("bonds_vdw_coated_row", "1", "vdW bonds over coated gear blocks per row", "vdW bonds of each row over coated gear "
+     "blocks (3-12)"),
+    ("row", "1", "nanoblock row", "index of the nanoblock row across the face width"),
+    ("bond_phase", "1", "bond phase of the row", "each row's phase in its bonds' renewal period at rest (the lattice "
+     "registry, MODEL 7d, 7f)"),
+    ("load_torque", "N m", "load torque on the gear at start-up", "load torque of the start-up torque balance (MODEL 7f)"),
+    ("startup_formed_share", "1", "share of bonds formed at rest", "the logarithmic ageing law after startup_dwell "
+     "(1: every bond; MODEL 7f)"),
     ("static_cof", "1", "start-up COF", "start-up friction force / (F_N + F_adh) of the pair"),
-    ("startup_margin", "N", "start-up margin", "F_t - max R(c) at start-up (negative: the gear cannot start; "
-     "MODEL 7d); never above stiction_margin"),
+    ("startup_margin", "N", "start-up margin", "F_t - max R_s(c) (negative: the gear cannot start; "
+     "MODEL 7f)"),
     ("startup_stiction_probability", "1", "start-up stiction probability", "fraction of roughness realisations "
      "whose gear cannot start from rest (MODEL 7d)"),
     ("startup_stiction", _TEXT, "start-up stiction", "true where the start-up resisting force exceeds F_t somewhere"),

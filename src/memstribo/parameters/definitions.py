@@ -373,9 +373,22 @@ _SPECS = [
     _range("startup_dwell", "s", "Dwell of the teeth at rest before start-up (the start-up verdict); unset: long "
            "enough for every bond to form", 0.0, 1e9, "no negative time; up to 30 years at rest", optional=True,
            exclusive_minimum=False),
-    _range("bond_formation_time", "s", "Time constant of bond formation at rest: a share 1 - exp(-dwell / time) of "
-           "the bonds has formed after a dwell; 0: bonds form on contact (thesis 3.5)", 0.0, 1e9,
-           "no negative time; up to 30 years", exclusive_minimum=False),
+    _range("ageing_onset_time", "s", "Onset time t_c of the bonds' ageing at rest: ln(1 + dwell / t_c) / "
+           "ln(1 + t_full / t_c) of the bonds has formed after a dwell (linear below t_c, logarithmic above; MODEL 7f)",
+           1e-6, 1e6, "a microsecond to 11 days",
+           prior={"distribution": "loguniform", "bounds": (0.01, 1.0),
+                  "source": "silica nanocontacts age linearly from 5 to 90 ms (Tian et al. 2020) and logarithmically "
+                            "from 0.1 to 100 s (Li et al. 2011)",
+                  "reason": "the crossover between the two measured regimes, a decade each way of 0.1 s"}),
+    _range("ageing_full_time", "s", "Dwell t_full after which every bond has formed (the logarithmic ageing law's "
+           "normalisation; MODEL 7f)", 1e-3, 1e9, "a millisecond to 30 years",
+           prior={"distribution": "loguniform", "bounds": (1e2, 1e5),
+                  "source": "Li et al. 2011: the static friction of silica nanocontacts still grows logarithmically at "
+                            "100 s, without saturating",
+                  "reason": "no saturation measured: from the longest measured hold (100 s) to a day"}),
+    _range("load_torque", "N m", "Load torque on the driven gear at start-up (the start-up torque balance, MODEL 7f); "
+           "0: the whole drive torque is free to overcome friction, as in the running verdict", 0.0, 1e-3,
+           "no negative torque; up to 1 mN m, beyond any microgear", exclusive_minimum=False),
     _range("hardness", "Pa", "Indentation hardness of the teeth: the rough contact's pressure is capped at it "
            "(elastic-perfectly-plastic; MODEL 7d); unset (--set hardness=unset): no cap (purely elastic, the thesis); "
            "at most 6 times "

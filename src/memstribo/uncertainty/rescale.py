@@ -154,7 +154,16 @@ def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[d
     # the start-up verdict (peak instantaneous force at rest, MODEL 7d) is not rescaled yet: its keys would be the
     # nominal energies' (stale), so they are blanked; its per-mechanism peak forces would make it rescalable
     # the tooth's strength and temperature follow the nominal friction force too: blanked likewise
-    stale = [key for key in base if key.startswith("startup") or key in TOOTH_LIFE_KEYS]
+    # the start-up verdict is rescaled from the rows' bond counts (MODEL 7f; startup_from_dataset), where the dataset
+    # has them; its ensemble keys and the tooth's strength and temperature (which follow the nominal friction force)
+    # are blanked
+    from memstribo.simulations.mesh.limits import startup_from_dataset
+
+    rescaled_startup = {"startup_margin", "startup_stiction", "static_cof_max", "startup_margin_capped",
+                        "stiction_mode", "stiction_mode_capped"}
+    startup_known = startup_from_dataset(dataset, params_nominal, _energies(dataset, params_nominal, {})) is not None
+    stale = [key for key in base if (key.startswith("startup") and not (startup_known and key in rescaled_startup))
+             or key in TOOTH_LIFE_KEYS]
     out = []
     for overrides in overrides_list:
         f_chem, f_vdw = _bond_friction(dataset, params_nominal, overrides)
@@ -181,11 +190,38 @@ def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[d
             **{k: float(v.sum()) for k, v in energy.items()},
             "rescaled": True,
         })
+        if startup_known:
+            startup = startup_from_dataset(dataset, params_nominal, _energies(dataset, params_nominal, overrides))
+            capped_margin = summary.get("stiction_margin_capped")
+            summary.update(startup)
+            summary["stiction_mode"] = "running" if margin < 0 else ("start-up" if startup["startup_margin"] < 0
+                                                                      else "none")
+            if capped_margin is not None:  # the running capped margin is the nominal's (not rescaled): kept as it was
+                summary["stiction_mode_capped"] = ("running" if capped_margin < 0 else
+                                                   "start-up" if startup["startup_margin_capped"] < 0 else "none")
+        if summary.get("verdict") not in (None, "undetermined"):  # the rescaled set's own verdict word
+            mode = summary.get("stiction_mode")
+            summary["verdict"] = ("running stiction" if margin < 0 else "start-up stiction" if mode == "start-up"
+                                  else "no stiction")
         for key in stale:
             summary[key] = None
         summary["not_rescaled"] = list(stale)
         out.append(summary)
     return out
+
+
+def _energies(dataset, params_nominal, overrides) -> list[float]:
+    """U_chem, U_vdW (bare) and the coating's U_vdW [J] of a set (:func:`memstribo.simulations.mesh.limits.bond_energies`
+    order), the nominal where a set does not override them."""
+    u_chem = float(overrides.get("bond_energy", params_nominal["bond_energy"]))
+    u_vdw = float(overrides.get("vdw_bond_energy", params_nominal["vdw_bond_energy"]))
+    u_coat = 0.0
+    if _coated(dataset):
+        from memstribo.physics.coating import get_coating
+
+        u_coat = float(overrides.get("coating_vdw_bond_energy", params_nominal["coating_vdw_bond_energy"]
+                                     or get_coating(dataset.attrs["coating"]).vdw_bond_energy))
+    return [u_chem, u_vdw, u_coat]
 
 
 def _bond_friction(dataset, params_nominal, overrides):

@@ -76,7 +76,7 @@ def simulate_mesh(params, roughness=None, *, steps=None, coating=None, wear=1.0,
     setup, cycle = _sized_cycle(setup, params, roughness, steps, realisation, sliding_axis,  # the steps, in a
                                 coating, wear, modulus, beta, progress, warm_start)         # window that holds them
     verdict = cycle_verdict(params, setup, cycle)                                   # forces, margin, efficiency
-    apply_limits(params, setup, cycle, verdict)                                     # start-up, local limits
+    apply_limits(params, setup, cycle, verdict, coating)                            # start-up, local limits
     dataset = cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, realisation, sliding_axis)
     dataset = _with_the_elastic_margins(dataset, params, roughness, steps, coating, wear, realisation, sliding_axis)
     dataset = with_tooth_life(dataset, params, coating)                             # root stress, temperature

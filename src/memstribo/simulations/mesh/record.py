@@ -27,8 +27,14 @@ def cycle_dataset(params, setup, cycle, verdict, modulus, beta, coating, wear, r
         data["bonds_vdw_bare"] = var("bonds_vdw_bare", cycle["out"]["vdw_bonds_bare"])
         data["bonds_vdw_coated"] = var("bonds_vdw_coated", cycle["out"]["vdw_bonds_coated"])
     data["block_load"] = var("block_load", block_load, dims=("step", "block"))
+    # each row's bond counts: the start-up force from the rows' registries, and its rescaling by bond energy (MODEL 7f)
+    for name, counts in zip(("bonds_chemical_row", "bonds_vdw_bare_row", "bonds_vdw_coated_row"),
+                            cycle["out"]["row_bonds"]):
+        data[name] = var(name, counts, dims=("step", "row"))
+    data["bond_phase"] = var("bond_phase", verdict["limits"]["bond_phases"], dims=("row",))
     coords = {
         "step": ("step", step, quantity_attrs("step")),
+        "row": ("row", np.arange(cycle["out"]["row_bonds"].shape[-1]), quantity_attrs("row")),
         "c": ("step", setup.positions, quantity_attrs("c")),
         # the position along the line of action, for plots over the path of contact (step stays the index)
         "position": ("step", setup.positions, quantity_attrs("position")),
@@ -180,6 +186,8 @@ def _attributes(params, setup, cycle, verdict, modulus, beta, coating, wear, rea
         "ideal_shear_strength": params["ideal_shear_strength"],
         "hardness": float(params["hardness"]) if params["hardness"] is not None else float("nan"),
         "lattice_registry": params["lattice_registry"],
+        "load_torque": float(params["load_torque"]),
+        "startup_formed_share": float(verdict["limits"]["formed_share"]),
         "friction_share_rigid": verdict["limits"]["share_rigid"],
         "friction_share_overstrength": verdict["limits"]["share_overstrength"],
         "plastic_elements": float(cycle["out"]["plastic_elements"].sum()),

@@ -120,12 +120,16 @@ class LatticeRegistry:
         gear's lattice turned by theta_r in the plane of the flank (a square lattice: |theta| <= 45 deg).
     mode : str
         ``random`` or ``shared``.
+    bond_phase : ndarray
+        Each row's phase in the renewal period of its bonds (one bond length of sliding) at rest [-], in [0, 1): the
+        atomic registry of the two crystals the row's bonds join (MODEL 7f). 0 for every row where ``shared``.
     """
 
     pinion_phase: np.ndarray
     gear_phase: np.ndarray
     gear_pitch_scale: np.ndarray
     mode: str
+    bond_phase: np.ndarray = None
 
 
 #: Stream of the seed sequence that draws the lattice registry, apart from the roughness lines' (so 'shared' leaves
@@ -141,7 +145,8 @@ def lattice_registry(params, rows: int, realisation: int = 0) -> LatticeRegistry
     uniform in [0, w_adh) and the gear's is turned by an angle uniform in [-45, 45] deg (all orientations of a
     square lattice), which stretches its atomic pitch along the sliding direction by 1 / cos(theta). The draws
     come from the seed sequence (``roughness_seed``, realisation, 26), apart from the roughness lines' stream.
-    ``'shared'``: no shift, no turn: every row in the registry of a commensurate single-crystal contact.
+    Each row's bonds also sit at a phase of their renewal period uniform in [0, 1) (the start-up force, MODEL 7f).
+    ``'shared'``: no shift, no turn, phase 0: every row in the registry of a commensurate single-crystal contact.
 
     Parameters
     ----------
@@ -157,13 +162,14 @@ def lattice_registry(params, rows: int, realisation: int = 0) -> LatticeRegistry
     LatticeRegistry
     """
     if params["lattice_registry"] == "shared":
-        return LatticeRegistry(np.zeros(rows), np.zeros(rows), np.ones(rows), "shared")
+        return LatticeRegistry(np.zeros(rows), np.zeros(rows), np.ones(rows), "shared", np.zeros(rows))
     rng = np.random.default_rng(np.random.SeedSequence([int(params["roughness_seed"]), int(realisation),
                                                         _REGISTRY_STREAM]))
     w_adh = float(params["adhesive_width"])
     pinion, gear = rng.random(rows) * w_adh, rng.random(rows) * w_adh
     theta = rng.uniform(-0.25 * math.pi, 0.25 * math.pi, rows)
-    return LatticeRegistry(pinion, gear, 1.0 / np.cos(theta), "random")
+    bond_phase = rng.random(rows)  # drawn last: the phases and turns above stay as they were (version 3)
+    return LatticeRegistry(pinion, gear, 1.0 / np.cos(theta), "random", bond_phase)
 
 
 def _positions(pair: GearPair, steps: int) -> np.ndarray:

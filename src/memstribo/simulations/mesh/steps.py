@@ -29,9 +29,13 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
 
         pbar = tqdm(total=n_steps * n_rows_solved, desc="meshing cycle", unit="step", leave=False)
     out = {key: np.zeros(n_steps) for key in _TOTALS}
+    # each row's bond counts (chemical, vdW over bare and over coated gear blocks): the start-up force takes the
+    # maximum over the sliding offset of the rows' bond forces at their registries (MODEL 7f)
+    out["row_bonds"] = np.zeros((3, n_steps, n_rows_solved))
     block_loads = []
     strip = _surface_strip(setup, params, modulus, beta, kinematics, pbar)
     for row in range(n_rows_solved):
+        before = [out[key].copy() for key in _ROW_BOND_KEYS[coating is not None]]
         pressure, gap, info, zone = _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row,
                                                  strip, pbar, warm_start)
         _record_solve(out, ctx, pressure, gap, info, n_rows_solved)
@@ -42,6 +46,8 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
         _chemical_bonds(out, ctx, setup, flank_states, bare2, row)
         inside, w_x, k1_at_x = _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row)
         _interlocking_energy(out, ctx, (k1, k2), flank_states, kinematics["sliding_fraction"])
+        for kind, (key, start) in enumerate(zip(_ROW_BOND_KEYS[coating is not None], before)):
+            out["row_bonds"][kind, :, row] = out[key] - start
         if ctx.with_cohesive_zone:  # the attraction is the contact solve's tensile traction over the row
             out["f_adh"] += _attraction(pressure, gap, info, zone, ctx)
             continue
@@ -73,12 +79,17 @@ def _attraction(pressure, gap, info, zone, ctx):
     return np.maximum(-pressure, 0.0).sum(axis=1) * ctx.dx * ctx.w_adh
 
 
+#: The totals whose change over a row gives that row's (chemical, bare-vdW, coated-vdW) bond counts, bare and coated.
+_ROW_BOND_KEYS = {False: ("chem_bonds", "vdw_bonds", "_none"), True: ("chem_bonds", "vdw_bonds_bare",
+                                                                      "vdw_bonds_coated")}
+
 #: The per-step totals of a cycle, summed over the rows.
 _TOTALS = ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh", "contact_width", "max_pressure",
            "unconverged", "residual", "iterations", "window_exceeded", "approach", "rigid_atomic_blocks", "vdw_edge",
-           "f_cap", "f_cap_adh", "wetted", "f_chem_rigid", "f_vdw_capped", "f_vdw_over", "f_vdw_static_capped",
+           "f_cap", "f_cap_adh", "wetted", "f_chem_rigid", "f_vdw_capped", "f_vdw_over",
            "plastic_elements", "contact_elements", "f_cap_pull", "bridged", "f_cap_bridge",
-           "vdw_bonds_bare", "vdw_bonds_coated")  # vdW bonds over bare / coated gear blocks (rescaling, issue 27)
+           "vdw_bonds_bare", "vdw_bonds_coated",  # vdW bonds over bare / coated gear blocks (rescaling, issue 27)
+           "_none")  # stays zero: an uncoated gear's coated-vdW bonds per row
 
 
 def _kinematics(setup):
@@ -134,9 +145,6 @@ def _context(setup, params, coating, wear, modulus):
         ctx.w_coat, ctx.u_vdw_coat = float(coating.work_of_adhesion), float(coating.vdw_bond_energy)
     ctx.c_ns = float(no_slip_coefficient(params["poisson_ratio"]))
     ctx.ideal_shear = float(params["ideal_shear_strength"])
-    from memstribo.physics import friction
-
-    ctx.peak_ratio = float(friction.peak_bond_force(1.0, 1.0, ctx.bond)) * ctx.bond  # start-up / kinetic, per bond
     ctx.humid = params["environment"] == "air"
     if ctx.humid:
         from memstribo.physics import capillary
@@ -416,7 +424,6 @@ def _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row):
     strongest = ctx.ideal_shear * w_adh * dx
     out["f_vdw_capped"] += np.minimum(per_element, strongest).sum(axis=1)
     out["f_vdw_over"] += np.where(per_element > strongest, per_element, 0.0).sum(axis=1)
-    out["f_vdw_static_capped"] += np.minimum(ctx.peak_ratio * per_element, strongest).sum(axis=1)
     if ctx.humid:  # capillary menisci where the gap is below the condensation height (docs/humidity.md)
         _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x, _vdw_work_in_f_adh(ctx, pressure, gap, inside, w_x))
     return inside, w_x, k1_at_x
