@@ -42,45 +42,82 @@ def test_peak_bond_force_is_the_largest_slope_of_the_lennard_jones_bond():
     assert friction.peak_bond_force(7.0, u, d) == pytest.approx(7 * written, rel=1e-12)
 
 
-def _one_block_cycle(bonds, params):
-    """A cycle of three rest positions whose middle one holds a single block with ``bonds`` chemical bonds."""
+def _one_block_cycle(bonds, params, rows=1, phases=None, rho=(4e-6, 20e-6)):
+    """A cycle of three rest positions whose middle one holds ``bonds`` chemical bonds in each of ``rows`` rows (at
+    ``phases``), one pair in mesh at the radii of curvature ``rho``."""
     u, d = params["bond_energy"], params["bond_length"]
-    f_chem = np.array([0.0, bonds * u / d, 0.0])  # its kinetic force (3-1, 3.5)
     zeros = np.zeros(3)
+    row_bonds = np.zeros((3, 3, rows))
+    row_bonds[0, 1, :] = bonds
+    f_chem = row_bonds[0].sum(axis=1) * u / d  # its kinetic force (3-1, 3.5)
     out = {"f_chem": f_chem, "f_vdw": zeros, "f_cap": zeros, "f_vdw_capped": zeros, "f_vdw_over": zeros,
-           "f_vdw_static_capped": zeros, "f_chem_rigid": zeros}
-    pair = SimpleNamespace(first_contact=-1.0, last_contact=1.0, base_pitch=10.0)  # one pair in mesh
-    setup = SimpleNamespace(pair=pair, positions=np.array([-1.0, 0.0, 1.0]))
+           "f_chem_rigid": zeros, "row_bonds": row_bonds}
+    rb1, rb2, rw1 = 10e-6, 40e-6, 11e-6
+    pair = SimpleNamespace(first_contact=-1.0, last_contact=1.0, base_pitch=10.0, base_radii=np.array([rb1, rb2]),
+                           pitch_radii=np.array([rw1, 4 * rw1]),
+                           radii_of_curvature=lambda c: (np.full(np.shape(c), rho[0]), np.full(np.shape(c), rho[1])))
+    registry = SimpleNamespace(bond_phase=np.zeros(rows) if phases is None else np.asarray(phases))
+    setup = SimpleNamespace(pair=pair, positions=np.array([-1.0, 0.0, 1.0]), registry=registry)
     cycle = {"out": out, "f_el": zeros, "kin": {"sliding": np.ones(3)}}
     verdict = {"friction_avg": f_chem / 3, "averaging": 1.0, "energy": f_chem}
-    return startup_and_limits(params, setup, cycle, verdict)
+    return startup_and_limits(params, setup, cycle, verdict), (rb1, rb2, rw1, rho)
 
 
-def test_a_single_block_starts_at_the_peak_force_of_its_bonds(params):
-    """One block with N chemical bonds at rest, every bond formed: the drive must pull N bonds past the peak of the
-    LJ law, N (24 U / sigma) (7/26)^(7/6) (12/26); after a dwell of one formation time, 1 - 1/e of them."""
+def test_a_single_block_starts_at_the_lateral_peak_of_its_bonds_through_its_moment_arm(params):
+    """One row of N chemical bonds at rest, every bond formed: the bonds, sheared sideways, resist with N times the
+    lateral peak of the 12-6 law (1.2687 U / D, not the axial 2.69 U / D); the drive torque needed is that force times
+    r_b1 |rho1 / r_b1 - rho2 / r_b2| (the rigid-body balance), as a force at the pitch radius."""
     n = 1000.0
     u, d = params["bond_energy"], params["bond_length"]
-    peak = n * 24 * u / (d * 2 ** (-1 / 6)) * (7 / 26) ** (7 / 6) * (12 / 26)
-    limits = _one_block_cycle(n, params)
-    assert limits["static"][1] == pytest.approx(peak, rel=1e-12)
-    assert limits["startup_resisting"][1] == pytest.approx(peak, rel=1e-12)
-    assert np.all(limits["static"] >= np.array([0.0, n * u / d, 0.0]) / 3)  # never below the kinetic force
-    dwelt = params.updated({"startup_dwell": 2e-3, "bond_formation_time": 2e-3})
-    assert formed_share(dwelt) == pytest.approx(1 - math.exp(-1))
-    assert _one_block_cycle(n, dwelt)["static"][1] == pytest.approx((1 - math.exp(-1)) * peak, rel=1e-12)
-    assert formed_share(params.updated({"startup_dwell": 0.0, "bond_formation_time": 1.0})) == 0.0
+    limits, (rb1, rb2, rw1, (rho1, rho2)) = _one_block_cycle(n, params)
+    peak = n * 1.2686660 * u / d
+    assert limits["static"][1] == pytest.approx(peak, rel=1e-6)
+    assert limits["startup_resisting"][1] == pytest.approx(peak * rb1 * abs(rho1 / rb1 - rho2 / rb2) / rw1, rel=1e-6)
+    # a load torque on the gear adds T_L r_b1 / (r_b2 r_w1) at every rest position
+    loaded, _ = _one_block_cycle(n, params.updated({"load_torque": 1e-9}))
+    np.testing.assert_allclose(loaded["startup_resisting"] - limits["startup_resisting"], 1e-9 * rb1 / (rb2 * rw1))
+    # after a dwell, the logarithmic ageing share of them (Li et al. 2011)
+    dwelt = params.updated({"startup_dwell": 1.0, "ageing_onset_time": 0.1, "ageing_full_time": 1000.0})
+    share = math.log1p(10.0) / math.log1p(1e4)
+    assert formed_share(dwelt) == pytest.approx(share)
+    assert _one_block_cycle(n, dwelt)[0]["static"][1] == pytest.approx(share * peak, rel=1e-12)
+    assert formed_share(params.updated({"startup_dwell": 0.0})) == 0.0
+    assert formed_share(params) == 1.0  # unset: every bond formed
 
 
-def test_the_start_up_margin_is_never_above_the_running_one(default_cycle):
+def test_rows_out_of_phase_start_more_easily_than_rows_in_phase(params):
+    """Ten rows of equal bond populations: in phase (a shared registry) 10 peaks; at random phases less, never
+    below the mean over the offset."""
+    from memstribo.physics.static_friction import bond_lateral_mean
+
+    n, u, d = 500.0, params["bond_energy"], params["bond_length"]
+    shared, _ = _one_block_cycle(n, params, rows=10)
+    random, _ = _one_block_cycle(n, params, rows=10, phases=np.random.default_rng(4).random(10))
+    assert shared["static"][1] == pytest.approx(10 * n * 1.2686660 * u / d, rel=1e-6)
+    assert 10 * n * bond_lateral_mean() * u / d <= random["static"][1] < 0.8 * shared["static"][1]
+
+
+def test_start_up_against_the_running_verdict(default_cycle):
     _, ds = default_cycle
     summary = summarize(ds)
-    assert np.all(ds.startup_resisting_force.values >= ds.resisting_force.values)
-    assert summary["startup_margin"] <= summary["stiction_margin"]
-    assert summary["static_cof_max"] >= float(ds.cof.max())
     assert summary["stiction_mode"] == stiction_mode(summary["stiction_margin"], summary["startup_margin"])
     assert summary["startup_stiction"] == (summary["startup_margin"] < 0)
     assert summary["stiction"] == (summary["stiction_margin"] < 0)  # the running verdict keeps its names
+    # the start-up force of a pair never exceeds its rows' bonds all at their lateral peak, plus the rest
+    peak = 1.2686660 * (ds.friction_force_chemical + ds.friction_force_vdw) + ds.friction_force_elastic
+    assert np.all(ds.static_friction_force.values <= peak.values * (1 + 1e-9) + 1e-15)
+    assert {"bonds_chemical_row", "bonds_vdw_bare_row", "bond_phase"} <= set(ds.variables)
+    np.testing.assert_allclose(ds.bonds_chemical_row.sum("row"), ds.bonds_chemical, rtol=1e-12)
+
+
+def test_a_shared_registry_starts_no_more_easily_than_a_random_one(params):
+    """MODEL 7f, issue #35 done-when: --set lattice_registry=shared gives a start-up force at least as large as
+    random (the rows' bond forces in phase add their peaks)."""
+    random = summarize(simulate_mesh(params, steps=41))
+    shared = summarize(simulate_mesh(params.updated({"lattice_registry": "shared"}), steps=41))
+    r_random = random["tangential_force"] - random["startup_margin"]
+    r_shared = shared["tangential_force"] - shared["startup_margin"]
+    assert r_shared >= r_random
 
 
 def test_stiction_mode_names_the_verdict_that_fails():
@@ -226,7 +263,10 @@ def test_the_window_sizes_itself_to_hold_the_contact(params, afm_dir):
 @pytest.mark.parametrize("change, message", [
     ({"hardness": "50 GPa"}, "hardness .* above what the ideal shear strength allows"),
     ({"startup_dwell": -1.0}, "startup_dwell.*outside its range"),
-    ({"bond_formation_time": "-1 s"}, "bond_formation_time.*outside its range"),
+    ({"ageing_onset_time": "-1 s"}, "ageing_onset_time.*outside its range"),
+    ({"ageing_full_time": 0.0}, "ageing_full_time.*outside its range"),
+    ({"load_torque": "-1 nN m"}, "load_torque.*outside its range"),
+    ({"load_torque": 1.0}, "load_torque.*outside its range"),
     ({"lattice_registry": "aligned"}, "lattice_registry"),
 ])
 def test_bad_options_are_refused(params, change, message):
@@ -241,10 +281,13 @@ def test_a_bad_hardness_is_refused_by_the_solver():
 
 
 def test_the_start_up_verdict_calls_the_bond_law(params, monkeypatch):
-    """The start-up force is the published relation's (friction.peak_bond_force): replacing it changes the verdict."""
+    """The start-up force is the published relation's (static_friction.population_static_force): replacing it
+    changes the verdict."""
+    from memstribo.physics import static_friction
+
     before = summarize(simulate_mesh(params, steps=11))["startup_margin"]
-    real = friction.peak_bond_force
-    monkeypatch.setattr(friction, "peak_bond_force", lambda *a, **k: 2.0 * np.asarray(real(*a, **k)))
+    real = static_friction.population_static_force
+    monkeypatch.setattr(static_friction, "population_static_force", lambda *a, **k: 2.0 * np.asarray(real(*a, **k)))
     after = summarize(simulate_mesh(params, steps=11))["startup_margin"]
     assert after < before
 

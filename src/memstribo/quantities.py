@@ -207,6 +207,19 @@ _ENTRIES = [
     ("undetermined_reason", _TEXT, "why undetermined", "why the cycle gives no verdict (empty when it gives one)"),
     ("step_change_cof", "1", "change of the COF with the steps", "relative change of the mean COF when the steps are "
      "doubled"),
+    ("step_change_startup", "1", "change of the start-up margin with the steps", "relative change of the start-up "
+     "margin when the steps are doubled (of |margin|; MODEL 7h)"),
+    ("grid_change_startup", "1", "change of the start-up margin with the grid", "relative change of the start-up "
+     "margin when the grid's resolution is doubled (of |margin|; MODEL 7h)"),
+    ("step_margin_bound", _TEXT, "bound of the step check", "which bound decided the margin's step check: 'margin' "
+     "(2 % of |margin|) or 'resisting force' (0.5 % of it; MODEL 7h)"),
+    ("grid_margin_bound", _TEXT, "bound of the grid check", "which bound decided the margin's grid check (MODEL 7h)"),
+    ("step_startup_bound", _TEXT, "bound of the start-up step check", "which bound decided the start-up margin's step "
+     "check (MODEL 7h)"),
+    ("grid_startup_bound", _TEXT, "bound of the start-up grid check", "which bound decided the start-up margin's grid "
+     "check (MODEL 7h)"),
+    ("margin_bound", _TEXT, "bound of the margin check", "which bound decided the margin's check (MODEL 7h)"),
+    ("startup_bound", _TEXT, "bound of the start-up check", "which bound decided the start-up margin's check"),
     ("steps_checked", "1", "steps of the check", "steps of the finer cycle of the step-convergence check"),
     ("realisations", "1", "roughness realisations", "independent roughness realisations of the ensemble"),
     ("area_multiple", "1", "multiple of the nominal contact area", "apparent contact area over the default "

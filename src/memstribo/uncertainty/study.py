@@ -190,23 +190,23 @@ def _client_of(client):
     return Client(client), True
 
 
-def _probability(summaries, confidence):
-    """Count, estimate and interval of P(stiction); samples that share a cycle (``cycle_id``: a grouped design,
-    fixed solve constants) widen it by their design effect
-    (:func:`memstribo.uncertainty.intervals.clustered_interval`)."""
+def _probability(summaries, confidence, key="stiction"):
+    """Count, estimate and interval of P(stiction) (``key``: ``stiction``, the running verdict, or
+    ``startup_stiction``); samples that share a cycle (``cycle_id``: a grouped design, fixed solve constants) widen it
+    by their design effect (:func:`memstribo.uncertainty.intervals.clustered_interval`)."""
     from memstribo.uncertainty.intervals import binomial_interval, clustered_interval, format_probability
 
     n = len(summaries)
     failed = sum(1 for s in summaries if s.get("failed"))
-    k = sum(1 for s in summaries if not s.get("failed") and s["stiction"])
+    k = sum(1 for s in summaries if not s.get("failed") and s[key])
     clusters = [s.get("cycle_id") for s in summaries]
     deff = 1.0
     if None in clusters or len(set(clusters)) == n:
         low = binomial_interval(k, n, confidence)[0]
         high = binomial_interval(k + failed, n, confidence)[1]  # a failed point may stick or not: both covered
     else:
-        low_flags = [bool(not s.get("failed") and s["stiction"]) for s in summaries]
-        high_flags = [bool(s.get("failed") or s["stiction"]) for s in summaries]
+        low_flags = [bool(not s.get("failed") and s[key]) for s in summaries]
+        high_flags = [bool(s.get("failed") or s[key]) for s in summaries]
         below, above = clustered_interval(low_flags, clusters, confidence), \
             clustered_interval(high_flags, clusters, confidence)
         low, high = below["ci"][0], above["ci"][1]
@@ -555,8 +555,18 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
         "failed_samples": p_all["failed"] + p_nom["failed"],
         "failures": sorted({s["error"] for s in summaries + nominal if s.get("failed")})[:10],
     }
-    if any("startup_margin" in s for s in ok):
-        result["startup_margin_quantiles"] = _quantiles([s.get("startup_margin") for s in ok])
+    if ok and all(s.get("startup_margin") is not None for s in summaries + nominal if not s.get("failed")):
+        # the start-up verdict over the priors, like the running one (MODEL 7f, issue #35)
+        result["startup_margin_quantiles"] = _quantiles([s["startup_margin"] for s in ok])
+        s_all = _probability(summaries, confidence, "startup_stiction")
+        s_nom = _probability(nominal, confidence, "startup_stiction")
+        result.update({
+            "startup_stiction_probability": s_all["probability"], "startup_stiction_probability_ci": s_all["ci"],
+            "startup_stiction_count": s_all["count"], "startup_stiction_probability_text": s_all["text"],
+            "startup_stiction_probability_nominal": s_nom["probability"],
+            "startup_stiction_probability_nominal_ci": s_nom["ci"],
+            "startup_stiction_count_nominal": s_nom["count"],
+            "startup_stiction_probability_nominal_text": s_nom["text"]})
     result.update(sensitivity={}, dominant=None, critical_curve=None, designer_sentence="")
     return result
 
@@ -601,14 +611,14 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
     dominant = constants_ranked[0]
     result["dominant"] = dominant
 
-    def margin_function(name):
+    def margin_function(name, key="stiction_margin"):
         cache = {}
         reals = R if name in runner.rescalable() else min(R, 8)
 
         def median_margin(x):
             if x not in cache:
                 out = runner.summaries([(r, {name: x}) for r in range(reals)])
-                values = [s["stiction_margin"] for s in out if not s.get("failed")]
+                values = [s[key] for s in out if not s.get("failed") and s.get(key) is not None]
                 cache[x] = float(np.median(values)) if values else float("nan")
             return cache[x]
         return median_margin, reals
@@ -624,6 +634,11 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         entry["critical_value"] = found["critical_value"]
         entry["stiction_above"] = found["stiction_above"]
         entry["note"] = found["note"] + f" (median over {reals} realisations, others nominal)"
+        if "startup_margin_quantiles" in result:  # where the median start-up margin crosses zero (MODEL 7f)
+            function, _ = margin_function(name, "startup_margin")
+            found = critical_value(function, sampled[name])
+            entry["startup_critical_value"] = found["critical_value"]
+            entry["startup_stiction_above"] = found["stiction_above"]
     nominal_value = float(params[dominant]) if dominant in params and params[dominant] is not None else \
         _coating_nominal(dominant, coating_name)
     result["designer_sentence"] = designer_sentence(dominant, sensitivity[dominant], sampled[dominant], nominal_value)

@@ -43,7 +43,8 @@ ADHESION_TOLERANCE = 0.05
 CONVERGENCE_KEYS = ("converged", "step_converged", "step_change_margin", "step_change_margin_ft", "step_change_cof",
                     "steps_checked", "grid_converged", "grid_change_margin", "grid_change_cof",
                     "grid_change_adhesion", "elements_checked", "adhesion_force_resolved",
-                    "elements_across_contact", "refinement")
+                    "elements_across_contact", "refinement", "step_margin_bound", "step_change_startup",
+                    "step_startup_bound", "grid_margin_bound", "grid_change_startup", "grid_startup_bound")
 
 
 def _elements_across(params) -> int:
@@ -163,6 +164,13 @@ def _spot(state, params, steps):
     return change if change is not None and change["passed"] else None
 
 
+def _startup_words(change) -> str:
+    """The start-up margin's change in a refinement's sentence, where it was checked."""
+    if change.get("startup") is None:
+        return ""
+    return f", start-up margin {_percent(change['startup'])} of |margin| (bound: {change['startup_bound']})"
+
+
 def _refine_steps(state, run, cap):
     """Steps first: N -> 2N - 1 (the same positions and one between each pair) until a comparison passes."""
     record = state["record"]
@@ -176,9 +184,11 @@ def _refine_steps(state, run, cap):
             dataset, fine = run(state["params"], finer)
             change, how = compare_cycles(fine, state["summary"]), ""
         state["sentences"].append(f"steps {steps} -> {finer}: margin {_percent(change['margin'])} of |margin|, mean "
-                                  f"COF {_percent(change['cof'])}{how}")
+                                  f"COF {_percent(change['cof'])}{_startup_words(change)}{how}")
         record.update(step_converged=change["passed"], step_change_margin=change["margin"],
-                      step_change_margin_ft=change["margin_ft"], step_change_cof=change["cof"], steps_checked=finer)
+                      step_change_margin_ft=change["margin_ft"], step_change_cof=change["cof"], steps_checked=finer,
+                      step_margin_bound=change.get("margin_bound"), step_change_startup=change.get("startup"),
+                      step_startup_bound=change.get("startup_bound"))
         if spotted is not None:
             return  # passed: the cycle is kept
         state.update(dataset=dataset, summary=fine, steps=finer)
@@ -208,9 +218,12 @@ def _refine_grid(state, run, cap):
                 if current["mesh_grid_spacing"] is None else
                 f"grid spacing {current['mesh_grid_spacing']:.3g} -> {finer['mesh_grid_spacing']:.3g} m")
         state["sentences"].append(f"{what}: margin {_percent(change['margin'])} of |margin|, mean COF "
-                                  f"{_percent(change['cof'])}, adhesion force {_percent(change['adhesion'])}{how}")
+                                  f"{_percent(change['cof'])}, adhesion force {_percent(change['adhesion'])}"
+                                  f"{_startup_words(change)}{how}")
         record.update(grid_converged=change["passed"], grid_change_margin=change["margin"],
                       grid_change_cof=change["cof"], grid_change_adhesion=change["adhesion"],
+                      grid_margin_bound=change.get("margin_bound"), grid_change_startup=change.get("startup"),
+                      grid_startup_bound=change.get("startup_bound"),
                       elements_checked=_elements_across(finer),
                       adhesion_force_resolved=bool(change["adhesion"] < ADHESION_TOLERANCE))
         if spotted is not None:
@@ -277,7 +290,9 @@ def check_cycle(params, roughness=None, *, steps=None, coating=None, wear=1.0, r
     step = spotted.get("step") or compare_cycles(run(params, 2 * steps - 1), baseline)
     grid = spotted.get("grid") or compare_cycles(run(_finer_grid(params), steps), baseline)
     return {"converged": bool(step["passed"] and grid["passed"]), "step_change_margin": step["margin"],
-            "step_change_cof": step["cof"], "grid_change_margin": grid["margin"], "grid_change_cof": grid["cof"]}
+            "step_change_cof": step["cof"], "grid_change_margin": grid["margin"], "grid_change_cof": grid["cof"],
+            "step_change_startup": step.get("startup"), "grid_change_startup": grid.get("startup"),
+            "margin_bound": step.get("margin_bound"), "startup_bound": step.get("startup_bound")}
 
 
 def run_check(params, roughness=None, *, steps=None, baseline=None, dataset=None) -> dict:

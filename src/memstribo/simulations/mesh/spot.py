@@ -37,7 +37,7 @@ import math
 import numpy as np
 
 from memstribo.references import cites
-from memstribo.simulations.mesh.verdict import TOLERANCE, relative_change, sliding_average
+from memstribo.simulations.mesh.verdict import TOLERANCE, margin_check, relative_change, sliding_average
 
 __all__ = ["spot_check", "COF_SAMPLES", "BUDGET"]
 
@@ -73,6 +73,7 @@ class _Finer:
         self.positions = self.setup.positions
         self.edges = np.concatenate([[0.0], np.cumsum(self.sliding)])
         self.friction = np.full(steps, np.nan)
+        self.static = np.full(steps, np.nan)  # the start-up friction force of each step (MODEL 7f)
         self.denominator = np.full(steps, np.nan)
         self.adhesion = np.full(steps, np.nan)
         self.exceeded = False
@@ -97,9 +98,22 @@ class _Finer:
         out = cycle["out"]
         known = np.concatenate([[indices[0] == 0], np.diff(indices) == 1])  # the step before was solved with it
         self.friction[indices[known]] = cycle["friction"][known]
+        self.static[indices[known]] = self._static(part, cycle)[known]
         self.adhesion[indices] = out["f_adh"]
         self.denominator[indices] = part.load + out["f_adh"]
         self.exceeded = self.exceeded or bool((out["window_exceeded"] > 0).any())
+
+    def _static(self, part, cycle):
+        """The start-up friction force of the solved steps [N] (:func:`memstribo.simulations.mesh.limits`)."""
+        from memstribo.simulations.mesh import limits
+
+        out, params = cycle["out"], self.params
+        registry = part.registry
+        rows = out["row_bonds"].shape[-1]
+        phases = registry.bond_phase if registry is not None and registry.bond_phase is not None else np.zeros(rows)
+        forces = limits.row_bond_forces(out["row_bonds"], limits.bond_energies(params, self.coating),
+                                        params["bond_length"])
+        return limits.static_friction_force(forces, phases, limits.formed_share(params), cycle["f_el"] + out["f_cap"])
 
     def solved(self) -> int:
         return self.solves
@@ -181,6 +195,53 @@ def _resisting(finer, i, distance, cache):
     return total
 
 
+def _startup_steps(finer, checked):
+    """The steps the finer start-up R_s at the positions ``checked`` reads (no averaging: each position's own)."""
+    needed = set()
+    for i in checked:
+        for other in _partners(finer.setup.pair, float(finer.positions[i])):
+            needed.update(b for b, _ in _brackets(finer.positions, other))
+    return needed
+
+
+def _startup_resisting(finer, i):
+    """R_s at the finer position i from the solved steps [N] (the start-up torque balance,
+    :func:`memstribo.simulations.mesh.limits.startup_resisting_force`)."""
+    from memstribo.physics.static_friction import friction_lever
+
+    pair = finer.setup.pair
+    rb1, rb2 = (float(r) for r in pair.base_radii)
+    total = 0.0
+    for other in _partners(pair, float(finer.positions[i])):
+        rho1, rho2 = pair.radii_of_curvature(min(max(other, pair.first_contact), pair.last_contact))
+        static = sum(weight * finer.static[b] for b, weight in _brackets(finer.positions, other))
+        total += static * float(friction_lever(float(rho1), float(rho2), rb1, rb2))
+    return (float(finer.params["load_torque"]) / rb2 + total) * rb1 / float(pair.pitch_radii[0])
+
+
+def _startup_margin(finer, dataset, f_t, budget):
+    """The finer cycle's start-up margin from the steps where the coarse R_s is near its largest [N], the band
+    widened as for the running margin; None where the steps needed exceed ``budget`` or reach the window's ends."""
+    coarse = np.interp(finer.positions, np.asarray(dataset["position"]), np.asarray(dataset["startup_resisting_force"]))
+    largest = float(coarse.max())
+    checked = set(np.flatnonzero(coarse >= largest - TOLERANCE * abs(f_t - largest)).tolist())
+    checked.add(int(np.argmax(coarse)))
+    for _ in range(_ROUNDS):
+        needed = _startup_steps(finer, checked)
+        if finer.solved() + finer.cost(needed) > budget:
+            return None
+        finer.solve(needed)
+        if finer.exceeded:
+            return None
+        fine = {i: _startup_resisting(finer, i) for i in checked}
+        delta = max(abs(fine[i] - coarse[i]) for i in checked)
+        required = set(np.flatnonzero(coarse >= max(fine.values()) - 2.0 * delta).tolist())
+        if required <= checked:
+            return f_t - max(fine.values())
+        checked |= required
+    return None
+
+
 @cites("model")
 def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, realisation=0) -> dict | None:
     """The changes of the margin and the mean COF from a cycle to a finer one, from the finer steps that decide them.
@@ -260,9 +321,22 @@ def spot_check(dataset, params, roughness, steps, *, coating=None, wear=1.0, rea
     coarse_cof = float((coarse_f * s).sum() / (coarse_d * s).sum())
     weights = finer.setup.step_time[sample]
     cof = relative_change(fine_cof, coarse_cof)
-    margin_change = relative_change(fine_margin, margin)
-    return {"margin": margin_change, "margin_ft": abs(fine_margin - margin) / max(abs(f_t), 1e-300), "cof": cof,
-            "adhesion": relative_change(float((finer.adhesion[sample] * weights).sum()),
-                                        float((coarse_adh * weights).sum())),
-            "passed": bool(margin_change < TOLERANCE and cof < TOLERANCE), "solved": finer.solved(), "steps": int(steps),
-            "positions_checked": len(checked), "stiction_margin": fine_margin}
+    running = margin_check(fine_margin, margin, r_max)
+    result = {"margin": running["change"], "margin_ft": abs(fine_margin - margin) / max(abs(f_t), 1e-300), "cof": cof,
+              "margin_bound": running["bound"],
+              "adhesion": relative_change(float((finer.adhesion[sample] * weights).sum()),
+                                          float((coarse_adh * weights).sum())),
+              "solved": finer.solved(), "steps": int(steps), "positions_checked": len(checked),
+              "stiction_margin": fine_margin}
+    passed = running["passed"] and cof < TOLERANCE
+    if "startup_resisting_force" in dataset:  # the start-up margin is checked as well (MODEL 7h, issue #35)
+        coarse_startup = f_t - float(np.max(dataset["startup_resisting_force"]))
+        fine_startup = _startup_margin(finer, dataset, f_t, budget)
+        if fine_startup is None:
+            return None
+        startup = margin_check(fine_startup, coarse_startup, f_t - coarse_startup)
+        result.update(startup=startup["change"], startup_bound=startup["bound"], startup_margin=fine_startup,
+                      solved=finer.solved())
+        passed = passed and startup["passed"]
+    result["passed"] = bool(passed)
+    return result

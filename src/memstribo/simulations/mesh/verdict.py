@@ -316,9 +316,13 @@ def _limit_summary(dataset, f_t, margin) -> dict:
     return summary
 
 
-# --- convergence on what is decided (MODEL 7d, issue #25) ------------------------------------------------
+# --- convergence on what is decided (MODEL 7d, 7h; issues #25, #35, #38) ----------------------------------------
 #: Largest relative change of the margin (of |margin|) and of the mean COF (of itself) that counts as converged.
 TOLERANCE = 0.02
+
+#: A margin near zero passes where its change stays below this share of the resisting force it is the difference of
+#: (MODEL 7h: 2 % of itself or 0.5 % of the resisting force, whichever is larger), with its sign kept.
+RESISTING_TOLERANCE = 0.005
 
 
 def relative_change(new: float, old: float) -> float:
@@ -330,6 +334,21 @@ def relative_change(new: float, old: float) -> float:
     return 0.0 if change == 0.0 else float("inf")
 
 
+def margin_check(fine: float, coarse: float, resisting: float) -> dict:
+    """Whether a margin has converged on the decision (MODEL 7h): its sign kept and its change below 2 % of |margin|
+    or 0.5 % of the resisting force (``resisting`` [N], the coarse cycle's), whichever is larger.
+
+    Returns ``change`` (of |coarse| [-]), ``change_of_resisting`` [-], ``bound`` (``"margin"`` or ``"resisting force"``:
+    which bound applied), ``sign_kept`` and ``passed``."""
+    change = abs(float(fine) - float(coarse))
+    by_margin, by_resisting = TOLERANCE * abs(float(coarse)), RESISTING_TOLERANCE * abs(float(resisting))
+    sign_kept = (fine < 0) == (coarse < 0)
+    return {"change": relative_change(fine, coarse),
+            "change_of_resisting": change / abs(float(resisting)) if resisting else float("inf"),
+            "bound": "margin" if by_margin >= by_resisting else "resisting force", "sign_kept": bool(sign_kept),
+            "passed": bool(sign_kept and change < max(by_margin, by_resisting))}
+
+
 def compare_cycles(fine: dict, coarse: dict) -> dict:
     """The changes between two cycles' summaries (:func:`memstribo.simulations.mesh.summarize`).
 
@@ -337,12 +356,22 @@ def compare_cycles(fine: dict, coarse: dict) -> dict:
     -------
     dict
         ``margin`` (of |margin| of ``coarse``), ``margin_ft`` (of F_t), ``cof`` (of the coarse mean COF),
-        ``adhesion`` (of the coarse mean adhesion force), all [-], and ``passed`` (margin and COF below
-        :data:`TOLERANCE`).
+        ``adhesion`` (of the coarse mean adhesion force), all [-]; ``margin_bound`` (which bound of
+        :func:`margin_check` applied); where both have the start-up verdict, ``startup`` (its margin's change, of
+        |margin|) and ``startup_bound``; ``passed``: each margin by :func:`margin_check` and the COF below
+        :data:`TOLERANCE`.
     """
-    margin = relative_change(fine["stiction_margin"], coarse["stiction_margin"])
+    running = margin_check(fine["stiction_margin"], coarse["stiction_margin"], coarse["resisting_force_max"])
     margin_ft = abs(fine["stiction_margin"] - coarse["stiction_margin"]) / max(abs(coarse["tangential_force"]), 1e-300)
     cof = relative_change(fine["cof_mean"], coarse["cof_mean"])
     adhesion = relative_change(fine["adhesion_force_mean"], coarse["adhesion_force_mean"])
-    return {"margin": margin, "margin_ft": margin_ft, "cof": cof, "adhesion": adhesion,
-            "passed": bool(margin < TOLERANCE and cof < TOLERANCE)}
+    out = {"margin": running["change"], "margin_ft": margin_ft, "cof": cof, "adhesion": adhesion,
+           "margin_bound": running["bound"]}
+    passed = running["passed"] and cof < TOLERANCE
+    if fine.get("startup_margin") is not None and coarse.get("startup_margin") is not None:
+        startup = margin_check(fine["startup_margin"], coarse["startup_margin"],
+                               coarse["tangential_force"] - coarse["startup_margin"])
+        out.update(startup=startup["change"], startup_bound=startup["bound"])
+        passed = passed and startup["passed"]
+    out["passed"] = bool(passed)
+    return out
