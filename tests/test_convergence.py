@@ -306,6 +306,10 @@ def test_the_spot_check_gives_the_finer_cycles_margin(params, finer):
     assert spot["margin"] == pytest.approx(relative_change(fine["stiction_margin"], coarse["stiction_margin"]),
                                            rel=1e-6)
     assert abs(spot["cof"] - relative_change(fine["cof_mean"], coarse["cof_mean"])) < TOLERANCE
+    # the start-up margin too (MODEL 7h, issue #35): the finer R_s where the coarse one is largest
+    assert spot["startup_margin"] == pytest.approx(fine["startup_margin"], rel=1e-9)
+    assert spot["startup"] == pytest.approx(relative_change(fine["startup_margin"], coarse["startup_margin"]),
+                                            rel=1e-6)
 
 
 def test_a_passed_spot_check_keeps_the_cycle_and_a_failed_one_runs_the_finer(params, monkeypatch):
@@ -390,3 +394,22 @@ def test_the_spot_checks_budget_counts_each_step_it_solves_once(params, monkeypa
     assert again is not None and again["solved"] == solved and again["margin"] == full["margin"]
     monkeypatch.setattr(spot, "BUDGET", (solved - 1) / 481)
     assert spot.spot_check(coarse, params, None, 481) is None
+
+
+def test_a_margin_near_zero_converges_on_the_decision():
+    """MODEL 7h: a margin passes when it keeps its sign and moves < 2 % of itself or 0.5 % of its resisting force,
+    whichever is larger; the check says which bound applied, and the start-up margin is checked alike."""
+    from memstribo.simulations.mesh.verdict import margin_check
+
+    near = margin_check(1.2e-5, 1.0e-5, 2.8e-3)  # 20 % of itself, 0.07 % of R: passes by the resisting force
+    assert near["passed"] and near["bound"] == "resisting force"
+    assert not margin_check(-0.5e-5, 0.5e-5, 2.8e-3)["passed"]  # the sign flipped
+    far = margin_check(0.97e-3, 1.0e-3, 1.8e-3)
+    assert not far["passed"] and far["bound"] == "margin"
+    base = {"stiction_margin": 1.0e-3, "cof_mean": 0.5, "adhesion_force_mean": 1e-5, "tangential_force": 2.8e-3,
+            "startup_margin": 2.0e-3}
+    fine = dict(base, startup_margin=1.9e-3)  # 5 % of itself, 12.5 % of R_s = 0.8 mN: fails
+    change = compare_cycles(fine, base)
+    assert change["startup"] == pytest.approx(0.05) and change["startup_bound"] == "margin"
+    assert change["passed"] is False
+    assert compare_cycles(dict(base, startup_margin=1.99e-3), base)["passed"] is True

@@ -171,3 +171,21 @@ def test_validate_lab_command_prints_every_row_with_registered_keys(cli, monkeyp
     assert all(("median" in r) == (r["status"] == "predicted") and ("reason" in r) != ("median" in r)
                for r in out["laboratory_rows"])
     assert set(out) - {"warnings"} <= set(QUANTITIES)
+
+
+def test_static_rows_are_predicted_with_the_start_up_force(params):
+    """MODEL 7f / issue #35 item 6: a static row reads the structure's start-up force (its bonds at their lateral
+    peak, 1.2687 U / D, in one registry, plus the elastic friction) over F_N + F_adh, averaged over the rest
+    positions; a kinetic row the kinetic COF."""
+    from memstribo.laboratory.predict import _profile, static_cof
+    from memstribo.simulations import sliding
+
+    profile = _profile(1.6e-9, 60e-9, 2.4e-6, 3)
+    slid = sliding.slide_fixed_load(params, profile, load=2e-6, distance=0.2e-6)
+    bonds = slid.friction_force_chemical + slid.friction_force_vdw
+    expected = ((1.2686660 * bonds + slid.friction_force_elastic) / (slid.normal_force + slid.adhesion_force)).mean()
+    assert static_cof(slid, params) == pytest.approx(float(expected), rel=1e-6)
+    kinetic = sliding.summarize(slid).cof_mean
+    assert static_cof(slid, params) != pytest.approx(kinetic, rel=1e-3)
+    # after a short dwell fewer bonds have formed: a lower static COF
+    assert static_cof(slid, params.updated({"startup_dwell": 0.01})) < static_cof(slid, params)

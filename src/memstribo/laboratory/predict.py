@@ -23,7 +23,8 @@ import numpy as np
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["Prediction", "predict_row", "predict_all", "band", "row_values", "FRICTION", "SLIDE_DISTANCE"]
+__all__ = ["Prediction", "predict_row", "predict_all", "band", "row_values", "static_cof", "FRICTION",
+           "SLIDE_DISTANCE"]
 
 FRICTION = ("static_cof", "kinetic_cof")
 #: sliding distance of a friction case [m] and the length of its synthetic profile [m]
@@ -191,18 +192,41 @@ def _friction_values(row, samples, realisations, calibration_coating, seed):
                 else:
                     rq, corr = rough[0], rough[1]
                 profiles[k] = _profile(rq, corr, PROFILE_LENGTH, seed + k)
-            summary = sliding.summarize(sliding.slide_fixed_load(params, profiles[k], load=load,
-                                                                distance=SLIDE_DISTANCE))
-            values[i, k] = summary.cof_mean
+            slid = sliding.slide_fixed_load(params, profiles[k], load=load, distance=SLIDE_DISTANCE)
+            values[i, k] = (static_cof(slid, params) if row.quantity == "static_cof"
+                            else sliding.summarize(slid).cof_mean)
         if not case:
             note = "roughness: the parameter set's (the thesis's statistics; the source states none)" if rough is None \
                 else f"roughness Rq {rough[0] * 1e9:.3g} nm, correlation length {rough[1] * 1e9:.3g} nm ({rough[2]})"
             case = (f"fixed-load sliding structure ({int(params['slider_blocks'])} nanoblocks) over a synthetic profile, "
                     f"{set_name}{' + ' + row.coating + ' (U_chem off)' if row.coating else ''}, nominal pressure "
                     f"{pressure:.3g} Pa -> load {load:.3g} N on the structure; {note}; "
-                    + ("static friction read as the model COF (it has no separate static friction)"
+                    + ("static COF: the start-up force of the structure's bonds at rest (one crystal registry: "
+                       "their lateral peak, 1.27 U / D, MODEL 7f) plus its elastic friction, over F_N + F_adh, "
+                       "averaged over the rest positions of the slide"
                        if row.quantity == "static_cof" else "kinetic COF = cof_mean"))
     return values, case
+
+
+@cites("model")
+def static_cof(dataset, params) -> float:
+    """Static COF of a sliding structure [-]: the start-up force at each rest position of a slide over F_N + F_adh,
+    averaged over the rest positions (MODEL 7f: the same static force as the gear's start-up).
+
+    The structure's nanoblocks are one crystal registry (a grain is larger than the 2-block structure): its bonds'
+    forces N U / D add their lateral peaks in phase
+    (:func:`memstribo.simulations.mesh.limits.static_friction_force`, the formed share of the ageing law after
+    ``startup_dwell``), plus the elastic interlocking friction as in sliding.
+    """
+    from memstribo.simulations.mesh.limits import formed_share, static_friction_force
+
+    bonds = (np.asarray(dataset["friction_force_chemical"], dtype=float)
+             + np.asarray(dataset["friction_force_vdw"], dtype=float))
+    static = static_friction_force(bonds[:, None], np.zeros(1), formed_share(params),
+                                   np.asarray(dataset["friction_force_elastic"], dtype=float))
+    pressing = np.asarray(dataset["normal_force"], dtype=float) + np.asarray(dataset["adhesion_force"], dtype=float)
+    ratio = np.divide(static, pressing, out=np.zeros_like(static), where=pressing > 0)
+    return float(ratio.mean())
 
 
 @cites("maugis_1992", "israelachvili_2011")

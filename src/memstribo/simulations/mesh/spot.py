@@ -37,7 +37,8 @@ import math
 import numpy as np
 
 from memstribo.references import cites
-from memstribo.simulations.mesh.verdict import TOLERANCE, margin_check, relative_change, sliding_average
+from memstribo.simulations.mesh.verdict import (RESISTING_TOLERANCE, TOLERANCE, margin_check, relative_change,
+                                                sliding_average)
 
 __all__ = ["spot_check", "COF_SAMPLES", "BUDGET"]
 
@@ -224,7 +225,8 @@ def _startup_margin(finer, dataset, f_t, budget):
     widened as for the running margin; None where the steps needed exceed ``budget`` or reach the window's ends."""
     coarse = np.interp(finer.positions, np.asarray(dataset["position"]), np.asarray(dataset["startup_resisting_force"]))
     largest = float(coarse.max())
-    checked = set(np.flatnonzero(coarse >= largest - TOLERANCE * abs(f_t - largest)).tolist())
+    # a narrow first band (R_s is flat near its largest, and the widening below adds what the change requires)
+    checked = set(np.flatnonzero(coarse >= largest * (1.0 - RESISTING_TOLERANCE)).tolist())
     checked.add(int(np.argmax(coarse)))
     for _ in range(_ROUNDS):
         needed = _startup_steps(finer, checked)

@@ -361,7 +361,8 @@ def compare_cycles(fine: dict, coarse: dict) -> dict:
         |margin|) and ``startup_bound``; ``passed``: each margin by :func:`margin_check` and the COF below
         :data:`TOLERANCE`.
     """
-    running = margin_check(fine["stiction_margin"], coarse["stiction_margin"], coarse["resisting_force_max"])
+    running = margin_check(fine["stiction_margin"], coarse["stiction_margin"],
+                           coarse["tangential_force"] - coarse["stiction_margin"])  # R = F_t - margin
     margin_ft = abs(fine["stiction_margin"] - coarse["stiction_margin"]) / max(abs(coarse["tangential_force"]), 1e-300)
     cof = relative_change(fine["cof_mean"], coarse["cof_mean"])
     adhesion = relative_change(fine["adhesion_force_mean"], coarse["adhesion_force_mean"])
