@@ -1,0 +1,94 @@
+"""Round four of the bad inputs (issue #41, "Files read with the wrong geometry, silently"): one test per
+instrument-file case. Each broken file is the shipped file edited in place (same length, so every offset
+still holds) or a small synthetic file; each must be refused with a message naming the file, the
+contradiction and what is allowed."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from memstribo.errors import DataFileError
+from memstribo.surfaces.readers import read_height_array, read_topography
+
+from conftest import AFM
+from test_hardening3 import write_gwy
+
+pytestmark = pytest.mark.filterwarnings("ignore:Function/property:DeprecationWarning")
+
+IBW = "IgorIBWReader_P0089OP0027.ibw"
+
+
+def _edited(tmp_path, name, old, new, count=1, start=0):
+    """The shipped file ``name`` with the ``count`` first occurrences of ``old`` after byte ``start``
+    replaced by ``new`` (same length: no offset of the file moves)."""
+    assert len(old) == len(new)
+    data = (AFM / name).read_bytes()
+    head, tail = data[:start], data[start:]
+    assert tail.count(old) >= count, (name, old)
+    path = tmp_path / name
+    path.write_bytes(head + tail.replace(old, new, count))
+    return path
+
+
+# --- Asylum .ibw: the note against the wave ------------------------------------------------------------
+
+def test_ibw_note_scan_points_contradicting_the_wave_is_refused(tmp_path):
+    # the note says 512 points per line, the wave holds 256: a pixel of 2 um / 512 would halve every length
+    path = _edited(tmp_path, IBW, b"\rScanPoints: 256", b"\rScanPoints: 512")
+    with pytest.raises(DataFileError, match=r"IgorIBWReader.*ScanPoints: 512.*256.*points per line") as err:
+        read_topography(path)
+    assert "equal" in str(err.value)  # what is allowed
+
+
+def test_ibw_note_scan_lines_contradicting_the_wave_is_refused(tmp_path):
+    path = _edited(tmp_path, IBW, b"\rScanLines: 256", b"\rScanLines: 128")
+    with pytest.raises(DataFileError, match=r"IgorIBWReader.*ScanLines: 128.*256.*lines"):
+        read_topography(path)
+
+
+@pytest.mark.parametrize("value", [b"NaN  ", b"inf  ", b"-2e-6", b"0    "])
+def test_ibw_note_scan_size_not_finite_is_refused_without_printing_nan(tmp_path, value):
+    path = _edited(tmp_path, IBW, b"\rFastScanSize: 2e-06", b"\rFastScanSize: " + value)
+    with pytest.raises(DataFileError, match=r"IgorIBWReader.*FastScanSize.*not a positive finite length") as err:
+        read_topography(path)
+    assert "dx nan" not in str(err.value) and "nan m" not in str(err.value)
+
+
+def test_ibw_shipped_note_still_gives_scan_size_over_points(tmp_path):
+    surface = read_topography(AFM / IBW)
+    assert surface.dx == pytest.approx(2e-6 / 256, rel=1e-12) and surface.shape == (256, 256)
+
+
+# --- NanoScope: the image section's line counts against its data block ------------------------------------
+
+def _image_section(name="di-3.di"):
+    """Byte offset of the first image section's header (after the global scan list)."""
+    return (AFM / name).read_bytes().index(b"\\*Ciao image list")
+
+
+@pytest.mark.parametrize("old,new,what", [
+    (b"\\Samps/line: 256", b"\\Samps/line: 999", r"Samps/line 999"),
+    (b"\\Number of lines: 256", b"\\Number of lines: 128", r"Number of lines 128"),
+])
+def test_nanoscope_line_counts_contradicting_the_data_block_are_refused(tmp_path, old, new, what):
+    # SurfaceTopography took the global 256 x 256 and scaled the 10 um scan size by 256/999 (2.56 um) or
+    # 256/128 (20 um): a map read with the wrong geometry
+    path = _edited(tmp_path, "di-3.di", old, new, start=_image_section())
+    with pytest.raises(DataFileError, match=rf"di-3\.di.*{what}.*131,?072 bytes") as err:
+        read_topography(path)
+    assert "256 x 256" in str(err.value)
+
+
+def test_nanoscope_shipped_file_reads_its_ten_micrometres():
+    surface = read_topography(AFM / "di-3.di")
+    assert surface.physical_sizes == pytest.approx((10e-6, 10e-6), rel=1e-12)
+
+
+# --- Gwyddion: negative sizes ----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("which", ["xreal", "yreal"])
+def test_gwyddion_negative_scan_size_is_refused(tmp_path, which):
+    write_gwy(tmp_path / "neg.gwy", **{which: -1e-6})
+    with pytest.raises(DataFileError, match=rf"neg\.gwy.*-1e-06 \({which}\).*not a positive length.*negative"):
+        read_topography(tmp_path / "neg.gwy")
