@@ -92,3 +92,53 @@ def test_gwyddion_negative_scan_size_is_refused(tmp_path, which):
     write_gwy(tmp_path / "neg.gwy", **{which: -1e-6})
     with pytest.raises(DataFileError, match=rf"neg\.gwy.*-1e-06 \({which}\).*not a positive length.*negative"):
         read_topography(tmp_path / "neg.gwy")
+
+
+# --- text: column order and digits -------------------------------------------------------------------------
+
+def _text_profile(n=64, seed=1):
+    rng = np.random.default_rng(seed)
+    return np.arange(n) * 0.01, rng.normal(0.0, 2.0, n)  # x in um, z in nm
+
+
+@pytest.mark.parametrize("header", ["z [nm], x [um]", "# height (nm)  position (um)", "Height nm, X um",
+                                    "z, x"])
+def test_text_header_naming_the_height_first_is_refused(tmp_path, header):
+    x, z = _text_profile()
+    path = tmp_path / "swapped.csv"
+    # the data are x then z: read by column position, x took the height's unit and z the position's
+    # (x in nm, heights in um, a 1000-fold error both ways) without a word
+    rows = "\n".join(f"{a:.6g}, {b:.6g}" for a, b in zip(x, z))
+    path.write_text(header + "\n" + rows + "\n")
+    with pytest.raises(DataFileError, match=r"swapped\.csv.*names the height.*first.*x .*first"):
+        read_topography(path, unit="um" if header == "z, x" else None)  # unit-less columns need --unit
+
+
+def test_text_header_in_the_usual_order_still_reads(tmp_path):
+    x, z = _text_profile()
+    path = tmp_path / "ok.csv"
+    path.write_text("x [um], z [nm]\n" + "\n".join(f"{a:.6g}, {b:.6g}" for a, b in zip(x, z)) + "\n")
+    profile = read_topography(path)
+    assert profile.z == pytest.approx(np.asarray([float(f"{b:.6g}") for b in z]) * 1e-9)
+
+
+@pytest.mark.parametrize("digits", [
+    str.maketrans("0123456789", "\uff10\uff11\uff12\uff13\uff14\uff15\uff16\uff17\uff18\uff19"),  # full width
+    str.maketrans("0123456789", "\u0660\u0661\u0662\u0663\u0664\u0665\u0666\u0667\u0668\u0669"),  # Arabic-Indic
+], ids=["full-width", "arabic-indic"])
+def test_text_with_non_ascii_digits_is_refused(tmp_path, digits):
+    x, z = _text_profile()
+    rows = [f"{a:.6g} {b:.6g}" for a, b in zip(x, z)]
+    rows[5] = rows[5].translate(digits)
+    path = tmp_path / "digits.txt"
+    path.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    with pytest.raises(DataFileError, match=r"digits\.txt.*line 6.*non-ASCII digit.*U\+0?(FF1|66).*0-9"):
+        read_topography(path, unit="um")
+
+
+def test_header_export_with_non_ascii_digits_is_refused(tmp_path):
+    text = (AFM / "topography_in_nanometers.txt").read_text(encoding="utf-8", errors="strict")
+    path = tmp_path / "export.txt"
+    path.write_text(text.replace("Image Width : 128", "Image Width : \uff11\uff12\uff18", 1), encoding="utf-8")
+    with pytest.raises(DataFileError, match=r"export\.txt.*non-ASCII digit"):
+        read_topography(path)
