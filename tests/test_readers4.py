@@ -142,3 +142,48 @@ def test_header_export_with_non_ascii_digits_is_refused(tmp_path):
     path.write_text(text.replace("Image Width : 128", "Image Width : \uff11\uff12\uff18", 1), encoding="utf-8")
     with pytest.raises(DataFileError, match=r"export\.txt.*non-ASCII digit"):
         read_topography(path)
+
+
+# --- .npy maps: float16, constant, all zero ----------------------------------------------------------------
+
+def _rough(n=16, rq=1e-9, seed=2):
+    return np.random.default_rng(seed).normal(0.0, rq, (n, n))
+
+
+def test_npy_map_float16_is_refused(tmp_path):
+    path = tmp_path / "half.npy"
+    np.save(path, _rough().astype(np.float16))  # 1 nm heights in metres: float16 holds them as 0 or 6e-8 steps
+    with pytest.raises(DataFileError, match=r"half\.npy.*float16.*float32 or float64"):
+        read_height_array(path)
+
+
+def test_npy_profile_float16_is_refused(tmp_path):
+    path = tmp_path / "half.npy"
+    np.save(path, np.column_stack([np.arange(50) * 10.0, np.random.default_rng(1).normal(0, 2, 50)])
+            .astype(np.float16))
+    with pytest.raises(DataFileError, match=r"half\.npy.*float16"):
+        read_topography(path, unit="nm")
+
+
+@pytest.mark.parametrize("value", [0.0, 3e-9], ids=["all-zero", "constant"])
+def test_npy_map_constant_is_refused(tmp_path, value):
+    path = tmp_path / "flat.npy"
+    np.save(path, np.full((16, 16), value))
+    with pytest.raises(DataFileError, match=r"flat\.npy.*every height.*constant map has no roughness"):
+        read_height_array(path)
+
+
+@pytest.mark.parametrize("value", [0.0, 3e-9], ids=["all-zero", "constant"])
+def test_contact_surface_constant_npy_is_refused(cli, tmp_path, value):
+    path = tmp_path / "flat.npy"
+    np.save(path, np.full((16, 16), value))
+    code, out, err = cli("contact", "--surface", path, "--physical-size", "1um", "--load", "1 uN")
+    assert code == 2 and "no roughness" in err and not out
+
+
+def test_npy_map_rough_float32_still_reads(tmp_path):
+    path = tmp_path / "ok.npy"
+    heights = _rough().astype(np.float32)
+    np.save(path, heights)
+    np.testing.assert_array_equal(read_height_array(path), heights.astype(float))
+
