@@ -145,11 +145,10 @@ def _ibw_pixel_size(raw, nx, ny, path):
         m = re.fullmatch(r"([0-9]+)(?:\.0*)?", text)
         if m is None or int(m.group(1)) != n:
             raise DataFileError(f"{path}: the Igor note states '{key}: {printable(text, 20)}' but the wave holds {n} "
-                                f"{what} ({nx} x {ny}): the note does not describe this wave (cropped or resampled "
-                                "after the scan?), and the pixel size from it would be wrong; memstribo does not guess "
-                                "which is right. Allowed: a note whose ScanPoints and ScanLines equal the wave's points "
-                                f"per line and lines ({nx} and {ny} here); correct the note, or export the image "
-                                "again from the Asylum software.")
+                                f"{what}: the note does not describe this wave (cropped or resampled?), and a pixel "
+                                "size from it would be wrong; memstribo does not guess which is right. Allowed: "
+                                f"ScanPoints and ScanLines equal to the wave's {nx} x {ny}; correct the note or export "
+                                "the image again.")
         counts.append(n)
     return sizes[0] / counts[0], sizes[1] / counts[1]
 
@@ -172,12 +171,12 @@ def _check_nanoscope_counts(c, path):
     read = tuple(int(n) for n in c.nb_grid_pts) if c.nb_grid_pts is not None else (nx, ny)
     if read == (nx, ny) and nx * ny * elsize == length:
         return
-    other = f"; SurfaceTopography would read it as {read[0]} x {read[1]}" if read != (nx, ny) else ""
+    other = f" (SurfaceTopography would read {read[0]} x {read[1]})" if read != (nx, ny) else ""
     raise DataFileError(f"{path}: image '{printable(c.name, 40)}' (ch{c.index}) states Samps/line {nx} and Number "
                         f"of lines {ny} ({nx * ny:,} pixels of {elsize} bytes), but its data block holds {length:,} "
-                        f"bytes{other}: the line counts contradict the data, and the pixel size (Scan Size / "
-                        "Samps/line) cannot be trusted. Allowed: Samps/line x Number of lines x bytes per pixel equal "
-                        "to the data length; export the image again from the NanoScope software.")
+                        f"bytes{other}: the line counts contradict the data, so the pixel size cannot be trusted. "
+                        "Allowed: Samps/line x Number of lines x bytes per pixel = data length; export the image "
+                        "again.")
 
 
 def _select_channel(reader, channel, path):

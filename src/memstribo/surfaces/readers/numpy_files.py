@@ -2,8 +2,8 @@
 
 The header (shape, dtype) is read first, so a file that claims more points than memstribo reads
 is refused with its name and shape before any memory is allocated; integer heights (counts, not
-metres), complex numbers and float16 (about 3 digits, nothing between 0 and 6e-8 but coarse steps)
-are refused rather than converted; a constant map (all zero, say) has no roughness and is refused.
+metres), complex numbers and float16 (about 3 digits; below 6e-5 only multiples of 6e-8) are
+refused rather than converted; a constant map (all zero, say) has no roughness and is refused.
 """
 
 from __future__ import annotations
@@ -52,9 +52,8 @@ def _load(path, integers_allowed, what):
                             + hint)
     if dtype == np.float16:
         raise DataFileError(f"{path}: the .npy array holds float16 values: 11 significant bits (about 3 decimal "
-                            "digits), and nothing between 0 and 6e-8 but a few coarse steps, too few for heights of "
-                            f"nanometres (in metres they round to 0 or to 60 nm steps); {what} must be saved as "
-                            "float32 or float64.")
+                            "digits) and, below 6e-5, only multiples of 6e-8: heights of nanometres in metres round "
+                            f"to 0 or to steps of 60 nm. Allowed: {what} saved as float32 or float64.")
     try:
         return np.load(path, allow_pickle=False)
     except MemoryError:
