@@ -187,3 +187,11 @@ def test_npy_map_rough_float32_still_reads(tmp_path):
     np.save(path, heights)
     np.testing.assert_array_equal(read_height_array(path), heights.astype(float))
 
+
+@pytest.mark.parametrize("value", [0.0, 5.0])
+def test_constant_text_profile_says_constant_not_wrong_unit(tmp_path, value):
+    path = tmp_path / "flat.txt"
+    path.write_text("\n".join(f"{i * 0.01:.2f} {value}" for i in range(50)) + "\n")
+    with pytest.raises(DataFileError, match=r"flat\.txt.*every height is .* constant surface has no roughness") as err:
+        read_topography(path, unit="um")
+    assert "unit" not in str(err.value).split("roughness")[0]
