@@ -121,6 +121,8 @@ def _non_ascii_digit(line):
 def _check_ascii_digits(text, path, every_line=False, first_line=1):
     """Refuse numbers written with non-ASCII digits: a data row (a row of numbers once its digits are read as
     ASCII) or, with ``every_line``, any line. Comment lines and words elsewhere in a header may hold them."""
+    if text.isascii():
+        return
     for number, line in enumerate(text.split("\n"), start=first_line):
         digit = _non_ascii_digit(line)
         if digit is None or line.lstrip().startswith("#"):
