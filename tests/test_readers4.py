@@ -5,6 +5,8 @@ contradiction and what is allowed."""
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -78,6 +80,26 @@ def test_nanoscope_line_counts_contradicting_the_data_block_are_refused(tmp_path
     with pytest.raises(DataFileError, match=rf"di-3\.di.*{what}.*131,?072 bytes") as err:
         read_topography(path)
     assert "256 x 256" in str(err.value)
+
+
+def test_nanoscope_issue_file_ten_micrometres_read_as_25_nm_is_refused(tmp_path):
+    # the issue's file: 'Samps/line: 100000' in the image section; 3 bytes of the header's zero padding are
+    # dropped so that every offset still holds
+    data = (AFM / "di-3.di").read_bytes()
+    start = _image_section()
+    old, new = b"\\Samps/line: 256", b"\\Samps/line: 100000"
+    i = data.index(old, start)
+    assert data[40960 - 3:40960] == b"\0\0\0"
+    path = tmp_path / "di-3.di"
+    path.write_bytes(data[:i] + new + data[i + len(old):40960 - 3] + data[40960:])
+    from SurfaceTopography import open_topography
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sizes = open_topography(str(path)).channels[0].physical_sizes
+    assert sizes[0] == pytest.approx(25.6)  # nm: what SurfaceTopography makes of it (10 um x 256 / 100000)
+    with pytest.raises(DataFileError, match=r"di-3\.di.*Samps/line 100000.*131,072 bytes.*256 x 256"):
+        read_topography(path)
 
 
 def test_nanoscope_shipped_file_reads_its_ten_micrometres():
