@@ -112,7 +112,6 @@ def _decode_text(data: bytes, path):
     return None
 
 
-# ASCII digits only: Python's float() also reads full-width (U+FF10..) and Arabic-Indic digits
 def _non_ascii_digit(line):
     """The first decimal digit of ``line`` that is not ASCII 0-9 (float() reads '\uff11\uff12' and '\u0661\u0662' as 12), or None."""
     return next((c for c in line if not c.isascii() and c.isdecimal()), None)
@@ -135,6 +134,7 @@ def _check_ascii_digits(text, path, every_line=False, first_line=1):
                                 "file's digits to 0-9.")
 
 
+# ASCII digits only: Python's float() also reads full-width (U+FF10..) and Arabic-Indic digits
 _NUMBER = r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?|[-+]?(?:nan|inf|infinity)"
 _NUMBER_ROW = re.compile(rf"^\s*(?:{_NUMBER})(?:\s*[,;\t ]\s*(?:{_NUMBER}))*\s*[,;]*\s*$", re.IGNORECASE)
 _SPLIT = re.compile(r"\s*[,;\s]\s*")
