@@ -17,12 +17,18 @@ with an instrument header such as a Bruker Dektak CSV export. memstribo reads th
   (that would apply the NanoScope scale twice); meta.yml gives the unit of unit-less members;
 - Park TIFF and every other SurfaceTopography map: SurfaceTopography's ``heights()`` is
   indexed [x, y]; memstribo stores (ny, nx) with rows = scan lines along x;
-- Asylum ``.ibw``: pixel size ScanSize / points (SurfaceTopography uses ScanSize / (points - 1)).
+- Asylum ``.ibw``: pixel size ScanSize / points (SurfaceTopography uses ScanSize / (points - 1));
+  a note whose ScanPoints/ScanLines contradict the wave, or whose size is not finite, is refused;
+- NanoScope: an image section whose line counts do not fill its data block is refused
+  (SurfaceTopography would take the global counts and rescale the scan size); Gwyddion: a negative
+  size is refused (SurfaceTopography takes its absolute value).
 
 A file that no reader takes gets one message: why it is not x-z text, what SurfaceTopography
 said for its format (one clause, never its list of every reader), what is supported. Text
 from the file is shown with control characters escaped. TIFF and Igor files cut short are
-refused even where the cut spares the heights.
+refused even where the cut spares the heights. Numbers are ASCII digits (Python's ``float()``
+also reads full-width and Arabic-Indic ones); a text header naming the height column before x,
+float16 ``.npy`` arrays and constant surfaces are refused.
 
 The package has one module per family of formats: :mod:`.instruments` (SurfaceTopography),
 :mod:`.text`, :mod:`.numpy_files`, :mod:`.containers`; :mod:`.topography` picks the reader and

@@ -124,6 +124,10 @@ def _check_magnitude(z, path, unit_used):
         raise DataFileError(f"{path}: heights read as {unit_used} reach {peak:.3g} m, more than {_Z_MAX:g} m: not a "
                             "measured surface, or the height unit is wrong. Give the file's unit with --unit "
                             "(m, mm, um, nm, A, pm).")
+    if zc.size and np.ptp(zc) == 0:  # not a unit problem: nothing was measured
+        raise DataFileError(f"{path}: every height is {float(zc.flat[0]):g} m: a constant surface has no roughness. "
+                            "Allowed: measured heights that vary; check that the channel or column read is the "
+                            "height.")
     if zc.ndim == 1:
         t = np.arange(zc.size) - (zc.size - 1) / 2
         r = zc - zc.mean()

@@ -90,17 +90,93 @@ def _units(reader):
 
 
 def _check_scan_size(c, path):
-    """The scan size the file states: finite and positive (SurfaceTopography reads a Gwyddion size 0 as 1 m)."""
+    """The scan size the file states: finite and positive.
+
+    SurfaceTopography reads a Gwyddion size 0 as 1 m and a negative one as its absolute value (as Gwyddion
+    does); a negative size may stand for a mirrored axis, which memstribo would not know to undo: refused.
+    """
     raw = (c.info or {}).get("raw_metadata", {}) or {}
     field = next((v.get("GwyDataField") for k, v in raw.items() if str(k).endswith("/data") and isinstance(v, dict)
                   and isinstance(v.get("GwyDataField"), dict)), None)
-    stated = [field[k] for k in ("xreal", "yreal") if k in field] if field else []
-    stated += [s for s in np.atleast_1d(c.physical_sizes if c.physical_sizes is not None else [])
+    stated = [(field[k], k) for k in ("xreal", "yreal") if k in field] if field else []
+    stated += [(s, None) for s in np.atleast_1d(c.physical_sizes if c.physical_sizes is not None else [])
                if s is not None]
-    bad = [s for s in stated if not (isinstance(s, (int, float, np.number)) and np.isfinite(s) and s != 0)]
-    if bad:
-        raise DataFileError(f"{path}: the file states a scan size of {bad[0]!r}, which is not a positive length; the "
-                            "file is damaged or was saved without its size (memstribo does not assume one).")
+    for value, label in stated:
+        if isinstance(value, (int, float, np.number)) and np.isfinite(value) and value > 0:
+            continue
+        shown = repr(float(value)) if isinstance(value, (int, float, np.number)) else repr(value)
+        what = f" ({label})" if label else ""
+        if isinstance(value, (int, float, np.number)) and value < 0:
+            raise DataFileError(f"{path}: the file states a scan size of {shown}{what}, which is not a positive "
+                                "length; memstribo does not take a negative size as its absolute value (it may stand "
+                                "for a mirrored axis). Allowed: positive sizes; make the size positive in your AFM "
+                                "software (and flip the data if the axis was mirrored).")
+        raise DataFileError(f"{path}: the file states a scan size of {shown}{what}, which is not a positive length; "
+                            "the file is damaged or was saved without its size (memstribo does not assume one).")
+
+
+_NOTE_NUMBER = re.compile(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+
+
+def _ibw_pixel_size(raw, nx, ny, path):
+    """(dx, dy) = (FastScanSize / ScanPoints, SlowScanSize / ScanLines) from an Asylum note, or None without ScanSize.
+
+    The note must describe the wave: sizes positive and finite, ScanPoints and ScanLines (where given) equal to
+    the wave's points per line and lines. A note that contradicts the wave (a cropped or resampled image whose
+    note was kept) is refused: its pixel size would be wrong, and memstribo does not guess which is right.
+    """
+    fast = raw.get("FastScanSize", raw.get("ScanSize"))
+    slow = raw.get("SlowScanSize", raw.get("ScanSize"))
+    if fast is None or slow is None:
+        return None
+    sizes = []
+    for key, text in (("FastScanSize" if "FastScanSize" in raw else "ScanSize", fast),
+                      ("SlowScanSize" if "SlowScanSize" in raw else "ScanSize", slow)):
+        text = str(text).strip()
+        value = float(text) if _NOTE_NUMBER.fullmatch(text) else float("nan")
+        if not (np.isfinite(value) and value > 0):
+            raise DataFileError(f"{path}: the Igor note states '{key}: {printable(text, 20)}', not a positive finite "
+                                "length in m; the file is damaged or was saved without its scan size (memstribo does "
+                                f"not assume one). Allowed: a positive number of metres ('{key}: 2e-06').")
+        sizes.append(value)
+    counts = []
+    for key, n, what in (("ScanPoints", nx, "points per line"), ("ScanLines", ny, "lines")):
+        text = str(raw.get(key, n)).strip()
+        m = re.fullmatch(r"([0-9]+)(?:\.0*)?", text)
+        if m is None or int(m.group(1)) != n:
+            raise DataFileError(f"{path}: the Igor note states '{key}: {printable(text, 20)}' but the wave holds {n} "
+                                f"{what}: the note does not describe this wave (cropped or resampled?), and a pixel "
+                                "size from it would be wrong; memstribo does not guess which is right. Allowed: "
+                                f"ScanPoints and ScanLines equal to the wave's {nx} x {ny}; correct the note or export "
+                                "the image again.")
+        counts.append(n)
+    return sizes[0] / counts[0], sizes[1] / counts[1]
+
+
+def _check_nanoscope_counts(c, path):
+    """A NanoScope image section's Samps/line x Number of lines must fill its data block exactly.
+
+    SurfaceTopography takes the file's global counts when they fit the block instead, and scales the scan size
+    by their ratio (a 10 um scan with 'Samps/line: 100000' is read as 25.6 nm); with counts that fill only part
+    of the block it reads the first pixels. Both are the wrong geometry: refused.
+    """
+    raw = (c.info or {}).get("raw_metadata", {}) or {}
+    if not all(k in raw for k in ("samps/line", "number of lines", "data length")):
+        return
+    try:
+        nx, ny, length = int(raw["samps/line"]), int(raw["number of lines"]), int(raw["data length"])
+        elsize = int((getattr(c, "tags", None) or {}).get("elsize", raw.get("bytes/pixel", 2)))
+    except (TypeError, ValueError):
+        return  # SurfaceTopography's own reading decides
+    read = tuple(int(n) for n in c.nb_grid_pts) if c.nb_grid_pts is not None else (nx, ny)
+    if read == (nx, ny) and nx * ny * elsize == length:
+        return
+    other = f" (SurfaceTopography would read {read[0]} x {read[1]})" if read != (nx, ny) else ""
+    raise DataFileError(f"{path}: image '{printable(c.name, 40)}' (ch{c.index}) states Samps/line {nx} and Number "
+                        f"of lines {ny} ({nx * ny:,} pixels of {elsize} bytes), but its data block holds {length:,} "
+                        f"bytes{other}: the line counts contradict the data, so the pixel size cannot be trusted. "
+                        "Allowed: Samps/line x Number of lines x bytes per pixel = data length; export the image "
+                        "again.")
 
 
 def _select_channel(reader, channel, path):
@@ -141,6 +217,7 @@ def _st_topography(reader, path, name, channel, unit, fix_ibw=False, physical_si
     kwargs = {} if file_unit else {"unit": unit_used}
     dim = c.dim if c.dim in (1, 2) else 2
     _check_scan_size(c, path)
+    _check_nanoscope_counts(c, path)
     if c.physical_sizes is None or (np.ndim(c.physical_sizes) and any(s is None for s in c.physical_sizes)):
         if physical_size is None:
             what = "profile length" if dim == 1 else "scan size"
@@ -184,12 +261,11 @@ def _st_topography(reader, path, name, channel, unit, fix_ibw=False, physical_si
     sx, sy = topography.physical_sizes
     dx, dy = sx / nx, sy / ny
     if fix_ibw:
-        raw = (c.info or {}).get("raw_metadata", {})
-        try:
-            dx = float(raw.get("FastScanSize", raw["ScanSize"])) / int(raw.get("ScanPoints", nx))
-            dy = float(raw.get("SlowScanSize", raw["ScanSize"])) / int(raw.get("ScanLines", ny))
+        pixel = _ibw_pixel_size((c.info or {}).get("raw_metadata", {}) or {}, nx, ny, path)
+        if pixel is not None:
+            dx, dy = pixel
             source += "; pixel size ScanSize/points from the Igor header (SurfaceTopography uses ScanSize/(points-1))"
-        except (KeyError, ValueError, TypeError, ZeroDivisionError):
+        else:
             source += "; no ScanSize in the Igor header: pixel size as SurfaceTopography gives it"
     if min(nx, ny) < 2:
         raise DataFileError(f"{path}: a {nx} x {ny} map; memstribo needs at least 2 x 2 pixels.")

@@ -2,7 +2,8 @@
 
 The header (shape, dtype) is read first, so a file that claims more points than memstribo reads
 is refused with its name and shape before any memory is allocated; integer heights (counts, not
-metres) and complex numbers are refused rather than converted.
+metres), complex numbers and float16 (about 3 digits; below 6e-5 only multiples of 6e-8) are
+refused rather than converted; a constant map (all zero, say) has no roughness and is refused.
 """
 
 from __future__ import annotations
@@ -49,6 +50,10 @@ def _load(path, integers_allowed, what):
                 "heights * z_scale) before saving." if dtype.kind in "iub" else "")
         raise DataFileError(f"{path}: the .npy array holds {dtype} values; {what} must be floating-point numbers."
                             + hint)
+    if dtype == np.float16:
+        raise DataFileError(f"{path}: the .npy array holds float16 values: 11 significant bits (about 3 decimal "
+                            "digits) and, below 6e-5, only multiples of 6e-8: heights of nanometres in metres round "
+                            f"to 0 or to steps of 60 nm. Allowed: {what} saved as float32 or float64.")
     try:
         return np.load(path, allow_pickle=False)
     except MemoryError:
@@ -86,9 +91,10 @@ def read_height_array(path) -> np.ndarray:
     ------
     DataFileError
         Not a regular file; no .npy header; a header declaring more than ``MAX_POINTS`` values
-        (named with the file and its shape, before anything is loaded); integer, boolean or
-        complex values; not 2D or smaller than 2 x 2; NaN or infinite heights; heights above
-        0.1 m (heights that are not in metres).
+        (named with the file and its shape, before anything is loaded); integer, boolean,
+        complex or float16 values (too few digits for nm heights in m); not 2D or smaller than
+        2 x 2; NaN or infinite heights; a constant (e.g. all-zero) map, which has no roughness;
+        heights above 0.1 m (heights that are not in metres).
     """
     path = Path(path)
     shown = printable(path, 200)
@@ -102,6 +108,10 @@ def read_height_array(path) -> np.ndarray:
                             f"got shape {array.shape}.")
     heights = np.asarray(array, dtype=float)
     _check_finite(heights, shown)
+    if np.ptp(heights) == 0:
+        raise DataFileError(f"{shown}: every height is {heights.flat[0]:g} m: a constant map has no roughness (a "
+                            "contact solved on it is a flat one, whatever the measurement was). Allowed: measured "
+                            "heights that vary; check that the array saved is the height channel, in m.")
     peak = float(np.max(np.abs(heights)))
     if peak > _Z_MAX:
         raise DataFileError(f"{shown}: heights reach {peak:.3g} m, more than {_Z_MAX:g} m: not a measured surface, or "

@@ -5,6 +5,7 @@ from __future__ import annotations
 import codecs
 import io
 import re
+import unicodedata
 
 import numpy as np
 
@@ -14,6 +15,8 @@ from memstribo.surfaces.readers._common import LENGTH_UNITS, MAX_POINTS, Surface
 from memstribo.surfaces.readers.instruments import _NotRead, _QuietLogs, _st_open
 
 _HEADER_SHAPE = re.compile(r"\((\d+)\s*x\s*(\d+)\)")
+#: header lines of the one-line export whose values memstribo reads as numbers
+_EXPORT_NUMBERS = ("image width", "image height", "real width", "real height")
 
 
 def _read_header_export(text, path, name, unit):
@@ -25,9 +28,13 @@ def _read_header_export(text, path, name, unit):
         if " : " in line or line.strip().endswith(":"):
             key, _, value = line.partition(":")
             header[key.strip().lower()] = value.strip()
+            if key.strip().lower() in _EXPORT_NUMBERS:  # int() and float() read '\uff11\uff12\uff18' as 128
+                _check_ascii_digits(line, path, every_line=True, first_line=i + 1)
         elif line.strip():
             start = i
             break
+    if start is not None:
+        _check_ascii_digits("\n".join(lines[start:]), path, every_line=True, first_line=start + 1)
     width, height = header.get("image width"), header.get("image height")
     if start is None or width is None or height is None:
         raise DataFileError(f"{path}: a text header was found but no 'Image Width'/'Image Height' and data lines.")
@@ -92,6 +99,7 @@ def _decode_text(data: bytes, path):
             return None
         text = data.decode("latin-1")
     text = text.replace("\r\n", "\n").replace("\r", "\n")
+    _check_ascii_digits(text, path)
     bad = next((i for i, c in enumerate(text) if not (c.isprintable() or c in "\n\t\f\v")), None)
     if bad is None:
         return text
@@ -104,7 +112,30 @@ def _decode_text(data: bytes, path):
     return None
 
 
-_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?(?:nan|inf|infinity)"
+def _non_ascii_digit(line):
+    """The first decimal digit of ``line`` that is not ASCII 0-9 (float() reads '\uff11\uff12' and '\u0661\u0662' as 12), or None."""
+    return next((c for c in line if not c.isascii() and c.isdecimal()), None)
+
+
+def _check_ascii_digits(text, path, every_line=False, first_line=1):
+    """Refuse numbers written with non-ASCII digits: a data row (a row of numbers once its digits are read as
+    ASCII) or, with ``every_line``, any line. Comment lines and words elsewhere in a header may hold them."""
+    if text.isascii():
+        return
+    for number, line in enumerate(text.split("\n"), start=first_line):
+        digit = _non_ascii_digit(line)
+        if digit is None or line.lstrip().startswith("#"):
+            continue
+        ascii_line = "".join(str(unicodedata.decimal(c)) if not c.isascii() and c.isdecimal() else c for c in line)
+        if every_line or _NUMBER_ROW.match(ascii_line.strip()):
+            raise DataFileError(f"{path}: line {number} holds the non-ASCII digit '{digit}' (U+{ord(digit):04X} "
+                                f"{unicodedata.name(digit, 'DIGIT')}); numbers in a measurement file are written with "
+                                "the ASCII digits 0-9 (memstribo does not read other digits as numbers): convert the "
+                                "file's digits to 0-9.")
+
+
+# ASCII digits only: Python's float() also reads full-width (U+FF10..) and Arabic-Indic digits
+_NUMBER = r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?|[-+]?(?:nan|inf|infinity)"
 _NUMBER_ROW = re.compile(rf"^\s*(?:{_NUMBER})(?:\s*[,;\t ]\s*(?:{_NUMBER}))*\s*[,;]*\s*$", re.IGNORECASE)
 _SPLIT = re.compile(r"\s*[,;\s]\s*")
 _UNIT_WORDS = {"meter": "m", "meters": "m", "metre": "m", "metres": "m", "millimeter": "mm", "millimeters": "mm",
@@ -148,6 +179,27 @@ def _plain_rows(text):
     return header, rows
 
 
+#: first words of a column name that say which quantity the column holds
+_POSITION_NAMES = {"x", "position", "pos", "distance", "lateral", "length", "scan", "width"}
+_HEIGHT_NAMES = {"z", "height", "heights", "h", "depth", "topography", "topo", "elevation", "zsensor"}
+
+
+def _column_kind(field):
+    """'x' or 'z' for a column name whose first word names a position or a height, else None."""
+    word = next((w for w in re.split(r"[^A-Za-z]+", field) if w), "").lower()
+    return "x" if word in _POSITION_NAMES else "z" if word in _HEIGHT_NAMES else None
+
+
+def _check_column_order(header, fields, path):
+    """Refuse a column-header line naming the height before the position: memstribo reads the columns by place
+    (first x, then the height) and would give each the other's unit, or read the heights as positions."""
+    if len(fields) == 2 and (_column_kind(fields[0]), _column_kind(fields[1])) == ("z", "x"):
+        raise DataFileError(f"{path}: the header line '{printable(header, 60)}' names the height column first and "
+                            "the position second; memstribo reads the first column as x (position) and the second "
+                            "as the height, each with its own unit. Allowed: x first ('x [um], z [nm]'): swap the "
+                            "columns and their names.")
+
+
 def _header_units(header, path):
     """Units of the x and z columns named in a column-header line ('x [um], z [nm]'), or (None, None)."""
     if not header:
@@ -156,6 +208,7 @@ def _header_units(header, path):
     if len(fields) != 2:
         bracketed = [f.strip() for f in re.findall(r"[^\[\]()]*[\[(][^\])]*[\])]", header)]
         fields = bracketed if len(bracketed) == 2 else header.split()
+    _check_column_order(header, fields, path)
     units = []
     for field in fields[:2]:
         found = re.search(r"[\[(]\s*([^\])]*?)\s*[\])]", field)

@@ -68,9 +68,13 @@ def read_topography(path, channel=None, unit=None, physical_size=None):
         Missing, empty, unreadable, truncated or corrupt file, unknown format, unknown
         channel, undefined (NaN/masked) pixels, repeated or decreasing x, fewer than 3 points,
         heights whose Rq (> 1 mm or < 1 pm) suggests a wrong unit, a lateral step below 1 pm
-        or a length above 1 m, no lateral size (give ``physical_size``). One message, naming
-        the file, the format(s) tried and what is supported; text from the file is shown with
-        its control characters escaped.
+        or a length above 1 m, no lateral size (give ``physical_size``); a file that contradicts
+        itself (an Igor note whose ScanPoints/ScanLines differ from the wave or whose scan size
+        is not a positive finite length, a NanoScope image whose line counts do not fill its
+        data block, a negative Gwyddion size, a text header naming the height column before x),
+        numbers written with non-ASCII digits, float16 ``.npy`` arrays, a constant surface. One
+        message, naming the file, the format(s) tried and what is supported; text from the file
+        is shown with its control characters escaped.
     """
     path = Path(path)
     shown = printable(path, 200)
