@@ -185,11 +185,13 @@ def test_bulk_rise_in_vacuum_is_the_hub_and_radiation_not_an_air_gap(params):
     pair = GearPair.from_parameters(params)
     cycle = synthetic_cycle(params, cof=0.3)
     vacuum = tooth_life(cycle, params)
-    # version 3: the mean power over 1.3e4 W/(m^2 K) times the face area, in vacuum too
-    h_r = thermal.radiation_coefficient(params["emissivity"], params["ambient_temperature"])
+    # the power from the disc's balance: hub + exact radiation eps sigma (T^4 - T_amb^4) (Eq. 1.9 at the disc's T)
+    eps, t_amb = params["emissivity"], params["ambient_temperature"]
     tip = pair.tip_radii
-    g = [params["hub_thermal_conductance"] + h_r * 2 * _m.pi * r ** 2 for r in tip]
-    power = [rise * gi for rise, gi in zip(vacuum["disc_temperature_rise"], g)]
+    power = [rise * (params["hub_thermal_conductance"]
+                     + thermal.radiation_coefficient(eps, t_amb + rise, t_amb) * 2 * _m.pi * r ** 2)
+             for rise, r in zip(vacuum["disc_temperature_rise"], tip)]
+    # version 3: the mean power over 1.3e4 W/(m^2 K) times the face area, in vacuum too
     old = max(thermal.bulk_temperature_rise(p, params["heat_transfer_coefficient"], _m.pi * r ** 2)
               for p, r in zip(power, tip))
     assert math.isfinite(vacuum["bulk_temperature_rise"])
@@ -198,9 +200,14 @@ def test_bulk_rise_in_vacuum_is_the_hub_and_radiation_not_an_air_gap(params):
     assert vacuum["bulk_temperature_rise"] == pytest.approx(
         vacuum["disc_temperature_rise"][i] + vacuum["tooth_temperature_rise"][i], rel=1e-6)
     assert min(vacuum["tooth_temperature_rise"]) > 0
-    # no hub: radiation alone, P / (h_r 2 pi r_a^2), a far larger but finite rise
+    # no hub: radiation alone, P = eps sigma (T^4 - T_amb^4) 2 pi r_a^2, a far larger but finite rise, below the
+    # rise with h_r linearised at the ambient (4 eps sigma T_amb^3), which bounds it
     alone = tooth_life(cycle, params.updated({"hub_thermal_conductance": 0.0}))
-    assert alone["disc_temperature_rise"][0] == pytest.approx(power[0] / (h_r * 2 * _m.pi * tip[0] ** 2), rel=1e-9)
+    t_disc = t_amb + alone["disc_temperature_rise"][0]
+    assert power[0] == pytest.approx(eps * thermal.STEFAN_BOLTZMANN * (t_disc ** 4 - t_amb ** 4) * 2 * _m.pi
+                                     * tip[0] ** 2, rel=1e-9)
+    linear = power[0] / (thermal.radiation_coefficient(eps, t_amb) * 2 * _m.pi * tip[0] ** 2)
+    assert 0.5 * linear < alone["disc_temperature_rise"][0] < linear
     assert math.isfinite(alone["bulk_temperature_rise"]) and alone["bulk_temperature_rise"] > vacuum["bulk_temperature_rise"]
     # in air the gap conducts: the rise falls back to the air gap's order
     air = tooth_life(cycle, params.updated({"environment": "air", "relative_humidity": 0.3}))

@@ -209,6 +209,29 @@ def _length(metres: float) -> str:
     return f"{metres * 1e3:.3g} mm" if metres >= 1e-3 else f"{metres * 1e6:.3g} µm"
 
 
+def _disc_rise(power, g_hub, emissivity, ambient, radiating_area, h_gap, gap_area) -> float:
+    """The disc's rise with the radiation coefficient at the disc's own temperature [K].
+
+    ``thermal.disc_temperature_rise`` with Eq. 1.9's h_r(T_amb + dT, T_amb), so that the radiated heat is
+    eps sigma (T^4 - T_amb^4) exactly; h_r grows with dT, so the rise with h_r at the ambient (4 eps sigma
+    T^3) bounds it above and brackets the root.
+    """
+    from scipy.optimize import brentq
+
+    h_0 = thermal.radiation_coefficient(emissivity, ambient)
+    upper = thermal.disc_temperature_rise(power, g_hub, h_0, radiating_area, h_gap, gap_area)
+    if upper <= 0.0:
+        return 0.0
+
+    def balance(rise):
+        h_r = thermal.radiation_coefficient(emissivity, ambient + rise, ambient)
+        return rise - thermal.disc_temperature_rise(power, g_hub, h_r, radiating_area, h_gap, gap_area)
+
+    if balance(upper) <= 0.0:
+        return float(upper)
+    return float(brentq(balance, 0.0, upper, xtol=1e-12 * max(upper, 1e-300), rtol=1e-12))
+
+
 def _heat_path(pair, c, half, heat, params, warnings) -> dict:
     """Where the friction heat goes (issue 38, MODEL 7h; docs/thermal.md, "Bulk temperature").
 
@@ -244,7 +267,8 @@ def _heat_path(pair, c, half, heat, params, warnings) -> dict:
         r_mean = float(np.sum(weights * radius[i]) / np.sum(weights)) if np.sum(weights) > 0 else float(pair.pitch_radii[i])
         length = max(r_mean - float(root[i]), 0.0)
         tip = float(pair.tip_radii[i])
-        disc = thermal.disc_temperature_rise(power, g_hub, h_r, 2.0 * math.pi * tip ** 2, h_gap, math.pi * tip ** 2)
+        disc = _disc_rise(power, g_hub, params["emissivity"], ambient, 2.0 * math.pi * tip ** 2, h_gap,
+                          math.pi * tip ** 2)
         flank = thermal.fin_tip_excess_heat_input(power, disc, h_fin, perimeter, k, area, length)
         out["disc"].append(float(disc))
         out["tooth"].append(float(flank - disc))
