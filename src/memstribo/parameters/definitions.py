@@ -371,7 +371,7 @@ _SPECS = [
     _range("hub_thermal_conductance", "W/K", "Thermal conductance from a gear's disc through its hub (the bore-hub "
            "contact and the anchor) to the substrate, the same for both gears; 0: the gears lose heat by radiation "
            "only (and, in air, across the air gap)", 0.0, 0.1,
-           "no negative conductance; 0.1 W/K is a bulk silicon post 1 mm across, 1000 times any MEMS anchor",
+           "no negative conductance; 0.1 W/K is a silicon post 1 mm across and 1 mm tall, far beyond any MEMS anchor",
            exclusive_minimum=False,
            prior={"distribution": "loguniform", "bounds": (1e-8, 1e-4),
                   "source": "contact resistances in vacuum, R''_tc = 0.1e-4 to 25e-4 m^2 K/W (Incropera et al. 2007, "
