@@ -65,7 +65,8 @@ def test_weibull_constants_checked_in_the_model_too():
 def test_every_strength_and_thermal_constant_has_a_prior_with_a_source():
     for name in ("strength_characteristic", "weibull_modulus", "strength_reference_area", "fatigue_exponent",
                  "fatigue_humidity_sensitivity", "thermal_conductivity", "thermal_diffusivity",
-                 "heat_transfer_coefficient", "dedendum_coefficient", "root_fillet_coefficient"):
+                 "heat_transfer_coefficient", "hub_thermal_conductance", "emissivity", "dedendum_coefficient",
+                 "root_fillet_coefficient"):
         prior = SPECS[name].prior
         assert prior and prior["distribution"] in ("uniform", "loguniform", "normal", "lognormal")
         low, high = prior["bounds"]

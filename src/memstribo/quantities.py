@@ -431,8 +431,15 @@ _ENTRIES = [
      "polysilicon in air, strength falling as N^(-1/n)); null without tensile stress"),
     ("flash_temperature", "K", "flash temperature rise", "mean contact temperature rise over the band at the step "
      "(Jaeger's moving band source, Blok's partition)"),
-    ("bulk_temperature_rise", "K", "bulk temperature rise", "rise of the hotter gear's temperature from the mean "
-     "friction power over the heat conductance to its surroundings"),
+    ("bulk_temperature_rise", "K", "bulk temperature rise", "rise of the hotter gear's flank away from the flash: its "
+     "disc's rise (mean friction power over the hub's conductance, radiation and, in air, the air gap) plus the "
+     "conduction along the tooth from its root"),
+    ("disc_temperature_rise", "K", "disc temperature rise", "mean friction power into each gear over the conductance "
+     "of its hub, its radiation and, in air, the air gap, [pinion, gear]"),
+    ("tooth_temperature_rise", "K", "tooth temperature rise", "rise along each gear's tooth from its root to the "
+     "dissipation-weighted contact point (a fin of the pitch thickness), [pinion, gear]"),
+    ("flash_diffusion_length_max", "m", "flash diffusion length", "largest depth a / min(L, sqrt L) that the flash's "
+     "heat reaches over the heated steps; the half-space holds while it is below the tooth's thickness"),
     ("contact_temperature_max", "K", "largest contact temperature",
      "ambient temperature + bulk temperature rise + largest flash temperature rise"),
     ("laboratory_rows", _TEXT, "laboratory rows", "per published measurement: id, quantity, measured value, predicted "

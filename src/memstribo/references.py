@@ -244,7 +244,17 @@ REFERENCES: dict[str, str] = {
     ),
     "incropera_2007": (
         "F. P. Incropera, D. P. DeWitt, T. L. Bergman, A. S. Lavine, Fundamentals of Heat and Mass Transfer, 6th "
-        "ed., Wiley, 2007 (silicon and air property tables A.1, A.4)."
+        "ed., Wiley, 2007 (silicon and air property tables A.1, A.4; radiation coefficient Eq. 1.9; thermal contact "
+        "resistance Table 3.1; fins of uniform cross-section section 3.6.2, Eqs. 3.69-3.85 and Table 3.4)."
+    ),
+    "sato_1967": (
+        "T. Sato, 'Spectral emissivity of silicon', Jpn. J. Appl. Phys. 6 (1967) 339-347. doi:10.1143/JJAP.6.339 "
+        "(heavily doped silicon emits like a grey body of emissivity 0.6-0.7 in the infrared; lightly doped "
+        "silicon is partly transparent there)."
+    ),
+    "timans_1993": (
+        "P. J. Timans, 'Emissivity of silicon at elevated temperatures', J. Appl. Phys. 74 (1993) 6353-6364. "
+        "doi:10.1063/1.355159 (free-carrier absorption sets the infrared emissivity; thin layers emit less)."
     ),
     "iapws_2014": (
         "IAPWS R1-76(2014), Revised Release on Surface Tension of Ordinary Water Substance, International "

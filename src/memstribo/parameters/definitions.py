@@ -179,7 +179,9 @@ _SPECS = [
            "1 pN to 1 N: a MEMS gear tooth carries uN to mN"),
     _range("drive_torque", "N*m", "Torque on the pinion; F_t = T / r_pitch,pinion (4-27)", 1e-18, 1e-2,
            "MEMS micromotors give pN m to uN m; 0.01 N m would break any microgear"),
-    _range("pinion_speed", "rad/s", "Angular speed omega1 of the pinion (sets the time axis only)", 1e-6, 1e7,
+    _range("pinion_speed", "rad/s", "Angular speed omega1 of the pinion: sets the time axis and the surface and sliding "
+           "speeds, so the friction power and the flash and bulk temperatures (docs/thermal.md); the friction force "
+           "itself, from the dissipated energy per distance, does not depend on it", 1e-6, 1e7,
            "from a crawl to 100 million rpm"),
     # --- meshing simulation ---------------------------------------------------------------------
     _range("mesh_steps", "", "Steps (positions c) of the meshing simulation from c_f to c_l", 3, 100_000,
@@ -357,13 +359,33 @@ _SPECS = [
                   "source": "thermal_conductivity's range over rho c = 2330 kg/m^3 x 703 J/(kg K) (silicon, "
                             "Incropera et al. 2007, Table A.1)",
                   "reason": "the conductivity's uncertainty; rho c of silicon is known to 1 %"}),
-    _range("heat_transfer_coefficient", "W/m^2/K", "Heat conductance per unit area from a gear's face to its "
-           "surroundings (the bulk temperature rise is the mean friction power over h times the face area)", 1.0,
+    _range("heat_transfer_coefficient", "W/m^2/K", "In air only (environment 'air'): conductance per unit area "
+           "across the air gap from a gear's face to the substrate, in parallel with the hub and radiation (in vacuum "
+           "no gas carries heat and it is not used)", 1.0,
            1e7, "from still air to a bonded metal contact",
            prior={"distribution": "loguniform", "bounds": (1e3, 1e5),
                   "source": "conduction across the air gap to the substrate, k_air / g with k_air = 0.026 W/(m K) "
                             "(Incropera et al. 2007, Table A.4)",
                   "reason": "gaps of 0.3 to 20 um between a released gear and its substrate"}),
+    # heat in vacuum (issue 38, MODEL 7h): the hub and radiation carry the heat away; informative priors, not sampled
+    _range("hub_thermal_conductance", "W/K", "Thermal conductance from a gear's disc through its hub (the bore-hub "
+           "contact and the anchor) to the substrate, the same for both gears; 0: the gears lose heat by radiation "
+           "only (and, in air, across the air gap)", 0.0, 0.1,
+           "no negative conductance; 0.1 W/K is a silicon post 1 mm across and 1 mm tall, far beyond any MEMS anchor",
+           exclusive_minimum=False,
+           prior={"distribution": "loguniform", "bounds": (1e-8, 1e-4),
+                  "source": "contact resistances in vacuum, R''_tc = 0.1e-4 to 25e-4 m^2 K/W (Incropera et al. 2007, "
+                            "Table 3.1), over a bore-hub interface of 2 pi r_h b = 6.3e-11 m^2 (r_h = 5 um, b = 2 um): "
+                            "2.5e-8 to 6.3e-6 W/K",
+                  "reason": "a clearance fit that touches on a few asperities (a 10 nm spot conducts 2 k a = 6e-7 "
+                            "W/K) up to the disc's own radial conductance 2 pi k b / ln(r_f / r_h) = 2e-4 W/K"}),
+    _range("emissivity", "", "Total hemispherical emissivity of the gears' surfaces (radiation to the surroundings, "
+           "h_r = 4 eps sigma T^3 = 3.6 W/(m^2 K) at 0.6 and 298 K)", 0.0, 1.0,
+           "a grey surface emits more than nothing and at most as a black body",
+           prior={"distribution": "uniform", "bounds": (0.1, 0.7),
+                  "source": "Sato 1967 (Jpn. J. Appl. Phys. 6 339); Timans 1993 (J. Appl. Phys. 74 6353)",
+                  "reason": "heavily doped silicon emits at 0.6-0.7 in the infrared; a 2 um layer, or a lightly "
+                            "doped one, is partly transparent there and emits less"}),
     # --- version 3: what the verdict hangs on (MODEL 7d, issue #26) ------------------------------
     ParameterSpec("lattice_registry", "", "Registry of the atomic-block lattices of the two flanks along the sliding "
                   "direction: 'random' (each nanoblock row its own phase and orientation, seeded like the roughness "

@@ -476,7 +476,7 @@ class GearPair:
     addendum_coefficient : float
         Addendum in modules [-].
     pinion_speed : float
-        omega1 [rad/s] (sets the time axis only).
+        omega1 [rad/s]: the time axis and the surface and sliding speeds (so the friction power and temperatures).
 
     Raises
     ------

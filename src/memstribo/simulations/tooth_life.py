@@ -24,7 +24,8 @@ __all__ = ["TOOTH_LIFE_KEYS", "tooth_life", "with_tooth_life", "fracture_probabi
 #: keys of :func:`tooth_life` that are numbers (the mesh summary / JSON names; registered in memstribo.quantities)
 TOOTH_LIFE_KEYS = ("root_stress_max", "root_stress_compressive_min", "fracture_probability",
                    "fracture_probability_pinion_tooth", "fracture_probability_gear_tooth", "cycles_to_fracture_p01",
-                   "root_effective_area", "flash_temperature_max", "bulk_temperature_rise", "contact_temperature_max")
+                   "root_effective_area", "flash_temperature_max", "bulk_temperature_rise", "disc_temperature_rise",
+                   "tooth_temperature_rise", "flash_diffusion_length_max", "contact_temperature_max")
 
 
 def root_effective_area(shape, radius, normal_force, friction_force, face_width, weibull_modulus, friction_sign):
@@ -62,7 +63,7 @@ def _get(dataset, name, fallback=None):
                      "memstribo.simulations.mesh.simulate_mesh).")
 
 
-@cites("iso_6336_3", "weibull_1951", "muhlstein_2001", "jaeger_1942", "blok_1937")
+@cites("iso_6336_3", "weibull_1951", "muhlstein_2001", "jaeger_1942", "blok_1937", "incropera_2007")
 def tooth_life(dataset, params, pair=None, coating=None) -> dict:
     """Root stress, fracture probability, fatigue life and contact temperature of a meshing cycle.
 
@@ -76,7 +77,8 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
     params : memstribo.parameters.Parameters
         Gear, strength (``strength_characteristic``, ``weibull_modulus``, ``strength_reference_area``,
         ``fatigue_exponent``, ``fatigue_humidity_sensitivity``), thermal (``thermal_conductivity``,
-        ``thermal_diffusivity``, ``heat_transfer_coefficient``, ``ambient_temperature``), tooth form
+        ``thermal_diffusivity``, ``emissivity``, ``hub_thermal_conductance``, ``heat_transfer_coefficient`` (in
+        air only), ``ambient_temperature``), tooth form
         (``dedendum_coefficient``, ``root_fillet_coefficient``) and environment parameters.
     pair : memstribo.physics.gear.GearPair, optional
         Default: from ``params``.
@@ -93,7 +95,11 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
         ``..._gear_tooth``); ``cycles_to_fracture_p01`` pinion revolutions to a 1 % probability that a
         tooth of the pair has broken (fatigue; ``None`` without tensile stress) [-];
         ``flash_temperature_max`` largest flash temperature rise of the contact over the cycle [K];
-        ``bulk_temperature_rise`` of the hotter of the two gears [K]; ``contact_temperature_max`` =
+        ``bulk_temperature_rise`` of the flank of the hotter of the two gears, away from the flash: its disc's rise
+        (the mean friction power over the hub's conductance, radiation and, in air, the air gap) plus the rise
+        along the tooth from its root (a fin) [K]; ``disc_temperature_rise`` and ``tooth_temperature_rise``
+        [pinion, gear] those two parts [K]; ``flash_diffusion_length_max`` how far the flash's heat reaches into
+        a tooth, to compare with its thickness (the half-space's range) [m]; ``contact_temperature_max`` =
         ambient + bulk + flash [K]; ``root_stress`` per step ``{"pinion": array, "gear": array}`` [Pa];
         ``flash_temperature`` per step [K]; ``fatigue`` (the constants of :func:`fracture_probability_within`);
         ``warnings`` (list of str).
@@ -112,7 +118,7 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
     strength_result = _root_strength(pair, c, fn, ff, params, warnings)
     s_max, s_min, a_eff, p_tooth = (strength_result[k] for k in ("s_max", "s_min", "a_eff", "p_tooth"))
     p_pair, n01, fatigue, stresses = (strength_result[k] for k in ("p_pair", "n01", "fatigue", "stresses"))
-    flash, bulk, contact = _contact_temperature(pair, c, ff_inst, half, energy, params, coating, warnings)
+    flash, bulk, contact, heat_path = _contact_temperature(pair, c, ff_inst, half, energy, params, coating, warnings)
     return {
         "root_stress_max": [s_max["pinion"], s_max["gear"]],
         "root_stress_compressive_min": [s_min["pinion"], s_min["gear"]],
@@ -123,6 +129,9 @@ def tooth_life(dataset, params, pair=None, coating=None) -> dict:
         "cycles_to_fracture_p01": n01,
         "flash_temperature_max": float(np.max(flash)),
         "bulk_temperature_rise": bulk,
+        "disc_temperature_rise": heat_path["disc"],
+        "tooth_temperature_rise": heat_path["tooth"],
+        "flash_diffusion_length_max": heat_path["flash_reach"],
         "contact_temperature_max": contact,
         "root_stress": {"pinion": stresses["pinion"]["tensile"], "gear": stresses["gear"]["tensile"]},
         "flash_temperature": flash,
@@ -179,14 +188,10 @@ def _contact_temperature(pair, c, ff_inst, half, energy, params, coating, warnin
     blok = thermal.blok_flash_temperature(flux, half, u1, u2, params["thermal_conductivity"],
                                           params["thermal_diffusivity"])
     flash = blok["flash"]
-    period = pair.base_pitch / pair.contact_point_speed
-    power_1 = float(np.sum(energy * blok["share_1"])) / period
-    power_2 = float(np.sum(energy * (1.0 - blok["share_1"]))) / period
-    h = params["heat_transfer_coefficient"]
-    tip = pair.tip_radii
-    rise = [thermal.bulk_temperature_rise(power_1, h, math.pi * tip[0] ** 2),
-            thermal.bulk_temperature_rise(power_2, h, math.pi * tip[1] ** 2)]
-    bulk = float(max(rise))
+    heat = {"heated": (half > 0) & (flux > 0), "peclet": (blok["peclet_1"], blok["peclet_2"]),
+            "energy": (energy * blok["share_1"], energy * (1.0 - blok["share_1"]))}
+    heat_path = _heat_path(pair, c, half, heat, params, warnings)
+    bulk = float(max(heat_path["bulk"]))
     ambient = float(params["ambient_temperature"])
     contact = ambient + bulk + float(np.max(flash))
     if coating is not None:
@@ -197,7 +202,101 @@ def _contact_temperature(pair, c, ff_inst, half, energy, params, coating, warnin
             warnings.append(f"the contact temperature reaches {contact:.4g} K (ambient {ambient:.4g} K + bulk "
                             f"{bulk:.3g} K + flash {float(np.max(flash)):.3g} K), above the degradation temperature "
                             f"of {coating.name} ({limit:.4g} K)")
-    return flash, bulk, contact
+    return flash, bulk, contact, heat_path
+
+
+def _length(metres: float) -> str:
+    return f"{metres * 1e3:.3g} mm" if metres >= 1e-3 else f"{metres * 1e6:.3g} µm"
+
+
+def _disc_rise(power, g_hub, emissivity, ambient, radiating_area, h_gap, gap_area) -> float:
+    """The disc's rise with the radiation coefficient at the disc's own temperature [K].
+
+    ``thermal.disc_temperature_rise`` with Eq. 1.9's h_r(T_amb + dT, T_amb), so that the radiated heat is
+    eps sigma (T^4 - T_amb^4) exactly; h_r grows with dT, so the rise with h_r at the ambient (4 eps sigma
+    T^3) bounds it above and brackets the root.
+    """
+    from scipy.optimize import brentq
+
+    h_0 = thermal.radiation_coefficient(emissivity, ambient)
+    upper = thermal.disc_temperature_rise(power, g_hub, h_0, radiating_area, h_gap, gap_area)
+    if upper <= 0.0:
+        return 0.0
+
+    def balance(rise):
+        h_r = thermal.radiation_coefficient(emissivity, ambient + rise, ambient)
+        return rise - thermal.disc_temperature_rise(power, g_hub, h_r, radiating_area, h_gap, gap_area)
+
+    if balance(upper) <= 0.0:
+        return float(upper)
+    return float(brentq(balance, 0.0, upper, xtol=1e-12 * max(upper, 1e-300), rtol=1e-12))
+
+
+def _heat_path(pair, c, half, heat, params, warnings) -> dict:
+    """Where the friction heat goes (issue 38, MODEL 7h; docs/thermal.md, "Bulk temperature").
+
+    The mean power P_i into gear i (its Blok share of the energy dissipated over a meshing period)
+    flows from the flank along the tooth to its root (the tooth a straight rectangular fin of the pitch
+    thickness s, the face width b and the length from the root circle to the dissipation-weighted
+    contact radius, its sides losing heat by radiation and, in air, across the air gap: Incropera
+    Eq. 3.70), and leaves the disc through the hub, by radiation from both faces and, in air only,
+    across the air gap. Returns the disc and tooth rises [K] per gear, the bulk rise (disc + tooth)
+    per gear, and the flash half-space's largest diffusion length [m].
+    """
+    b = float(params["face_width"])
+    k = float(params["thermal_conductivity"])
+    kappa = float(params["thermal_diffusivity"])
+    ambient = float(params["ambient_temperature"])
+    air = params["environment"] == "air"
+    h_r = thermal.radiation_coefficient(params["emissivity"], ambient)
+    h_gap = float(params["heat_transfer_coefficient"]) if air else 0.0
+    g_hub = float(params["hub_thermal_conductance"])
+    period = pair.base_pitch / pair.contact_point_speed
+    m = pair.module
+    s = math.pi * m / 2.0  # tooth thickness on the pitch circle (no profile shift)
+    area, perimeter = s * b, 2.0 * (s + b)
+    h_fin = h_r + h_gap * s / perimeter  # the gap under the tooth's lower face only
+    root = pair.pitch_radii - float(params["dedendum_coefficient"]) * m
+    rho = np.abs(np.asarray(pair.radii_of_curvature(c), dtype=float))
+    radius = np.sqrt(rho ** 2 + pair.base_radii[:, None] ** 2)
+    out = {"disc": [], "tooth": [], "bulk": [], "length": [], "fin_ml": []}
+    for i in (0, 1):
+        energy_i = np.asarray(heat["energy"][i], dtype=float)
+        power = float(np.sum(energy_i)) / period
+        weights = np.maximum(energy_i, 0.0)
+        r_mean = float(np.sum(weights * radius[i]) / np.sum(weights)) if np.sum(weights) > 0 else float(pair.pitch_radii[i])
+        length = max(r_mean - float(root[i]), 0.0)
+        tip = float(pair.tip_radii[i])
+        disc = _disc_rise(power, g_hub, params["emissivity"], ambient, 2.0 * math.pi * tip ** 2, h_gap,
+                          math.pi * tip ** 2)
+        flank = thermal.fin_tip_excess_heat_input(power, disc, h_fin, perimeter, k, area, length)
+        out["disc"].append(float(disc))
+        out["tooth"].append(float(flank - disc))
+        out["bulk"].append(float(flank))
+        out["length"].append(length)
+        out["fin_ml"].append(thermal.fin_parameter(h_fin, perimeter, k, area) * length)
+    # the tooth carries the heat quasi-steadily while its diffusion time is short against a mesh
+    t_tooth = max(out["length"]) ** 2 / kappa
+    if t_tooth > pair.mesh_duration:
+        warnings.append(f"the tooth's diffusion time L^2/kappa = {t_tooth:.3g} s exceeds the mesh duration "
+                        f"{pair.mesh_duration:.3g} s: the tooth does not reach its steady conduction while it meshes, "
+                        f"and its temperature rise ({max(out['tooth']):.3g} K) is an upper bound")
+    # the flash temperature's half-space holds while the heat stays inside the tooth (its thickness s)
+    heated = np.asarray(heat["heated"], dtype=bool)
+    reach = np.zeros(half.size)
+    for peclet in heat["peclet"]:
+        ell = thermal.half_space_diffusion_length(half, np.maximum(peclet, 1e-12))
+        reach = np.maximum(reach, np.where(heated, ell, 0.0))
+    out["flash_reach"] = float(np.max(reach)) if reach.size else 0.0
+    outside = int(np.sum(reach > s))
+    if outside:
+        low = float(np.min(reach[reach > s]))
+        warnings.append(f"the flash temperature's half-space is outside its Péclet range at {outside} of "
+                        f"{int(np.sum(heated))} heated steps: the heat reaches {_length(low)} to "
+                        f"{_length(out['flash_reach'])} into the tooth (a / min(L, sqrt L)), beyond its thickness "
+                        f"{_length(s)}; there the tooth's conduction carries it (bulk_temperature_rise), and the flash "
+                        f"rise, whose logarithm runs out to that length, is an upper bound")
+    return out
 
 
 def _risk(fatigue, cycles):
