@@ -310,3 +310,18 @@ def test_the_report_gives_both_verdicts_and_the_limits():
     assert "capped" in items and "Plastic flow: 7 %" in items and "purely elastic" in items
     assert _startup_items(verdict({"mesh": {**summary, "startup_stiction": False, "startup_margin": 1e-4}}))[0].count(
         "starts") == 1
+
+
+def test_the_start_up_verdict_rescales_with_the_bond_energies_exactly(params):
+    """The uncertainty study rescales bond energies without a new solve (issue 27): the start-up margin too, from
+    the rows' bond counts (issue #35 item 5), equal to the re-solved cycle's."""
+    from memstribo.uncertainty.rescale import rescale_cycle
+
+    dataset = simulate_mesh(params, steps=21)
+    changed = {"vdw_bond_energy": 3 * params["vdw_bond_energy"], "bond_energy": 0.8 * params["bond_energy"]}
+    rescaled = rescale_cycle(dataset, params, changed)
+    solved = summarize(simulate_mesh(params.updated(changed), steps=21))
+    for key in ("startup_margin", "static_cof_max", "startup_margin_capped"):
+        assert rescaled[key] == pytest.approx(solved[key], rel=1e-9)
+    assert rescaled["startup_stiction"] == solved["startup_stiction"]
+    assert rescaled["stiction_mode"] == solved["stiction_mode"] and rescaled["verdict"] == solved["verdict"]

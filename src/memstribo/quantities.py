@@ -144,6 +144,11 @@ _ENTRIES = [
     ("bond_phase", "1", "bond phase of the row", "each row's phase in its bonds' renewal period at rest (the lattice "
      "registry, MODEL 7d, 7f)"),
     ("load_torque", "N m", "load torque on the gear at start-up", "load torque of the start-up torque balance (MODEL 7f)"),
+    ("startup_load_torque_limit", "N m", "largest load torque that still starts", "the load torque on the gear at "
+     "which the start-up margin reaches zero, the friction as computed (MODEL 7f); the frictionless pair delivers "
+     "T r_b2 / r_b1"),
+    ("startup_torque_arm", "m", "start-up torque arm", "r_w1 r_b2 / r_b1: a start-up margin at the pinion's pitch "
+     "radius as a load torque on the gear"),
     ("startup_formed_share", "1", "share of bonds formed at rest", "the logarithmic ageing law after startup_dwell "
      "(1: every bond; MODEL 7f)"),
     ("static_cof", "1", "start-up COF", "start-up friction force / (F_N + F_adh) of the pair"),
@@ -482,6 +487,16 @@ _ENTRIES = [
      "95 % confidence interval [low, high] of stiction_probability_nominal (Wilson)"),
     ("stiction_probability_nominal_text", _TEXT, "stiction probability at nominal constants, with interval",
      "the count over the realisations at nominal constants and its interval"),
+    ("startup_stiction_probability_nominal", "1", "start-up stiction probability at nominal constants",
+     "fraction of roughness realisations that cannot start with every constant at its nominal value"),
+    ("startup_stiction_probability_nominal_ci", "1", "start-up stiction probability interval at nominal constants",
+     "95 % confidence interval [low, high] of startup_stiction_probability_nominal (Wilson)"),
+    ("startup_stiction_probability_nominal_text", _TEXT, "start-up stiction probability at nominal constants, with "
+     "interval", "the count over the realisations at nominal constants and its interval"),
+    ("startup_stiction_probability_low", "1", "start-up stiction probability, lower bound", "lower bound of the 95 % "
+     "interval of the start-up stiction probability"),
+    ("startup_stiction_probability_high", "1", "start-up stiction probability, upper bound", "upper bound of the 95 % "
+     "interval of the start-up stiction probability"),
     ("stiction_probability_low", "1", "stiction probability, lower bound", "lower bound of the 95 % interval"),
     ("stiction_probability_high", "1", "stiction probability, upper bound", "upper bound of the 95 % interval"),
     ("uncertainty_samples", "1", "uncertainty samples", "realisations x constant sets of the uncertainty study"),

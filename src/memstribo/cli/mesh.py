@@ -242,7 +242,11 @@ UNCERTAINTY_KEYS = ("stiction_probability", "stiction_probability_ci", "stiction
                     "margin_quantiles_nominal", "startup_margin_quantiles", "cof_quantiles", "cof_split_quantiles",
                     "sensitivity", "dominant_constant", "designer_sentence", "sampled_constants", "fixed_constants",
                     "unconverged_samples", "failed_samples", "priors", "solve_sets", "design_effect",
-                    "effective_samples")
+                    "effective_samples",
+                    # the start-up verdict over the priors (MODEL 7f, issue #35)
+                    "startup_stiction_probability", "startup_stiction_probability_ci", "startup_stiction_count",
+                    "startup_stiction_probability_text", "startup_stiction_probability_nominal",
+                    "startup_stiction_probability_nominal_ci", "startup_stiction_probability_nominal_text")
 
 
 #: Keys only the JSON carries (the readable output gives them as notes).
@@ -337,6 +341,9 @@ def uncertainty_notes(values) -> list[str]:
     notes = [f"  P(stiction) = {values['stiction_probability_text']} over {values['realisations']} roughness "
              f"realisations x {values['constant_sets']} sets of the uncertain constants",
              f"  P(stiction) at nominal constants = {values['stiction_probability_nominal_text']}"]
+    if "startup_stiction_probability_text" in values:
+        notes.append(f"  P(start-up stiction) = {values['startup_stiction_probability_text']} (at nominal constants "
+                     f"{values['startup_stiction_probability_nominal_text']})")
     q = values.get("margin_quantiles")
     if q:
         notes.append(f"  margin 5/50/95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / {q['p95'] * 1e3:+.3g} mN")

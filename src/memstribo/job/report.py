@@ -107,16 +107,20 @@ def validation_rows() -> tuple[list, str | None]:
 
 
 def _startup_items(v) -> list[str]:
-    """The start-up verdict, the local limits' capped margins and the plastic fraction of the bare pair (MODEL 7d)."""
+    """The start-up verdict (the torque balance of MODEL 7f), the local limits' capped margins and the plastic fraction
+    of the bare pair."""
     if "bare_startup_margin" not in v:
         return []
     cls = "bad" if v["bare_startup_stiction"] else "good"
     word = "does NOT start" if v["bare_startup_stiction"] else "starts"
-    text = (f"<li>Bare silicon at rest, every bond formed: <span class='{cls}'>{word}</span>: start-up margin "
-            f"{_quantity(v['bare_startup_margin'], 'N')}, largest start-up COF {_quantity(v.get('bare_static_cof_max'))}"
-            f"; failing verdict: {_e(str(v.get('bare_stiction_mode')))}")
-    if "bare_startup_stiction_probability" in v:
-        text += (f"; start-up stiction probability {v['bare_startup_stiction_probability'] * 100:.0f} % over the "
+    text = (f"<li>Bare silicon at rest, its bonds formed: <span class='{cls}'>{word}</span>: start-up margin "
+            f"{_quantity(v['bare_startup_margin'], 'N')} (the torque balance of the pair, each friction force with "
+            f"its flank's radius of curvature as moment arm), largest start-up COF "
+            f"{_quantity(v.get('bare_static_cof_max'))}; failing verdict: {_e(str(v.get('bare_stiction_mode')))}")
+    if v.get("bare_startup_load_torque_limit") is not None:
+        text += f"; it starts under a load torque on the gear up to {_quantity(v['bare_startup_load_torque_limit'], 'N m')}"
+    if "bare_startup_stiction_probability_text" in v:
+        text += (f"; start-up stiction {_e(v['bare_startup_stiction_probability_text'])} over the roughness "
                  "realisations")
     items = [text + ".</li>"]
     if "bare_stiction_margin_capped" in v:
@@ -141,7 +145,9 @@ def _verdict_html(result) -> str:
     if "bare_stiction_probability" in v:
         p = v["bare_stiction_probability"]
         cls = "bad" if p >= 0.5 else ("warn" if p > 0 else "good")
-        items.append(f"<li><b>Bare silicon: <span class='{cls}'>stiction probability {p * 100:.0f} %</span></b> over "
+        probability = (_e(v["bare_stiction_probability_text"]) if v.get("bare_stiction_probability_text")
+                       else f"{p * 100:.0f} %")  # k of n with its 95 % interval (MODEL 7d)
+        items.append(f"<li><b>Bare silicon: <span class='{cls}'>running stiction {probability}</span></b> over "
                      f"{v['bare_realisations']} independent roughness realisations; the smallest margin "
                      f"F<sub>t</sub> &minus; R lies between {_quantity(v['bare_stiction_margin_p05'], 'N')} and "
                      f"{_quantity(v['bare_stiction_margin_p95'], 'N')} (5&ndash;95 %, median "

@@ -53,7 +53,9 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
                         "stiction_margin_capped", "startup_margin_capped", "stiction_mode_capped", "plastic_fraction",
                         "stiction_margin_uncapped", "startup_margin_uncapped", "startup_stiction_probability",
                         "startup_stiction_probability_text", "startup_margin_median", "startup_margin_p05",
-                        "startup_margin_p95", "converged", "grid_converged", "verdict"):
+                        "startup_margin_p95", "converged", "grid_converged", "verdict",
+                        # the start-up torque balance (MODEL 7f)
+                        "startup_load_torque_limit", "step_change_startup", "grid_change_startup"):
                 if key in summary:
                     out[f"{label}_{key}"] = summary[key]
     geometry = summaries.get("geometry")
@@ -92,6 +94,8 @@ def uncertainty_summary(result) -> dict[str, Any]:
         "summary": (f"P(stiction) = {result['stiction_probability_text']} over {result['realisations']} roughness "
                     f"realisations x {result['constant_sets']} sets of the unmeasured constants drawn from their priors; "
                     f"at the nominal constants {result['stiction_probability_nominal_text']}. "
+                    + (f"P(start-up stiction) = {result['startup_stiction_probability_text']} (the torque balance of "
+                       "MODEL 7f). " if result.get("startup_stiction_probability_text") else "")
                     + result.get("designer_sentence", "")),
         "interval": (f"stiction margin 5 / 50 / 95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / "
                      f"{q['p95'] * 1e3:+.3g} mN (negative: stiction)"),
@@ -99,4 +103,7 @@ def uncertainty_summary(result) -> dict[str, Any]:
         **{key: result[key] for key in ("stiction_probability", "stiction_probability_ci", "stiction_count", "samples",
                                         "stiction_probability_nominal", "stiction_probability_nominal_ci",
                                         "dominant", "designer_sentence", "solves", "rescalings", "elapsed")},
+        **{key: result[key] for key in ("startup_stiction_probability", "startup_stiction_probability_ci",
+                                        "startup_stiction_count", "startup_stiction_probability_text")
+           if key in result},
     }

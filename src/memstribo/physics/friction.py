@@ -180,20 +180,20 @@ def friction_force(dissipated_energy, distance):
 
 @cites("thesis", "model")
 def peak_bond_force(bond_count, bond_energy, bond_length):
-    """Peak lateral force of a formed bond population at start-up: N times the largest slope of the bond law [N].
+    """Peak force of a bond population pulled along the bonds' axes: N times the largest slope of the bond law [N].
 
     A bond is the Lennard-Jones 12-6 pair (3-14) with well depth ``U`` (its energy) and its
-    equilibrium distance at the bond length, sigma = D_chem 2^(-1/6) (3-16). Pulled along the
-    sliding direction from rest it resists with -dU/dr, whose largest value lies at
+    equilibrium distance at the bond length, sigma = D_chem 2^(-1/6) (3-16). Pulled along its
+    axis from rest it resists with -dU/dr, whose largest value lies at
     r* = (26/7)^(1/6) sigma (the inflection point of U):
 
         F_peak = N |F(r*)| = N (24 U / sigma) (7/26)^(7/6) (12/26) = 2.6899 N U / D_chem,
 
-    against the kinetic force N U / D_chem of the same bonds (3-1, 3.5: the energy U given up
-    once per bond length of sliding). A population at rest, every bond formed, must be pulled
-    past this peak before sliding begins (MODEL 7d, the start-up verdict). The force is taken
-    from :func:`memstribo.physics.potentials.lennard_jones_force`, so the start-up force follows
-    the bond law.
+    against the kinetic force N U / D_chem of the same bonds (3-1, 3.5). Version 3 started the
+    gear with this peak; a bond formed across the interface is sheared sideways at its gap, not
+    pulled along its axis, and its lateral peak is 1.2687 U / D
+    (:func:`memstribo.physics.static_friction.lennard_jones_lateral_peak`), which the start-up
+    verdict uses since version 4 (MODEL 7f). Kept as the axial strength of a bond.
 
     Parameters
     ----------

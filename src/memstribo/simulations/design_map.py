@@ -78,7 +78,11 @@ MAP_RESULTS = ("stiction_probability", "stiction_margin_median", "stiction_margi
                "cof_mean_median", "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median", "mesh_efficiency_p05",
                "mesh_efficiency_p95", "realisations", "cycles_to_failure", "cycles_to_stiction", "critical_wear",
                "stiction_probability_low", "stiction_probability_high", "stiction_probability_nominal",
-               "uncertainty_samples", "converged", "step_change_margin", "grid_change_margin")
+               "uncertainty_samples", "converged", "step_change_margin", "grid_change_margin",
+               # the start-up verdict over the realisations (MODEL 7f, issue #35)
+               "startup_stiction_probability", "startup_stiction_probability_low",
+               "startup_stiction_probability_high", "startup_margin_median", "startup_margin_p05",
+               "startup_margin_p95")
 
 _MAP_KEYS = {"name", "realisations", "steps", "plot", "cycles_observed", "wear_sweep", "grid", "fixed",
              "uncertainty"}
@@ -354,6 +358,9 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
     values: dict[str, Any] = {key: ensemble[key] for key in MAP_RESULTS if key in ensemble}
     values["stiction_probability_nominal"] = ensemble["stiction_probability"]
     values["stiction_probability_low"], values["stiction_probability_high"] = ensemble["stiction_probability_ci"]
+    if "startup_stiction_probability_ci" in ensemble:
+        values["startup_stiction_probability_low"], values["startup_stiction_probability_high"] = \
+            ensemble["startup_stiction_probability_ci"]
     values["uncertainty_samples"] = 0
     if uncertainty:
         from memstribo.uncertainty.study import uncertainty_study

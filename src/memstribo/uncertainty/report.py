@@ -33,6 +33,9 @@ def report_section(result, figures=None) -> str:
         f"<p><b>P(stiction) = {e(result['stiction_probability_text'])}</b> over {result['realisations']} roughness "
         f"realisations &times; {result['constant_sets']} sets of the uncertain constants drawn from their priors; "
         f"at the nominal constants: {e(result['stiction_probability_nominal_text'])}.</p>")
+    if result.get("startup_stiction_probability_text"):  # the start-up verdict over the same samples (MODEL 7f)
+        parts.append(f"<p><b>P(start-up stiction) = {e(result['startup_stiction_probability_text'])}</b> (at the "
+                     f"nominal constants: {e(result['startup_stiction_probability_nominal_text'])}).</p>")
     q = result.get("margin_quantiles")
     if q:
         parts.append(f"<p>Stiction margin 5 / 50 / 95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / "

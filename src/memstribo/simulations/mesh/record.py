@@ -187,6 +187,8 @@ def _attributes(params, setup, cycle, verdict, modulus, beta, coating, wear, rea
         "hardness": float(params["hardness"]) if params["hardness"] is not None else float("nan"),
         "lattice_registry": params["lattice_registry"],
         "load_torque": float(params["load_torque"]),
+        # a start-up margin [N] at the pinion's pitch radius as a load torque on the gear [N m]: r_w1 r_b2 / r_b1
+        "startup_torque_arm": float(setup.pair.pitch_radii[0] * setup.pair.base_radii[1] / setup.pair.base_radii[0]),
         "startup_formed_share": float(verdict["limits"]["formed_share"]),
         "friction_share_rigid": verdict["limits"]["share_rigid"],
         "friction_share_overstrength": verdict["limits"]["share_overstrength"],

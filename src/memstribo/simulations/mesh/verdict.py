@@ -83,7 +83,7 @@ SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic",
                 "plastic_steps", "stiction_margin_uncapped", "startup_margin_uncapped", "cof_mean_uncapped",
                 "hardness", "window", "lattice_registry", "startup_stiction_probability", "startup_stiction_count",
                 "startup_stiction_probability_ci", "startup_stiction_probability_text", "startup_margin_median",
-                "startup_margin_p05", "startup_margin_p95")
+                "startup_margin_p05", "startup_margin_p95", "startup_load_torque_limit")
 
 
 SUMMARY_UNITS = {key: quantity_unit(key) for key in SUMMARY_KEYS}
@@ -310,6 +310,9 @@ def _limit_summary(dataset, f_t, margin) -> dict:
         "window": float(dataset.attrs["window"]),
         "lattice_registry": str(dataset.attrs["lattice_registry"]),
     }
+    if "startup_torque_arm" in dataset.attrs:  # the largest load torque on the gear that still starts (MODEL 7f)
+        summary["startup_load_torque_limit"] = max(0.0, float(dataset.attrs["load_torque"])
+                                                   + startup * float(dataset.attrs["startup_torque_arm"]))
     for key in ("stiction_margin_uncapped", "startup_margin_uncapped", "cof_mean_uncapped"):
         if key in dataset.attrs:
             summary[key] = float(dataset.attrs[key])
