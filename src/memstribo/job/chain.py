@@ -136,7 +136,9 @@ class RunChain:
     Raises
     ------
     InputError
-        With ``resume``: no ``run.json`` in ``out``, or other parameters or options than the earlier run's.
+        ``out`` empty (the current folder); with ``resume``: no ``run.json`` in ``out``, a ``run.json`` that lists
+        a file outside ``out`` (absolute, with ``..``, or through a symbolic link) or an input file of the run,
+        or other parameters or options than the earlier run's. Nothing is deleted then.
     """
 
     def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False, resume: bool = False):
@@ -144,7 +146,9 @@ class RunChain:
         self.params = params
         #: the parameters of the model stages: ``params`` with the geometry derived from a measured profile
         self.model_params = params
-        self.folder = ensure_directory(out)
+        from memstribo.job.folder import results_folder
+
+        self.folder = ensure_directory(results_folder(out, "out"))  # '' (the current folder) refused
         self.options = options or RunOptions()
         self.progress = progress
         self.results: dict[str, Any] = {}
@@ -175,6 +179,13 @@ class RunChain:
         except (ValueError, KeyError, TypeError) as exc:
             raise InputError(f"--resume: {manifest_path} is not a run.json of memstribo ({exc}); run again with "
                              "--overwrite.") from None
+        # first (before any other check): every file a stage lists is deleted when the stage runs again (_forget): each must be the run's own,
+        # inside the folder, and no input of this run (a crafted run.json deleted files elsewhere, issue #41)
+        from memstribo.job.folder import check_inputs_outside, owned_files
+
+        owned = owned_files(self.folder, manifest, "--resume")
+        check_inputs_outside(self.folder, [*self.options.roughness_files, self.options.map], "--resume",
+                             files=owned.values())
         options = json.loads(dumps_json(to_jsonable(self.options.__dict__)))
         if manifest.get("options") != options:
             changed = sorted(k for k in set(options) | set(manifest.get("options") or {})
@@ -240,10 +251,12 @@ class RunChain:
 
     def _forget(self, name: str) -> None:
         """Before a resumed run reruns stage ``name``: remove the earlier attempt's files and traceback."""
+        from memstribo.job.folder import listed_path
+
         earlier = (self.previous or {}).get("stages_by_name", {}).get(name)
         for file in (earlier or {}).get("files", []):
-            path = self.folder / file
-            if path.is_file():
+            path = listed_path(self.folder, file, "--resume")  # checked in _read_previous; checked again here
+            if path.is_file() or path.is_symlink():
                 path.unlink()
         error = self.folder / f"error_{name}.txt"
         if error.is_file():
@@ -793,6 +806,23 @@ class RunChain:
     def _write_text(self, name, text):
         atomic_write_text(self.folder / name, text)
 
+    def _written(self) -> list[str]:
+        """The files this run wrote that no stage lists (``--overwrite`` deletes only what run.json lists).
+
+        The fixed files (:data:`memstribo.job.folder.MANIFEST_FILES`), the tracebacks of failed stages and
+        the design map's manifest and points (written point by point, before the stage can list them)."""
+        from memstribo.job.folder import MANIFEST_FILES
+
+        names = [name for name in MANIFEST_FILES if name != "run.json"] + ["run.json"]
+        names += sorted(p.name for p in self.folder.glob("error_*.txt")
+                        if p.stem[len("error_"):] in self.records)
+        if self.options.map:
+            folder = self.folder / "map"
+            names += [str(p.relative_to(self.folder)) for p in sorted(folder.glob("map.*")) if p.is_file()]
+            names += [str(p.relative_to(self.folder)) for p in sorted((folder / "points").glob("*.json"))
+                      if p.is_file()]
+        return names
+
     def _finish(self, elapsed, validation=None) -> RunResult:
         from memstribo.references import used_references
         from memstribo.job.report import write_report
@@ -807,7 +837,7 @@ class RunChain:
             "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
             "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
             "references": [key for key, _ in references], "kept": list(self.kept),
-            "provenance": software_provenance()}))
+            "written": self._written(), "provenance": software_provenance()}))
         write_report(result, self.folder / "report.html", validation)
         return result
 

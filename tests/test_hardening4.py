@@ -1,0 +1,150 @@
+"""Round four of the bad inputs (issue #41): a results folder owns only what it wrote, ``coating_wear`` is
+honoured wherever a coating is given, and pint quantities with numpy magnitudes are read. One test per input,
+each with the behaviour the issue states; every refusal deletes nothing and names the input."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import memstribo
+from memstribo.errors import InputError
+
+REPO = Path(__file__).resolve().parent.parent
+SCAN = REPO / "data" / "afm" / "si_profile_linescan.txt"
+
+SMALL = '[run]\nstages = ["gear"]\nvalidation = false\n'
+
+
+@pytest.fixture(scope="module")
+def earlier_run(tmp_path_factory):
+    """A finished small run (the gear stage only, ~3 s) to copy and tamper with."""
+    from memstribo.cli.main import main
+
+    folder = tmp_path_factory.mktemp("earlier")
+    config = folder / "small.toml"
+    config.write_text(SMALL)
+    assert main(["run", str(config), "--out", str(folder / "out"), "--progress", "off", "--quiet"]) == 0
+    return folder / "out"
+
+
+def _copy(earlier_run, tmp_path) -> tuple[Path, Path]:
+    out = tmp_path / "out"
+    shutil.copytree(earlier_run, out, symlinks=True)
+    config = tmp_path / "small.toml"
+    config.write_text(SMALL)
+    return out, config
+
+
+def _fail_gear_with_files(out: Path, files: list[str], roughness_files=None) -> None:
+    """Make run.json say the gear stage failed and wrote ``files`` (what --resume deletes before rerunning it)."""
+    manifest = json.loads((out / "run.json").read_text())
+    if roughness_files is not None:  # as if the earlier run had read them (--resume wants the same options)
+        manifest["options"]["roughness_files"] = roughness_files
+    for stage in manifest["stages"]:
+        if stage["name"] == "gear":
+            stage["status"], stage["files"] = "failed", files
+    (out / "run.json").write_text(json.dumps(manifest))
+
+
+# --- 1. a results folder owns only what it wrote -------------------------------------------------------------------
+
+@pytest.mark.parametrize("kind", ["absolute", "dotdot", "symlink"])
+def test_resume_refuses_a_run_json_listing_a_file_outside_the_folder(cli, earlier_run, tmp_path, kind):
+    out, config = _copy(earlier_run, tmp_path)
+    victim = tmp_path / "victim.txt"
+    victim.write_text("the user's")
+    listed = {"absolute": str(victim), "dotdot": "../victim.txt", "symlink": "data/link.txt"}[kind]
+    if kind == "symlink":
+        (out / "data" / "link.txt").symlink_to(victim)
+    _fail_gear_with_files(out, [listed])
+    code, _, err = cli("run", config, "--out", out, "--resume", "--progress", "off")
+    assert code == 2 and "Traceback" not in err
+    assert "--resume" in err and "run.json lists the file" in err and "nothing was deleted" in err
+    assert {"absolute": "absolute", "dotdot": "'..'", "symlink": "symbolic link"}[kind] in err
+    assert victim.read_text() == "the user's"
+
+
+def test_resume_refuses_a_run_json_listing_an_input_of_the_run(cli, earlier_run, tmp_path):
+    out, config = _copy(earlier_run, tmp_path)
+    scan = out / "data" / "my_scan.txt"
+    shutil.copy(SCAN, scan)
+    _fail_gear_with_files(out, ["data/my_scan.txt"], roughness_files=[str(scan)])
+    code, _, err = cli("run", config, "--out", out, "--resume", "--roughness", scan, "--progress", "off")
+    assert code == 2 and "input file" in err and "my_scan.txt" in err and scan.is_file()
+
+
+def test_resume_still_deletes_and_reruns_a_failed_stage_s_own_files(cli, earlier_run, tmp_path):
+    out, config = _copy(earlier_run, tmp_path)
+    (out / "data" / "stale.json").write_text("{}")
+    _fail_gear_with_files(out, ["data/gear.json", "data/stale.json"])
+    code, _, err = cli("run", config, "--out", out, "--resume", "--progress", "off", "--quiet")
+    assert code == 0, err
+    assert not (out / "data" / "stale.json").exists() and (out / "data" / "gear.json").is_file()
+
+
+def test_overwrite_refuses_a_folder_holding_an_input_of_the_run(cli, earlier_run, tmp_path, monkeypatch):
+    """``--roughness data/afm/my_scan.opdx --out . --overwrite`` deleted the scan, then failed."""
+    out, config = _copy(earlier_run, tmp_path)
+    (out / "data" / "afm").mkdir()
+    scan = out / "data" / "afm" / "my_scan.txt"
+    shutil.copy(SCAN, scan)
+    monkeypatch.chdir(out)
+    code, _, err = cli("run", config, "--roughness", "data/afm/my_scan.txt", "--out", ".", "--overwrite",
+                       "--progress", "off")
+    assert code == 2 and "--overwrite" in err and "my_scan.txt" in err and "input file" in err
+    assert scan.is_file() and (out / "run.json").is_file() and (out / "data" / "gear.json").is_file()
+
+
+def test_overwrite_refuses_foreign_files_anywhere_in_the_folder(cli, earlier_run, tmp_path):
+    out, config = _copy(earlier_run, tmp_path)
+    (out / "figures" / "my_plot.png").write_bytes(b"mine")  # in memstribo's own sub-folder: still the user's
+    code, _, err = cli("run", config, "--out", out, "--overwrite", "--progress", "off")
+    assert code == 2 and "figures/my_plot.png" in err and "nothing was deleted" in err
+    assert (out / "figures" / "my_plot.png").read_bytes() == b"mine" and (out / "data" / "gear.json").is_file()
+
+
+def test_overwrite_refuses_a_folder_without_run_json(cli, tmp_path):
+    out = tmp_path / "out"
+    (out / "data").mkdir(parents=True)
+    (out / "data" / "measurements.csv").write_text("1,2\n")
+    (out / "report.html").write_text("mine")
+    code, _, err = cli("run", "--out", out, "--overwrite", "--progress", "off")
+    assert code == 2 and "no run.json" in err and "nothing was deleted" in err
+    assert (out / "data" / "measurements.csv").is_file() and (out / "report.html").read_text() == "mine"
+
+
+def test_overwrite_refuses_a_run_json_listing_a_file_outside(cli, earlier_run, tmp_path):
+    out, config = _copy(earlier_run, tmp_path)
+    victim = tmp_path / "victim.txt"
+    victim.write_text("the user's")
+    manifest = json.loads((out / "run.json").read_text())
+    manifest["written"].append("../victim.txt")
+    (out / "run.json").write_text(json.dumps(manifest))
+    code, _, err = cli("run", config, "--out", out, "--overwrite", "--progress", "off")
+    assert code == 2 and "'..'" in err and victim.is_file() and (out / "data" / "gear.json").is_file()
+
+
+def test_overwrite_deletes_exactly_the_listed_files(cli, earlier_run, tmp_path):
+    out, config = _copy(earlier_run, tmp_path)
+    before = sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file())
+    manifest = json.loads((out / "run.json").read_text())
+    listed = set(manifest["written"]) | {f for s in manifest["stages"] for f in s["files"]}
+    assert set(before) <= listed  # the manifest lists every file the run wrote
+    code, _, err = cli("run", config, "--out", out, "--overwrite", "--progress", "off", "--quiet")
+    assert code == 0, err
+    assert (out / "run.json").is_file() and json.loads((out / "run.json").read_text())["stages"][3]["status"] == "done"
+
+
+@pytest.mark.parametrize("out", ["", "   "])
+def test_cli_and_api_refuse_an_empty_out(cli, tmp_path, monkeypatch, out):
+    monkeypatch.chdir(tmp_path)
+    code, _, err = cli("run", "--out", out, "--progress", "off")
+    assert code == 2 and "--out" in err and "empty folder name" in err and "Traceback" not in err
+    with pytest.raises(InputError, match=r"out=.*empty folder name is the current folder"):
+        memstribo.run(out=out, stages=["gear"], validation=False)
+    assert list(tmp_path.iterdir()) == []  # nothing written into the current folder
