@@ -148,3 +148,38 @@ def test_cli_and_api_refuse_an_empty_out(cli, tmp_path, monkeypatch, out):
     with pytest.raises(InputError, match=r"out=.*empty folder name is the current folder"):
         memstribo.run(out=out, stages=["gear"], validation=False)
     assert list(tmp_path.iterdir()) == []  # nothing written into the current folder
+
+
+# --- 3. pint quantities with numpy magnitudes ----------------------------------------------------------------------
+
+def test_parameter_set_reads_a_numpy_valued_quantity():
+    pint = pytest.importorskip("pint")
+    ureg = pint.UnitRegistry()
+    assert memstribo.parameter_set(normal_load=np.float64(50) * ureg.uN)["normal_load"] == pytest.approx(5e-5)
+    assert memstribo.parameter_set(normal_load=np.int64(50) * ureg.uN)["normal_load"] == pytest.approx(5e-5)
+    with pytest.raises(InputError, match="normal_load.*expected one value, not a list"):
+        memstribo.parameter_set(normal_load=[25, 50] * ureg.uN)
+    with pytest.raises(InputError, match="2-D array.*flat list"):
+        memstribo.parameter_set(normal_load=np.ones((2, 2)) * ureg.uN)
+
+
+def test_sweep_reads_an_array_valued_quantity(monkeypatch):
+    pint = pytest.importorskip("pint")
+    ureg = pint.UnitRegistry()
+    from memstribo.simulations import mesh
+
+    seen = []
+
+    def fake_sweep(params, parameter, numbers, roughness, **kwargs):  # the conversion is what is tested
+        seen.append(list(numbers))
+        return [{"normal_load": n, "cof_mean": 0.1, "stiction": False, "load_case": "thesis"} for n in numbers]
+
+    monkeypatch.setattr(mesh, "sweep", fake_sweep)
+    params = memstribo.parameter_set(load_case="thesis")
+    for values in ([25, 50] * ureg.uN, [np.float64(25) * ureg.uN, np.float64(50) * ureg.uN],
+                   np.array([25.0, 50.0]) * ureg.uN):
+        points = memstribo.sweep(params, "load", values, steps=5)
+        assert points["normal_load"].values.tolist() == pytest.approx([2.5e-5, 5e-5])
+    assert seen[0] == pytest.approx([2.5e-5, 5e-5])
+    with pytest.raises(InputError, match="sweep values.*give a list of values"):
+        memstribo.sweep(params, "load", "25 uN", steps=5)

@@ -27,10 +27,35 @@ __all__ = ["read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", 
 
 
 def _plain(value: Any) -> Any:
-    """A pint quantity as a string pint can read back (``"50 micronewton"``); anything else unchanged."""
-    if hasattr(value, "magnitude") and hasattr(value, "units"):
-        return f"{value.magnitude!r} {value.units}"
-    return value
+    """A pint quantity as a string pint can read back (``"50.0 micronewton"``); anything else unchanged.
+
+    The magnitude may be a Python number, a numpy scalar (``np.float64(50) * ureg.uN``) or a 1-D array
+    (``[25, 50] * ureg.uN``, which gives a list of strings, one per value). ``repr`` of a numpy scalar is
+    ``np.float64(50.0)`` under numpy 2, which no unit parser reads, so every magnitude goes through ``float``.
+    """
+    if not (hasattr(value, "magnitude") and hasattr(value, "units")):
+        return value
+    import numpy as np
+
+    magnitude = value.magnitude
+    try:
+        array = np.asarray(magnitude, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"quantity {_shown(value)}: its magnitude is not a number; give a number or a list of "
+                         "numbers times a unit (e.g. 50 * ureg.uN, [25, 50] * ureg.uN).") from None
+    if array.ndim == 0:
+        return f"{float(array)!r} {value.units}"
+    if array.ndim == 1:
+        return [f"{float(m)!r} {value.units}" for m in array]
+    raise InputError(f"quantity {_shown(value)}: a {array.ndim}-D array of values; give one value or a flat list "
+                     "(e.g. [25, 50] * ureg.uN).")
+
+
+def _shown(value: Any) -> str:
+    """``value`` for a message: printable, cut short."""
+    from memstribo.units import printable
+
+    return printable(repr(value), 60)
 
 
 def read_surface(surface, *, channel: str | None = None, unit: str | None = None):
@@ -302,7 +327,8 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     params : Parameters
     parameter : {"load", "torque", "area"}
     values : sequence
-        Loads [N], torques [N m] (numbers, strings with units or pint quantities) or area multiples.
+        Loads [N], torques [N m] (numbers, strings with units or pint quantities) or area multiples; or one
+        pint quantity holding an array (``[25, 50] * ureg.uN``).
     surface, steps, coating, wear, progress
         As for :func:`mesh_cycle`.
 
@@ -333,7 +359,11 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     units = {"load": "N", "torque": "N*m", "area": ""}
     if parameter not in units:
         raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load', 'torque' or 'area'.")
-    numbers = [to_si(_plain(v), units[parameter], parameter) for v in values]
+    plain = _plain(values)  # a pint quantity with an array magnitude: one string per value
+    if isinstance(plain, str) or not hasattr(plain, "__iter__"):
+        raise InputError(f"sweep values {_shown(values)}: give a list of values to sweep (e.g. ['25 uN', '50 uN'] "
+                         "or [25, 50] * ureg.uN), not one value.")
+    numbers = [to_si(_plain(v), units[parameter], parameter) for v in plain]
     roughness = None if surface is None else read_surface(surface)
     coating_object = get_coating(coating, params) if isinstance(coating, str) else coating
     points = mesh_sweep(params, parameter, numbers, roughness, steps=steps, coating=coating_object, wear=wear,
