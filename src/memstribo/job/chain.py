@@ -143,6 +143,11 @@ class RunChain:
 
     def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False, resume: bool = False):
         (options or RunOptions()).check_with(params)  # every [run] value against the parameters, before any stage
+        from memstribo.checks import refuse_unused_coating_wear
+
+        refuse_unused_coating_wear(params, "memstribo run", "the coated stage is the intact coating (Omega = 0, "
+                                   "thesis 5.4) and the wear sweep takes the worn fractions of [run] wear (e.g. "
+                                   "wear = [0.0, 0.2, 1.0])")
         self.params = params
         #: the parameters of the model stages: ``params`` with the geometry derived from a measured profile
         self.model_params = params
@@ -813,7 +818,7 @@ class RunChain:
         the design map's manifest and points (written point by point, before the stage can list them)."""
         from memstribo.job.folder import MANIFEST_FILES
 
-        names = [name for name in MANIFEST_FILES if name != "run.json"] + ["run.json"]
+        names = list(MANIFEST_FILES)
         names += sorted(p.name for p in self.folder.glob("error_*.txt")
                         if p.stem[len("error_"):] in self.records)
         if self.options.map:
