@@ -150,6 +150,68 @@ def test_cli_and_api_refuse_an_empty_out(cli, tmp_path, monkeypatch, out):
     assert list(tmp_path.iterdir()) == []  # nothing written into the current folder
 
 
+# --- 2. coating_wear honoured wherever a coating is given ----------------------------------------------------------
+
+def _cof(cli, *argv):
+    return cli.json("mesh", *argv, "--steps", "5", "--no-refine")["cof_mean"]
+
+
+def test_mesh_honours_coating_wear_as_wear(cli):
+    """``mesh --coating OTS --set coating_wear=0.2`` computed bare silicon (COF 0.481 against 0.123 at 0.2)."""
+    intact = _cof(cli, "--coating", "OTS", "--wear", "0")
+    explicit = _cof(cli, "--coating", "OTS", "--wear", "0.2")
+    by_parameter = _cof(cli, "--coating", "OTS", "--set", "coating_wear=0.2")
+    bare = _cof(cli)
+    assert intact < by_parameter < bare
+    assert by_parameter == pytest.approx(explicit, rel=1e-12)
+    # without --wear a coating takes the parameter coating_wear (0, the intact gear tooth), as `coating` does
+    assert _cof(cli, "--coating", "OTS") == pytest.approx(intact, rel=1e-12)
+    assert _cof(cli, "--coating", "OTS", "--wear", "1") == pytest.approx(bare, rel=1e-12)
+
+
+def test_api_honours_coating_wear_as_wear():
+    params = memstribo.parameter_set(coating_wear=0.2)
+    by_parameter = memstribo.mesh_cycle(params, coating="OTS", steps=5).summary["cof_mean"]
+    explicit = memstribo.mesh_cycle(coating="OTS", wear=0.2, steps=5).summary["cof_mean"]
+    intact = memstribo.mesh_cycle(coating="OTS", wear=0.0, steps=5).summary["cof_mean"]
+    bare = memstribo.mesh_cycle(steps=5).summary["cof_mean"]
+    assert intact < by_parameter < bare and by_parameter == pytest.approx(explicit, rel=1e-12)
+    assert memstribo.mesh_cycle(params, coating="OTS", wear=0.2, steps=5).summary["cof_mean"] == by_parameter
+
+
+def test_wear_and_coating_wear_that_disagree_are_refused(cli):
+    code, _, err = cli("mesh", "--coating", "OTS", "--wear", "0.5", "--set", "coating_wear=0.2", "--steps", "5")
+    assert code == 2 and "--wear 0.5" in err and "coating_wear = 0.2" in err and "give one of them" in err
+    with pytest.raises(InputError, match="wear=0.5 and the parameter coating_wear = 0.2 disagree"):
+        memstribo.mesh_cycle(memstribo.parameter_set(coating_wear=0.2), coating="OTS", wear=0.5, steps=5)
+    with pytest.raises(InputError, match="wear=0.5 needs a coating"):
+        memstribo.mesh_cycle(wear=0.5, steps=5)
+    with pytest.raises(InputError, match="coating_wear needs a coating"):
+        memstribo.sweep(memstribo.parameter_set(coating_wear=0.2), "load", ["25 uN"], steps=5)
+    code, _, err = cli("coating", "--wear", "0.5", "--set", "coating_wear=0.2", "--steps", "5")
+    assert code == 2 and "--wear 0.5" in err and "disagree" in err
+
+
+@pytest.mark.parametrize("argv", [("run", "--set", "coating_wear=0.2"), ("damage", "--set", "coating_wear=0.2")])
+def test_commands_that_sweep_wear_themselves_refuse_coating_wear(cli, tmp_path, argv):
+    code, _, err = cli(*argv, "--steps", "5", *(("--out", tmp_path / "out") if argv[0] == "run" else ()))
+    assert code == 2 and "coating_wear = 0.2 is not used by memstribo " + argv[0] in err and "Traceback" not in err
+    assert not (tmp_path / "out" / "run.json").exists()
+
+
+def test_study_points_take_their_coating_wear():
+    from memstribo.simulations.study import prepare_points, study_spec
+
+    params = memstribo.parameter_set()
+    spec = study_spec({"points": [{"coating": "OTS", "coating_wear": 0.2}, {"coating": "OTS"},
+                                  {"coating": "OTS", "wear": 0.2, "coating_wear": 0.2}]})
+    assert [p.options["wear"] for p in prepare_points(spec, params)] == [0.2, 0.0, 0.2]
+    with pytest.raises(InputError, match="wear = 0.5 and coating_wear = 0.2 disagree"):
+        prepare_points(study_spec({"points": [{"coating": "OTS", "wear": 0.5, "coating_wear": 0.2}]}), params)
+    with pytest.raises(InputError, match="coating_wear = 0.2 needs a coating"):
+        prepare_points(study_spec({"points": [{"coating_wear": 0.2}]}), params)
+
+
 # --- 3. pint quantities with numpy magnitudes ----------------------------------------------------------------------
 
 def test_parameter_set_reads_a_numpy_valued_quantity():

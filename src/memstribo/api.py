@@ -249,7 +249,7 @@ class MeshCycle:
 
 
 def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int | None = None, coating=None,
-               wear: float = 1.0, client=None, progress: bool = False, refine: bool = False) -> MeshCycle:
+               wear: float | None = None, client=None, progress: bool = False, refine: bool = False) -> MeshCycle:
     """Friction, adhesion, COF and the stiction verdict over one meshing cycle (thesis 4.6-4.9, MODEL 7b).
 
     Parameters
@@ -264,8 +264,10 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
         Positions along the path of contact (default ``mesh_steps``).
     coating : str or Coating, optional
         SAM coating ("OTS", "FDTS"); None is bare silicon.
-    wear : float
-        Worn fraction Omega of the gear's coating (with a coating).
+    wear : float, optional
+        Worn fraction Omega [-] of the gear's coating, 0 (intact) to 1 (bare), with a coating; None: the
+        parameter ``coating_wear`` (0 unless set). A ``wear`` that disagrees with a ``coating_wear`` set in
+        ``params`` is refused, as is either one without a coating.
     client : distributed.Client, optional
         Runs the realisations on a Dask cluster.
     progress : bool
@@ -291,14 +293,15 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     >>> sorted(k for k in cycle.summary if k.startswith("cof_m"))
     ['cof_max', 'cof_mean', 'cof_mean_uncapped']
     """
-    from memstribo.checks import check_coating_wear, check_mesh_arguments, check_unused_values
-    check_mesh_arguments(params, steps, realisations, wear)
+    from memstribo.checks import check_coating_wear, check_mesh_arguments, check_unused_values, coating_wear_of
+    check_mesh_arguments(params, steps, realisations, 1.0 if wear is None else wear)
     check_unused_values(params or parameter_set())
     check_coating_wear(params or parameter_set(), coating)
     from memstribo.physics.coating import get_coating
     from memstribo.simulations.mesh import simulate_ensemble, simulate_mesh, summarize
 
     params = parameter_set() if params is None else params
+    wear = coating_wear_of(params, coating, wear, option="wear")  # else coating_wear was ignored (issue #41)
     roughness = None if surface is None else read_surface(surface)
     coating_object = get_coating(coating, params) if isinstance(coating, str) else coating
     if refine:
@@ -319,7 +322,7 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
 
 
 def sweep(params, parameter: str, values, surface=None, *, steps: int | None = None, coating=None,
-          wear: float = 1.0, progress: bool = False):
+          wear: float | None = None, progress: bool = False):
     """Meshing cycles over loads, drive torques or nominal areas, as one labelled dataset.
 
     Parameters
@@ -346,8 +349,11 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     >>> points["normal_load"].values.tolist(), points["cof_mean"].attrs["units"]
     ([2.5e-05, 5e-05], '1')
     """
-    from memstribo.checks import check_mesh_arguments
-    check_mesh_arguments(params, steps, 1, wear)
+    from memstribo.checks import check_coating_wear, check_mesh_arguments, coating_wear_of
+    check_mesh_arguments(params, steps, 1, 1.0 if wear is None else wear)
+    params = parameter_set() if params is None else params
+    check_coating_wear(params, coating)
+    wear = coating_wear_of(params, coating, wear, option="wear")
     import numpy as np
     import xarray as xr
 

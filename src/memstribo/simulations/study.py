@@ -396,6 +396,7 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
             point_params = base.updated(overrides, origin=f"study point {index}") if overrides else base
         except InputError as exc:
             raise InputError(f"{where}: {exc}") from None
+        options = _point_wear(options, raw, point_params, where)
         if options.get("steps") is not None and "mesh_window" in point_params:
             from memstribo.parameters import check_mesh_size
 
@@ -407,6 +408,31 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
         digest = _hash({"inputs": raw, "parameters": point_params.to_dict(), "options": options})[:10]
         points.append(_Point(f"p{index:06d}-{digest}", index, dict(raw), point_params, options))
     return points
+
+
+def _point_wear(options: dict, raw: Mapping[str, Any], params, where: str) -> dict:
+    """A point's worn fraction: its ``wear``, else the parameter ``coating_wear`` of the point (issue #41).
+
+    A coated point without ``wear`` ran at Omega = 0 whatever ``coating_wear`` said; now it takes the
+    point's ``coating_wear`` (0 unless the spec sets it, so earlier studies keep their points' hashes).
+    A point giving both, disagreeing, and a bare point given ``coating_wear`` itself, are refused.
+    """
+    if "coating_wear" not in params:
+        return options
+    coating_wear = float(params["coating_wear"])
+    if not options.get("coating"):
+        if "coating_wear" in raw:
+            raise InputError(f"{where}: coating_wear = {coating_wear:g} needs a coating (add coating = 'OTS' to the "
+                             "point): bare silicon has no coating to wear.")
+        return options
+    if "wear" not in raw:
+        return {**options, "wear": coating_wear}
+    from memstribo.checks import user_set
+
+    if user_set(params, "coating_wear") and options["wear"] != coating_wear:
+        raise InputError(f"{where}: wear = {options['wear']:g} and coating_wear = {coating_wear:g} disagree: both are "
+                         "the worn fraction Omega of the gear's coating; give one of them.")
+    return options
 
 
 def _describe(raw: Mapping[str, Any]) -> str:
