@@ -113,7 +113,9 @@ def test_overwrite_refuses_a_folder_without_run_json(cli, tmp_path):
     (out / "data").mkdir(parents=True)
     (out / "data" / "measurements.csv").write_text("1,2\n")
     (out / "report.html").write_text("mine")
-    code, _, err = cli("run", "--out", out, "--overwrite", "--progress", "off")
+    config = tmp_path / "small.toml"  # small: were it not refused, the run stays short
+    config.write_text(SMALL)
+    code, _, err = cli("run", config, "--out", out, "--overwrite", "--progress", "off")
     assert code == 2 and "no run.json" in err and "nothing was deleted" in err
     assert (out / "data" / "measurements.csv").is_file() and (out / "report.html").read_text() == "mine"
 
@@ -141,9 +143,11 @@ def test_overwrite_deletes_exactly_the_listed_files(cli, earlier_run, tmp_path):
 
 
 @pytest.mark.parametrize("out", ["", "   "])
-def test_cli_and_api_refuse_an_empty_out(cli, tmp_path, monkeypatch, out):
+def test_cli_and_api_refuse_an_empty_out(cli, tmp_path, tmp_path_factory, monkeypatch, out):
+    config = tmp_path_factory.mktemp("config") / "small.toml"  # small: were it not refused, the run stays short
+    config.write_text(SMALL)
     monkeypatch.chdir(tmp_path)
-    code, _, err = cli("run", "--out", out, "--progress", "off")
+    code, _, err = cli("run", config, "--out", out, "--progress", "off")
     assert code == 2 and "--out" in err and "empty folder name" in err and "Traceback" not in err
     with pytest.raises(InputError, match=r"out=.*empty folder name is the current folder"):
         memstribo.run(out=out, stages=["gear"], validation=False)
@@ -194,7 +198,10 @@ def test_wear_and_coating_wear_that_disagree_are_refused(cli):
 
 @pytest.mark.parametrize("argv", [("run", "--set", "coating_wear=0.2"), ("damage", "--set", "coating_wear=0.2")])
 def test_commands_that_sweep_wear_themselves_refuse_coating_wear(cli, tmp_path, argv):
-    code, _, err = cli(*argv, "--steps", "5", *(("--out", tmp_path / "out") if argv[0] == "run" else ()))
+    config = tmp_path / "coated.toml"  # small: were it not refused, the run stays short
+    config.write_text('[run]\nstages = ["gear", "coated"]\nvalidation = false\n')
+    extra = (config, "--out", tmp_path / "out") if argv[0] == "run" else ("--wear-points", "2")
+    code, _, err = cli(argv[0], *extra, *argv[1:], "--steps", "5")
     assert code == 2 and "coating_wear = 0.2 is not used by memstribo " + argv[0] in err and "Traceback" not in err
     assert not (tmp_path / "out" / "run.json").exists()
 
