@@ -281,8 +281,9 @@ def coating_wear_of(params, coating, wear=None, option: str = "--wear") -> float
     if not coating:
         check_coating_wear(params, coating)
         if wear is not None and wear != 1.0:
-            raise InputError(f"{shown(wear)} needs a coating ({'--coating NAME' if option.startswith('-') else 'coating=NAME'}"
-                             ", e.g. OTS): bare silicon has no coating to wear (it is wear 1).")
+            coating_option = "--coating NAME" if option.startswith("-") else "coating=NAME"
+            raise InputError(f"{shown(wear)} needs a coating ({coating_option}, e.g. OTS): bare silicon has no "
+                             "coating to wear (it is wear 1).")
         return 1.0
     if wear is None:
         return float(params["coating_wear"])

@@ -184,8 +184,9 @@ class RunChain:
         except (ValueError, KeyError, TypeError) as exc:
             raise InputError(f"--resume: {manifest_path} is not a run.json of memstribo ({exc}); run again with "
                              "--overwrite.") from None
-        # first (before any other check): every file a stage lists is deleted when the stage runs again (_forget): each must be the run's own,
-        # inside the folder, and no input of this run (a crafted run.json deleted files elsewhere, issue #41)
+        # first, before any other check: a stage's files are deleted when it runs again (_forget), so each
+        # must be the run's own, inside the folder, and no input of this run (a crafted run.json deleted files
+        # elsewhere, issue #41)
         from memstribo.job.folder import check_inputs_outside, owned_files
 
         owned = owned_files(self.folder, manifest, "--resume")
