@@ -19,7 +19,7 @@ from memstribo.errors import InputError
 
 __all__ = ["as_array", "as_positive_scalar", "as_count", "check_mesh_arguments", "check_parameter_set_arguments",
            "user_set", "check_unused_values", "check_coating_wear", "coating_wear_of",
-           "refuse_unused_coating_wear"]
+           "refuse_unused_coating_wear", "point_wear"]
 
 
 def _unit(unit: str) -> str:
@@ -291,3 +291,26 @@ def coating_wear_of(params, coating, wear=None, option: str = "--wear") -> float
         raise InputError(f"{shown(wear)} and the parameter coating_wear = {float(params['coating_wear']):g} disagree: "
                          "both are the worn fraction Omega of the gear's coating; give one of them.")
     return wear
+
+
+def point_wear(options: dict, raw, params, where: str) -> dict:
+    """A study or map point's options with its worn fraction: its ``wear``, else the point's ``coating_wear``.
+
+    ``options`` are the point's validated study options (``coating``, and ``wear`` when ``raw``, the point as
+    the spec gives it, has one); ``params`` its parameters; ``where`` names the point in the messages.
+    A coated point without ``wear`` ran at Omega = 0 whatever ``coating_wear`` said (issue #41); now it takes
+    the point's ``coating_wear`` (0 unless the spec sets it, so earlier studies keep their points' hashes).
+    A point giving both, disagreeing, and a bare point given ``coating_wear`` itself, are refused.
+    """
+    coating_wear = float(params["coating_wear"]) if "coating_wear" in params else 0.0
+    if not options.get("coating"):
+        if "coating_wear" in raw:
+            raise InputError(f"{where}: coating_wear = {coating_wear:g} needs a coating (add coating = 'OTS' to the "
+                             "point): bare silicon has no coating to wear.")
+        return {**options, "wear": options.get("wear", 1.0)}
+    if "wear" not in raw:
+        return {**options, "wear": coating_wear}
+    if "coating_wear" in params and user_set(params, "coating_wear") and options["wear"] != coating_wear:
+        raise InputError(f"{where}: wear = {options['wear']:g} and coating_wear = {coating_wear:g} disagree: both are "
+                         "the worn fraction Omega of the gear's coating; give one of them.")
+    return options

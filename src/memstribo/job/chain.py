@@ -812,24 +812,8 @@ class RunChain:
     def _write_text(self, name, text):
         atomic_write_text(self.folder / name, text)
 
-    def _written(self) -> list[str]:
-        """The files this run wrote that no stage lists (``--overwrite`` deletes only what run.json lists).
-
-        The fixed files (:data:`memstribo.job.folder.MANIFEST_FILES`), the tracebacks of failed stages and
-        the design map's manifest and points (written point by point, before the stage can list them)."""
-        from memstribo.job.folder import MANIFEST_FILES
-
-        names = list(MANIFEST_FILES)
-        names += sorted(p.name for p in self.folder.glob("error_*.txt")
-                        if p.stem[len("error_"):] in self.records)
-        if self.options.map:
-            folder = self.folder / "map"
-            names += [str(p.relative_to(self.folder)) for p in sorted(folder.glob("map.*")) if p.is_file()]
-            names += [str(p.relative_to(self.folder)) for p in sorted((folder / "points").glob("*.json"))
-                      if p.is_file()]
-        return names
-
     def _finish(self, elapsed, validation=None) -> RunResult:
+        from memstribo.job.folder import written_files
         from memstribo.references import used_references
         from memstribo.job.report import write_report
 
@@ -843,7 +827,8 @@ class RunChain:
             "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
             "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
             "references": [key for key, _ in references], "kept": list(self.kept),
-            "written": self._written(), "provenance": software_provenance()}))
+            "written": written_files(self.folder, self.records, bool(self.options.map)),
+            "provenance": software_provenance()}))
         write_report(result, self.folder / "report.html", validation)
         return result
 

@@ -25,8 +25,8 @@ from typing import Any
 from memstribo.errors import InputError
 from memstribo.units import printable
 
-__all__ = ["results_folder", "listed_path", "owned_files", "check_inputs_outside", "clear_for_overwrite",
-           "MANIFEST_FILES"]
+__all__ = ["results_folder", "listed_path", "owned_files", "written_files", "check_inputs_outside",
+           "clear_for_overwrite", "MANIFEST_FILES"]
 
 #: Files every run writes beside its stages' files (``run.json`` of a run before version 4 does not list
 #: them in ``written``; they are owned by the manifest that sits beside them).
@@ -57,6 +57,23 @@ def results_folder(out, option: str = "out") -> Path:
                          f"report.html and run.json into its folder; give a folder name (e.g. {example}, or {here} "
                          "for the current folder on purpose).")
     return Path(out)
+
+
+def written_files(folder: Path, stages: Iterable[str], with_map: bool) -> list[str]:
+    """The files a run wrote that no stage lists, for ``run.json``'s ``written`` (relative to ``folder``).
+
+    :data:`MANIFEST_FILES`, the tracebacks ``error_<stage>.txt`` of ``stages`` and, ``with_map``, the design
+    map's ``map/map.*`` and ``map/points/*.json`` (written point by point, before the stage could list them):
+    ``--overwrite`` deletes only what ``run.json`` lists.
+    """
+    stages = set(stages)
+    names = list(MANIFEST_FILES)
+    names += sorted(p.name for p in folder.glob("error_*.txt") if p.stem[len("error_"):] in stages)
+    if with_map:
+        names += [str(p.relative_to(folder)) for p in sorted((folder / "map").glob("map.*")) if p.is_file()]
+        names += [str(p.relative_to(folder)) for p in sorted((folder / "map" / "points").glob("*.json"))
+                  if p.is_file()]
+    return names
 
 
 def listed_path(folder: Path, relative: Any, where: str) -> Path:

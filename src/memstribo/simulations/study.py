@@ -60,6 +60,7 @@ from typing import Any
 
 import numpy as np
 
+from memstribo.checks import point_wear
 from memstribo.errors import InputError, MemstriboError, did_you_mean
 from memstribo.output import dumps_json, ensure_directory, to_jsonable
 from memstribo.quantities import attrs_or
@@ -351,10 +352,8 @@ def _point_options(raw: Mapping[str, Any], where: str, base_folder: Path | None)
         wear = to_si(options["wear"], "", "wear")
         if not 0.0 <= wear <= 1.0:
             raise InputError(f"{where}: wear = {options['wear']!r} is outside 0 to 1 (the worn fraction Omega).")
-        clean["wear"] = wear
-    else:
-        clean["wear"] = 0.0 if clean["coating"] else 1.0
-    if clean["coating"] is None and clean["wear"] != 1.0:
+        clean["wear"] = wear  # else: the point's coating_wear (checks.point_wear, once its parameters are known)
+    if clean["coating"] is None and clean.get("wear", 1.0) != 1.0:
         raise InputError(f"{where}: wear = {clean['wear']:g} needs a coating (bare silicon is wear = 1).")
     roughness = options.get("roughness", "synthetic")
     if str(roughness).strip().lower() == "synthetic":
@@ -396,7 +395,7 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
             point_params = base.updated(overrides, origin=f"study point {index}") if overrides else base
         except InputError as exc:
             raise InputError(f"{where}: {exc}") from None
-        options = _point_wear(options, raw, point_params, where)
+        options = point_wear(options, raw, point_params, where)
         if options.get("steps") is not None and "mesh_window" in point_params:
             from memstribo.parameters import check_mesh_size
 
@@ -408,31 +407,6 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
         digest = _hash({"inputs": raw, "parameters": point_params.to_dict(), "options": options})[:10]
         points.append(_Point(f"p{index:06d}-{digest}", index, dict(raw), point_params, options))
     return points
-
-
-def _point_wear(options: dict, raw: Mapping[str, Any], params, where: str) -> dict:
-    """A point's worn fraction: its ``wear``, else the parameter ``coating_wear`` of the point (issue #41).
-
-    A coated point without ``wear`` ran at Omega = 0 whatever ``coating_wear`` said; now it takes the
-    point's ``coating_wear`` (0 unless the spec sets it, so earlier studies keep their points' hashes).
-    A point giving both, disagreeing, and a bare point given ``coating_wear`` itself, are refused.
-    """
-    if "coating_wear" not in params:
-        return options
-    coating_wear = float(params["coating_wear"])
-    if not options.get("coating"):
-        if "coating_wear" in raw:
-            raise InputError(f"{where}: coating_wear = {coating_wear:g} needs a coating (add coating = 'OTS' to the "
-                             "point): bare silicon has no coating to wear.")
-        return options
-    if "wear" not in raw:
-        return {**options, "wear": coating_wear}
-    from memstribo.checks import user_set
-
-    if user_set(params, "coating_wear") and options["wear"] != coating_wear:
-        raise InputError(f"{where}: wear = {options['wear']:g} and coating_wear = {coating_wear:g} disagree: both are "
-                         "the worn fraction Omega of the gear's coating; give one of them.")
-    return options
 
 
 def _describe(raw: Mapping[str, Any]) -> str:
