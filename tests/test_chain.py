@@ -264,6 +264,8 @@ def test_run_refuses_a_non_empty_folder_and_overwrite_clears_stale_files(cli, tm
     (out / "report.html").write_text("stale")
     (out / "data").mkdir()
     (out / "data" / "old_stage.nc").write_text("stale")
+    # an earlier run: its run.json lists what it wrote (--overwrite deletes only that, issue #41)
+    (out / "run.json").write_text('{"stages": [{"name": "mesh", "files": ["data/old_stage.nc"]}]}')
     code, _, err = cli("run", "--out", out, "--set", "mesh_steps=5")
     assert code == 2 and "not empty" in err and "--overwrite" in err
     (out / "notes.txt").write_text("mine")

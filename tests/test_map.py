@@ -428,6 +428,10 @@ def test_run_with_a_map_spec_writes_the_map_and_its_report_section(tmp_path):
     stages = {s["name"]: s for s in manifest["stages"]}
     assert stages["design_map"]["status"] == "done" and stages["gear"]["status"] == "done"
     assert "map/map.nc" in stages["design_map"]["files"]
+    from memstribo.job.folder import _all_files, owned_files
+
+    # run.json lists every file the run wrote, the map's points included: --overwrite can clear it (#41)
+    assert set(_all_files(out)) <= set(owned_files(out, manifest, "--overwrite"))
     summary = manifest["summaries"]["design_map"]
     assert (summary["points"], summary["computed"], summary["realisations"]) == (4, 4, 2)
     with xr.open_dataset(out / "map" / "map.nc") as disk:

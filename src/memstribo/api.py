@@ -27,10 +27,35 @@ __all__ = ["read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", 
 
 
 def _plain(value: Any) -> Any:
-    """A pint quantity as a string pint can read back (``"50 micronewton"``); anything else unchanged."""
-    if hasattr(value, "magnitude") and hasattr(value, "units"):
-        return f"{value.magnitude!r} {value.units}"
-    return value
+    """A pint quantity as a string pint can read back (``"50.0 micronewton"``); anything else unchanged.
+
+    The magnitude may be a Python number, a numpy scalar (``np.float64(50) * ureg.uN``) or a 1-D array
+    (``[25, 50] * ureg.uN``, which gives a list of strings, one per value). ``repr`` of a numpy scalar is
+    ``np.float64(50.0)`` under numpy 2, which no unit parser reads, so every magnitude goes through ``float``.
+    """
+    if not (hasattr(value, "magnitude") and hasattr(value, "units")):
+        return value
+    import numpy as np
+
+    magnitude = value.magnitude
+    try:
+        array = np.asarray(magnitude, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"quantity {_shown(value)}: its magnitude is not a number; give a number or a list of "
+                         "numbers times a unit (e.g. 50 * ureg.uN, [25, 50] * ureg.uN).") from None
+    if array.ndim == 0:
+        return f"{float(array)!r} {value.units}"
+    if array.ndim == 1:
+        return [f"{float(m)!r} {value.units}" for m in array]
+    raise InputError(f"quantity {_shown(value)}: a {array.ndim}-D array of values; give one value or a flat list "
+                     "(e.g. [25, 50] * ureg.uN).")
+
+
+def _shown(value: Any) -> str:
+    """``value`` for a message: printable, cut short."""
+    from memstribo.units import printable
+
+    return printable(repr(value), 60)
 
 
 def read_surface(surface, *, channel: str | None = None, unit: str | None = None):
@@ -224,7 +249,7 @@ class MeshCycle:
 
 
 def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int | None = None, coating=None,
-               wear: float = 1.0, client=None, progress: bool = False, refine: bool = False) -> MeshCycle:
+               wear: float | None = None, client=None, progress: bool = False, refine: bool = False) -> MeshCycle:
     """Friction, adhesion, COF and the stiction verdict over one meshing cycle (thesis 4.6-4.9, MODEL 7b).
 
     Parameters
@@ -239,8 +264,10 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
         Positions along the path of contact (default ``mesh_steps``).
     coating : str or Coating, optional
         SAM coating ("OTS", "FDTS"); None is bare silicon.
-    wear : float
-        Worn fraction Omega of the gear's coating (with a coating).
+    wear : float, optional
+        Worn fraction Omega [-] of the gear's coating, 0 (intact) to 1 (bare), with a coating; None: the
+        parameter ``coating_wear`` (0 unless set). A ``wear`` that disagrees with a ``coating_wear`` set in
+        ``params`` is refused, as is either one without a coating.
     client : distributed.Client, optional
         Runs the realisations on a Dask cluster.
     progress : bool
@@ -266,14 +293,15 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     >>> sorted(k for k in cycle.summary if k.startswith("cof_m"))
     ['cof_max', 'cof_mean', 'cof_mean_uncapped']
     """
-    from memstribo.checks import check_coating_wear, check_mesh_arguments, check_unused_values
-    check_mesh_arguments(params, steps, realisations, wear)
+    from memstribo.checks import check_coating_wear, check_mesh_arguments, check_unused_values, coating_wear_of
+    check_mesh_arguments(params, steps, realisations, 1.0 if wear is None else wear)
     check_unused_values(params or parameter_set())
     check_coating_wear(params or parameter_set(), coating)
     from memstribo.physics.coating import get_coating
     from memstribo.simulations.mesh import simulate_ensemble, simulate_mesh, summarize
 
     params = parameter_set() if params is None else params
+    wear = coating_wear_of(params, coating, wear, option="wear")  # else coating_wear was ignored (issue #41)
     roughness = None if surface is None else read_surface(surface)
     coating_object = get_coating(coating, params) if isinstance(coating, str) else coating
     if refine:
@@ -294,7 +322,7 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
 
 
 def sweep(params, parameter: str, values, surface=None, *, steps: int | None = None, coating=None,
-          wear: float = 1.0, progress: bool = False):
+          wear: float | None = None, progress: bool = False):
     """Meshing cycles over loads, drive torques or nominal areas, as one labelled dataset.
 
     Parameters
@@ -302,7 +330,8 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     params : Parameters
     parameter : {"load", "torque", "area"}
     values : sequence
-        Loads [N], torques [N m] (numbers, strings with units or pint quantities) or area multiples.
+        Loads [N], torques [N m] (numbers, strings with units or pint quantities) or area multiples; or one
+        pint quantity holding an array (``[25, 50] * ureg.uN``).
     surface, steps, coating, wear, progress
         As for :func:`mesh_cycle`.
 
@@ -320,8 +349,11 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     >>> points["normal_load"].values.tolist(), points["cof_mean"].attrs["units"]
     ([2.5e-05, 5e-05], '1')
     """
-    from memstribo.checks import check_mesh_arguments
-    check_mesh_arguments(params, steps, 1, wear)
+    from memstribo.checks import check_coating_wear, check_mesh_arguments, coating_wear_of
+    check_mesh_arguments(params, steps, 1, 1.0 if wear is None else wear)
+    params = parameter_set() if params is None else params
+    check_coating_wear(params, coating)
+    wear = coating_wear_of(params, coating, wear, option="wear")
     import numpy as np
     import xarray as xr
 
@@ -333,7 +365,11 @@ def sweep(params, parameter: str, values, surface=None, *, steps: int | None = N
     units = {"load": "N", "torque": "N*m", "area": ""}
     if parameter not in units:
         raise InputError(f"sweep parameter '{parameter}' is unknown: use 'load', 'torque' or 'area'.")
-    numbers = [to_si(_plain(v), units[parameter], parameter) for v in values]
+    plain = _plain(values)  # a pint quantity with an array magnitude: one string per value
+    if isinstance(plain, str) or not hasattr(plain, "__iter__"):
+        raise InputError(f"sweep values {_shown(values)}: give a list of values to sweep (e.g. ['25 uN', '50 uN'] "
+                         "or [25, 50] * ureg.uN), not one value.")
+    numbers = [to_si(_plain(v), units[parameter], parameter) for v in plain]
     roughness = None if surface is None else read_surface(surface)
     coating_object = get_coating(coating, params) if isinstance(coating, str) else coating
     points = mesh_sweep(params, parameter, numbers, roughness, steps=steps, coating=coating_object, wear=wear,

@@ -18,7 +18,8 @@ import numpy as np
 from memstribo.errors import InputError
 
 __all__ = ["as_array", "as_positive_scalar", "as_count", "check_mesh_arguments", "check_parameter_set_arguments",
-           "user_set", "check_unused_values", "check_coating_wear"]
+           "user_set", "check_unused_values", "check_coating_wear", "coating_wear_of",
+           "refuse_unused_coating_wear", "point_wear"]
 
 
 def _unit(unit: str) -> str:
@@ -237,3 +238,79 @@ def check_coating_wear(params, coating) -> None:
     """Refuse ``coating_wear`` set by the user for bare silicon (as ``--wear`` without ``--coating``)."""
     if not coating and user_set(params, "coating_wear"):
         raise InputError("coating_wear needs a coating (--coating NAME): bare silicon has no coating to wear.")
+
+
+def refuse_unused_coating_wear(params, where: str, why: str) -> None:
+    """Refuse a user-set ``coating_wear`` where the worn fraction comes from elsewhere (``why`` says where).
+
+    ``memstribo run`` and ``memstribo damage`` start from the intact coating (Omega = 0) and sweep Omega
+    themselves: a ``coating_wear`` given to them would be ignored without a word (issue #41).
+    """
+    if user_set(params, "coating_wear"):
+        raise InputError(f"coating_wear = {float(params['coating_wear']):g} is not used by {where}: {why}; leave "
+                         "coating_wear out.")
+
+
+def coating_wear_of(params, coating, wear=None, option: str = "--wear") -> float:
+    """The worn fraction Omega [-] of the gear's coating that a meshing cycle uses (1 for bare silicon).
+
+    With a coating: ``wear`` when given, else the parameter ``coating_wear`` (0 by default, the fully
+    functionalised gear tooth of thesis 5.5.3), so that ``--set coating_wear=0.2`` acts as ``--wear 0.2``
+    does (issue #41: it was ignored, and the cycle ran at Omega = 1, bare silicon). Without a coating: 1.
+
+    Parameters
+    ----------
+    params : memstribo.parameters.Parameters
+    coating : str, Coating or None
+        The coating given (None or "" for bare silicon).
+    wear : float, optional
+        The worn fraction given explicitly (``--wear``, the API's ``wear``); None: not given.
+    option : str
+        How ``wear`` was given, for the messages (``"--wear"`` or ``"wear"``).
+
+    Raises
+    ------
+    InputError
+        ``wear`` outside 0..1; ``wear`` (other than 1) or a user-set ``coating_wear`` without a coating;
+        ``wear`` and a user-set ``coating_wear`` that disagree (two values of one quantity).
+    """
+    shown = (lambda value: f"{option} {value:g}") if option.startswith("-") else (lambda value: f"{option}={value:g}")
+    if wear is not None:
+        check_mesh_arguments(None, None, 1, wear)  # a number within 0..1
+        wear = float(wear)
+    if not coating:
+        check_coating_wear(params, coating)
+        if wear is not None and wear != 1.0:
+            coating_option = "--coating NAME" if option.startswith("-") else "coating=NAME"
+            raise InputError(f"{shown(wear)} needs a coating ({coating_option}, e.g. OTS): bare silicon has no "
+                             "coating to wear (it is wear 1).")
+        return 1.0
+    if wear is None:
+        return float(params["coating_wear"])
+    if user_set(params, "coating_wear") and wear != float(params["coating_wear"]):
+        raise InputError(f"{shown(wear)} and the parameter coating_wear = {float(params['coating_wear']):g} disagree: "
+                         "both are the worn fraction Omega of the gear's coating; give one of them.")
+    return wear
+
+
+def point_wear(options: dict, raw, params, where: str) -> dict:
+    """A study or map point's options with its worn fraction: its ``wear``, else the point's ``coating_wear``.
+
+    ``options`` are the point's validated study options (``coating``, and ``wear`` when ``raw``, the point as
+    the spec gives it, has one); ``params`` its parameters; ``where`` names the point in the messages.
+    A coated point without ``wear`` ran at Omega = 0 whatever ``coating_wear`` said (issue #41); now it takes
+    the point's ``coating_wear`` (0 unless the spec sets it, so earlier studies keep their points' hashes).
+    A point giving both, disagreeing, and a bare point given ``coating_wear`` itself, are refused.
+    """
+    coating_wear = float(params["coating_wear"]) if "coating_wear" in params else 0.0
+    if not options.get("coating"):
+        if "coating_wear" in raw:
+            raise InputError(f"{where}: coating_wear = {coating_wear:g} needs a coating (add coating = 'OTS' to the "
+                             "point): bare silicon has no coating to wear.")
+        return {**options, "wear": options.get("wear", 1.0)}
+    if "wear" not in raw:
+        return {**options, "wear": coating_wear}
+    if "coating_wear" in params and user_set(params, "coating_wear") and options["wear"] != coating_wear:
+        raise InputError(f"{where}: wear = {options['wear']:g} and coating_wear = {coating_wear:g} disagree: both are "
+                         "the worn fraction Omega of the gear's coating; give one of them.")
+    return options

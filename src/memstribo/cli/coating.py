@@ -60,7 +60,15 @@ def run(args, params):
     coating = get_coating(args.coating, params)
     if args.calibrate is not None:
         return _calibrate(args, params, coating)
+    from memstribo.checks import user_set
+
     wears = parse_wear_list(params["coating_wear"] if args.wear is None else args.wear)
+    if args.wear is not None and user_set(params, "coating_wear") and list(wears) != [params["coating_wear"]]:
+        from memstribo.units import printable  # two values of one quantity (issue #41)
+
+        raise InputError(f"--wear {printable(args.wear)} and the parameter coating_wear = "
+                         f"{float(params['coating_wear']):g} disagree: both give the worn fraction Omega of the gear's "
+                         "coating; give one of them (--wear for a table of several).")
     if args.steps is not None and not 2 <= args.steps <= 100_000:
         raise InputError(f"--steps must be an integer from 2 to 100 000, got {args.steps}.")
     sweep = wear_sweep(params, coating, wears, steps=args.steps, progress=progress_enabled(args))

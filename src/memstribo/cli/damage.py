@@ -72,6 +72,10 @@ def run(args, params):
     params = apply_load_case(args, params)
     loads = parse_loads(args.loads) if args.loads is not None else None
     _check_arguments(args, params)
+    from memstribo.checks import refuse_unused_coating_wear
+
+    refuse_unused_coating_wear(params, "memstribo damage", "the damage analysis loads the intact coating "
+                               "(Omega = 0) and sweeps Omega over --wear-points itself")
     coating = get_coating(args.coating, params)
     c1_known = params["damage_coefficient"] is not None or args.observed_life is not None
     mesh_dataset = None

@@ -86,8 +86,9 @@ def add_common_arguments(parser):
     parser.add_argument("--load-case", choices=("torque", "thesis"),
                         help="normal load: 'torque' (F_t / cos alpha from the drive torque, default) or 'thesis' "
                              "(normal_load as given, 25 µN); sets the parameter load_case")
-    parser.add_argument("--wear", type=float, default=1.0, metavar="OMEGA",
-                        help="worn fraction of the gear's coating, 0..1 (with --coating; default 1 = bare)")
+    parser.add_argument("--wear", type=float, default=None, metavar="OMEGA",
+                        help="worn fraction of the gear's coating, 0 (intact) .. 1 (bare), with --coating (default: "
+                             "the parameter coating_wear, 0)")
     add_progress_argument(parser)
 
 
@@ -95,7 +96,7 @@ def simulation_options(args, params=None):
     """Keyword arguments of :func:`memstribo.simulations.mesh.simulate_mesh` from the command line."""
     from memstribo.errors import InputError
 
-    from memstribo.checks import check_coating_wear, check_mesh_arguments
+    from memstribo.checks import check_coating_wear, check_mesh_arguments, coating_wear_of
 
     coating = None
     if params is not None:
@@ -104,13 +105,16 @@ def simulation_options(args, params=None):
         from memstribo.physics.coating import get_coating
 
         coating = get_coating(args.coating, params)
-    elif args.wear != 1.0:
+    elif args.wear is not None and args.wear != 1.0:
         raise InputError("--wear needs --coating (bare silicon has no coating to wear).")
     if args.steps is not None and args.steps < 3:
         raise InputError(f"--steps must be at least 3, got {args.steps}.")
-    check_mesh_arguments(params, args.steps, 1, args.wear)
+    check_mesh_arguments(params, args.steps, 1, 1.0 if args.wear is None else args.wear)
+    # --wear, else the parameter coating_wear (it was ignored: a coated cycle ran at Omega = 1, issue #41)
+    wear = coating_wear_of(params, args.coating, args.wear) if params is not None else \
+        (1.0 if args.wear is None else args.wear)
     progress = progress_enabled(args)
-    return dict(steps=args.steps, coating=coating, wear=args.wear, progress=progress)
+    return dict(steps=args.steps, coating=coating, wear=wear, progress=progress)
 
 
 def roughness_of(args):

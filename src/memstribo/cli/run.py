@@ -48,8 +48,9 @@ def register(subparsers, parents):
                         help="normal load of the meshing stages: 'torque' (F_t / cos alpha, default) or 'thesis' "
                              "(normal_load, 25 uN); the load sweep always uses the thesis case")
     parser.add_argument("--overwrite", action="store_true",
-                        help="write into DIR although it holds files (stale files of an earlier run are removed "
-                             "first); without it a non-empty DIR is refused")
+                        help="write into DIR although it holds an earlier run: the files its run.json lists are "
+                             "deleted first; a DIR holding any other file, or an input of this run, is refused; "
+                             "without it a non-empty DIR is refused")
     parser.add_argument("--resume", action="store_true",
                         help="continue the run in DIR (killed, or with failed stages): stages run.json records as "
                              "done are read back, not recomputed; failed and missing stages (and those after them "
@@ -89,6 +90,9 @@ def run(args, params):
         extra = RunOptions.from_table({"roughness_files": args.roughness}, Path.cwd()).roughness_files
         options = replace(options, roughness_files=options.roughness_files + extra)
     progress = progress_enabled(args)
+    from memstribo.job.folder import results_folder
+
+    results_folder(args.out, "--out")  # '' would be the current folder
     if args.resume:
         if args.overwrite:
             raise InputError("--resume and --overwrite together: --resume continues the run in --out, --overwrite "
@@ -97,7 +101,9 @@ def run(args, params):
             raise InputError(f"--resume: {args.out} holds no run.json (no run of memstribo to continue); run without "
                              "--resume.")
     else:
-        _prepare_folder(Path(args.out), args.overwrite)
+        # the run's input files: --overwrite must never delete one (issue #41)
+        inputs = [*options.roughness_files, options.map, args.config_file, getattr(args, "config", None)]
+        _prepare_folder(Path(args.out), args.overwrite, inputs)
     chain = RunChain(params, args.out, options, progress=progress, resume=args.resume)
     _configure_logging(args, progress)
     result = chain.run()
@@ -119,15 +125,15 @@ def run(args, params):
                          exit_status=1 if failed else 0)
 
 
-#: What a results folder of memstribo holds (removed by --overwrite; anything else stays and is refused).
-_OWN = ("data", "figures", "report.html", "run.json", "parameters.toml", "references.txt", "map")
+def _prepare_folder(folder, overwrite: bool, inputs=()) -> None:
+    """Refuse a non-empty results folder unless ``overwrite``; then delete the files its ``run.json`` lists.
 
-
-def _prepare_folder(folder, overwrite: bool) -> None:
-    """Refuse a non-empty results folder unless ``overwrite``; then clear memstribo's own files from it."""
-    import shutil
-
+    ``--overwrite`` deletes only what the earlier run's manifest lists as written by memstribo, and refuses
+    (deleting nothing) a folder that holds any other file or one of ``inputs``, the new run's input files
+    (:func:`memstribo.job.folder.clear_for_overwrite`): a results folder owns only what it wrote.
+    """
     from memstribo.errors import InputError
+    from memstribo.job.folder import clear_for_overwrite
 
     if not folder.exists():
         return
@@ -140,13 +146,7 @@ def _prepare_folder(folder, overwrite: bool) -> None:
         shown = ", ".join(entries[:5]) + (", ..." if len(entries) > 5 else "")
         raise InputError(f"--out {folder}: the folder is not empty ({shown}); give another folder or --overwrite "
                          "(stale files of an earlier run would otherwise sit beside the new report).")
-    foreign = [name for name in entries if name not in _OWN and not name.startswith("error_")]
-    if foreign:
-        raise InputError(f"--out {folder}: --overwrite clears only memstribo's own files, but the folder also holds "
-                         f"{', '.join(foreign[:5])}; give an empty folder.")
-    for name in entries:
-        path = folder / name
-        shutil.rmtree(path) if path.is_dir() else path.unlink()
+    clear_for_overwrite(folder, inputs, "--out")
 
 
 def _configure_logging(args, progress: bool) -> None:

@@ -136,15 +136,24 @@ class RunChain:
     Raises
     ------
     InputError
-        With ``resume``: no ``run.json`` in ``out``, or other parameters or options than the earlier run's.
+        ``out`` empty (the current folder); with ``resume``: no ``run.json`` in ``out``, a ``run.json`` that lists
+        a file outside ``out`` (absolute, with ``..``, or through a symbolic link) or an input file of the run,
+        or other parameters or options than the earlier run's. Nothing is deleted then.
     """
 
     def __init__(self, params, out, options: RunOptions | None = None, progress: bool = False, resume: bool = False):
         (options or RunOptions()).check_with(params)  # every [run] value against the parameters, before any stage
+        from memstribo.checks import refuse_unused_coating_wear
+
+        refuse_unused_coating_wear(params, "memstribo run", "the coated stage is the intact coating (Omega = 0, "
+                                   "thesis 5.4) and the wear sweep takes the worn fractions of [run] wear (e.g. "
+                                   "wear = [0.0, 0.2, 1.0])")
         self.params = params
         #: the parameters of the model stages: ``params`` with the geometry derived from a measured profile
         self.model_params = params
-        self.folder = ensure_directory(out)
+        from memstribo.job.folder import results_folder
+
+        self.folder = ensure_directory(results_folder(out, "out"))  # '' (the current folder) refused
         self.options = options or RunOptions()
         self.progress = progress
         self.results: dict[str, Any] = {}
@@ -175,6 +184,14 @@ class RunChain:
         except (ValueError, KeyError, TypeError) as exc:
             raise InputError(f"--resume: {manifest_path} is not a run.json of memstribo ({exc}); run again with "
                              "--overwrite.") from None
+        # first, before any other check: a stage's files are deleted when it runs again (_forget), so each
+        # must be the run's own, inside the folder, and no input of this run (a crafted run.json deleted files
+        # elsewhere, issue #41)
+        from memstribo.job.folder import check_inputs_outside, owned_files
+
+        owned = owned_files(self.folder, manifest, "--resume")
+        check_inputs_outside(self.folder, [*self.options.roughness_files, self.options.map], "--resume",
+                             files=owned.values())
         options = json.loads(dumps_json(to_jsonable(self.options.__dict__)))
         if manifest.get("options") != options:
             changed = sorted(k for k in set(options) | set(manifest.get("options") or {})
@@ -240,10 +257,12 @@ class RunChain:
 
     def _forget(self, name: str) -> None:
         """Before a resumed run reruns stage ``name``: remove the earlier attempt's files and traceback."""
+        from memstribo.job.folder import listed_path
+
         earlier = (self.previous or {}).get("stages_by_name", {}).get(name)
         for file in (earlier or {}).get("files", []):
-            path = self.folder / file
-            if path.is_file():
+            path = listed_path(self.folder, file, "--resume")  # checked in _read_previous; checked again here
+            if path.is_file() or path.is_symlink():
                 path.unlink()
         error = self.folder / f"error_{name}.txt"
         if error.is_file():
@@ -794,6 +813,7 @@ class RunChain:
         atomic_write_text(self.folder / name, text)
 
     def _finish(self, elapsed, validation=None) -> RunResult:
+        from memstribo.job.folder import written_files
         from memstribo.references import used_references
         from memstribo.job.report import write_report
 
@@ -807,6 +827,7 @@ class RunChain:
             "stages": [r.__dict__ for r in result.stages], "figures": [f.__dict__ for f in result.figures],
             "verdict": result.verdict, "summaries": result.summaries, "inputs": result.inputs,
             "references": [key for key, _ in references], "kept": list(self.kept),
+            "written": written_files(self.folder, self.records, bool(self.options.map)),
             "provenance": software_provenance()}))
         write_report(result, self.folder / "report.html", validation)
         return result

@@ -60,6 +60,7 @@ from typing import Any
 
 import numpy as np
 
+from memstribo.checks import point_wear
 from memstribo.errors import InputError, MemstriboError, did_you_mean
 from memstribo.output import dumps_json, ensure_directory, to_jsonable
 from memstribo.quantities import attrs_or
@@ -351,10 +352,8 @@ def _point_options(raw: Mapping[str, Any], where: str, base_folder: Path | None)
         wear = to_si(options["wear"], "", "wear")
         if not 0.0 <= wear <= 1.0:
             raise InputError(f"{where}: wear = {options['wear']!r} is outside 0 to 1 (the worn fraction Omega).")
-        clean["wear"] = wear
-    else:
-        clean["wear"] = 0.0 if clean["coating"] else 1.0
-    if clean["coating"] is None and clean["wear"] != 1.0:
+        clean["wear"] = wear  # else: the point's coating_wear (checks.point_wear, once its parameters are known)
+    if clean["coating"] is None and clean.get("wear", 1.0) != 1.0:
         raise InputError(f"{where}: wear = {clean['wear']:g} needs a coating (bare silicon is wear = 1).")
     roughness = options.get("roughness", "synthetic")
     if str(roughness).strip().lower() == "synthetic":
@@ -396,6 +395,7 @@ def prepare_points(spec: StudySpec, params) -> list[_Point]:
             point_params = base.updated(overrides, origin=f"study point {index}") if overrides else base
         except InputError as exc:
             raise InputError(f"{where}: {exc}") from None
+        options = point_wear(options, raw, point_params, where)
         if options.get("steps") is not None and "mesh_window" in point_params:
             from memstribo.parameters import check_mesh_size
 
