@@ -7,6 +7,8 @@ steps and at twice the grid (96 elements across 2a), per realisation: the number
 ``dwell``: the start-up margin after dwells of 1 ms to a day (the logarithmic ageing law), realisation 0.
 ``registry``: the start-up resisting force with ``lattice_registry`` random and shared.
 ``load``: the start-up margin against the load torque on the gear, as a share of the frictionless pair's output.
+``lever``: the largest moment arm of a pair's friction over the pitch radius, and the Coulomb self-locking
+coefficient at the first point of contact.
 Each line is one JSON object (margins in mN, CPU seconds).
 """
 
@@ -36,8 +38,8 @@ def _cycle(params, steps=481, realisation=0):
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--parts", nargs="+", default=["convergence", "dwell", "registry", "load"],
-                        choices=("convergence", "dwell", "registry", "load"))
+    parser.add_argument("--parts", nargs="+", default=["convergence", "dwell", "registry", "load", "lever"],
+                        choices=("convergence", "dwell", "registry", "load", "lever"))
     parser.add_argument("--realisations", type=int, nargs="+", default=[0, 1])
     args = parser.parse_args(argv)
 
@@ -84,6 +86,20 @@ def main(argv=None) -> int:
             t, cpu = _cycle(params.updated({"load_torque": share * output}))
             _line(part="load", load_share_of_output=share, startup_margin_mN=round(t["startup_margin"] * 1e3, 4),
                   cpu_seconds=cpu)
+    if "lever" in args.parts:
+        import numpy as np
+
+        from memstribo.physics.gear import GearPair
+        from memstribo.physics.static_friction import friction_lever, self_locking_friction_coefficient
+
+        pair = GearPair.from_parameters(params)
+        c = np.linspace(pair.first_contact, pair.last_contact, 2001)
+        rho1, rho2 = pair.radii_of_curvature(c)
+        lever = friction_lever(rho1, rho2, *pair.base_radii) * pair.base_radii[0] / pair.pitch_radii[0]
+        _line(part="lever", lever_first_contact=round(float(lever[0]), 4), lever_last_contact=round(float(lever[-1]), 4),
+              lever_min=round(float(lever.min()), 6),
+              self_locking_mu_first_contact=round(float(self_locking_friction_coefficient(rho2[0],
+                                                                                           pair.base_radii[1])), 4))
     return 0
 
 
