@@ -169,7 +169,8 @@ def test_outer_diameters_that_fit_no_pair_are_refused():
     (("gear", "--config", ""), "--config"),
     (("roughness", ""), "PATH"),
 ])
-def test_empty_values_are_refused(cli, argv, option):
+def test_empty_values_are_refused(cli, argv, option, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # without the check, --out '  ' wrote a folder named '  ' here
     _refused(cli, *argv, match=(f"argument {option}", "empty value"))
 
 
