@@ -237,5 +237,6 @@ def test_cli_gear_json_has_tip_thickness_and_design_warnings(cli):
     code, out, err = cli("gear", "--set", "pressure_angle=35 deg", "--set", "teeth_pinion=30", "--set",
                          "teeth_gear=60")
     assert code == 0 and "WARNING: the pinion's tooth thickness at the tip" in out
-    code, out, err = cli("gear", "--set", "addendum_coefficient=1.6")
+    # a dedendum deeper than the addendum, so that the tip clearance (issue #41) is not what refuses it
+    code, out, err = cli("gear", "--set", "addendum_coefficient=1.6", "--set", "dedendum_coefficient=2")
     assert code == 2 and "pointed" in err and "Traceback" not in err

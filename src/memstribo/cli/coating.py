@@ -33,12 +33,19 @@ def register(subparsers, parents):
     parser.set_defaults(handler=run)
 
 
+#: most worn fractions ``--wear`` may list
+MAX_WEAR_VALUES = 1000
+
+
 def parse_wear_list(text) -> list[float]:
     """'0,0.2,0.4' -> [0.0, 0.2, 0.4], each checked to lie in 0..1."""
     from memstribo.physics.coating import check_wear
     from memstribo.errors import InputError
 
     items = [item.strip() for item in str(text).split(",")]
+    if len(items) > MAX_WEAR_VALUES:  # refused before any is read: each is a meshing cycle (issue #41)
+        raise InputError(f"--wear lists {len(items):,} values; at most {MAX_WEAR_VALUES} are allowed (one meshing "
+                         "cycle each).")
     if not items or any(item == "" for item in items):
         raise InputError(f"--wear must be a number from 0 to 1 or a comma-separated list of them, got {text!r}.")
     try:

@@ -112,10 +112,23 @@ def contact_problem(args, params):
     return separation, dx, modulus, radius, load, label
 
 
+def _check_points(args) -> None:
+    """``--points`` within the elements of one contact solve, before anything is allocated (issue #41: 10^9
+    points ended in a generic memory message)."""
+    from memstribo.errors import InputError
+    from memstribo.parameters import MAX_CONTACT_ELEMENTS
+
+    points = getattr(args, "points", None)
+    if points is not None and points > MAX_CONTACT_ELEMENTS:
+        raise InputError(f"--points {points:,} is more elements than one contact solve may have: at most "
+                         f"{MAX_CONTACT_ELEMENTS:,} (its arrays would not fit in memory); use fewer --points.")
+
+
 def run(args, params):
     if getattr(args, "surface", None) is not None:
         return run_surface(args, params)
     _refuse_surface_options(args)
+    _check_points(args)
     if getattr(args, "adhesion", False) or getattr(args, "pull_off", False):
         return run_adhesion(args, params)
     from memstribo.physics.contact import solve_line_contact

@@ -28,8 +28,11 @@ def _module_from_option(text, params):
     if len(parts) != 2:
         raise InputError(f"--outer-diameters expects two lengths D1,D2 (e.g. 81um,303um), got {text!r}.")
     d1, d2 = (to_si(p, "m", "--outer-diameters") for p in parts)
-    return module_from_outer_diameters(d1, d2, params["teeth_pinion"], params["teeth_gear"],
-                                       params["addendum_coefficient"])
+    try:
+        return module_from_outer_diameters(d1, d2, params["teeth_pinion"], params["teeth_gear"],
+                                           params["addendum_coefficient"])
+    except InputError as exc:
+        raise InputError(f"--outer-diameters {text}: {exc}") from None
 
 
 def run(args, params):

@@ -84,6 +84,52 @@ def common_options() -> argparse.ArgumentParser:
     return parent
 
 
+#: the namespace attribute where :class:`_GivenOnce` records each option's first value (removed by main)
+_GIVEN = "_given_options"
+
+
+class _GivenOnce:
+    """Mixed into every single-valued option's action (issue #41): an option given twice with different values
+    (``--refine --no-refine``, ``--config a.toml --config b.toml``) is refused rather than the last one silently
+    winning, and an empty value (``--coating ''``, ``--out ''``, ``--values ''``) is refused rather than read as
+    the option's absence. The same option given twice with the same value is harmless and accepted."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if isinstance(values, str) and not values.strip():
+            raise argparse.ArgumentError(self, f"empty value {values!r}: give a value, or leave the option out "
+                                               "for its default")
+        if isinstance(self, argparse.BooleanOptionalAction):
+            value, shown = not str(option_string).startswith("--no-"), str(option_string)
+        elif isinstance(self, argparse._StoreConstAction):
+            value, shown = self.const, str(option_string)
+        else:
+            value, shown = values, f"{option_string} {values}" if option_string else str(values)
+        given = namespace.__dict__.setdefault(_GIVEN, {})
+        if self.dest in given and given[self.dest][0] != value:
+            raise argparse.ArgumentError(self, f"given twice with different values, '{given[self.dest][1]}' and "
+                                               f"'{shown}': they contradict each other; give it once (memstribo "
+                                               "does not let the last one win)")
+        given.setdefault(self.dest, (value, shown))
+        super().__call__(parser, namespace, values, option_string)
+
+
+_ONCE_CLASSES: dict[type, type] = {}
+
+
+def _given_once(parser: argparse.ArgumentParser) -> None:
+    """Give every single-valued option of ``parser`` and its subcommands the :class:`_GivenOnce` checks."""
+    single = (argparse._StoreAction, argparse._StoreConstAction, argparse.BooleanOptionalAction)
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in action.choices.values():
+                _given_once(sub)
+        elif isinstance(action, single) and not isinstance(action, _GivenOnce):
+            cls = type(action)
+            if cls not in _ONCE_CLASSES:
+                _ONCE_CLASSES[cls] = type(f"Once{cls.__name__}", (_GivenOnce, cls), {})
+            action.__class__ = _ONCE_CLASSES[cls]
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="memstribo", description=DESCRIPTION, epilog=EPILOG,
                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -92,11 +138,13 @@ def build_parser() -> argparse.ArgumentParser:
     parents = [common_options()]
     for module in _command_modules():
         module.register(subparsers, parents)
+    _given_once(parser)
     return parser
 
 
 def load_parameters(args: argparse.Namespace):
     """The parameter set named by ``--parameter-set`` with ``--config`` then ``--set`` applied."""
+    from memstribo.errors import InputError as MemstriboInputError
     from memstribo.parameters import get_parameter_values, parse_assignment, read_config
 
     params = get_parameter_values(args.parameter_set)
@@ -106,7 +154,13 @@ def load_parameters(args: argparse.Namespace):
         params = params.updated(config.pop("parameters"), origin=f"config file {args.config}")
         args.config_tables = config
     if args.overrides:
-        overrides = dict(parse_assignment(text) for text in args.overrides)
+        overrides = {}
+        for text in args.overrides:
+            name, value = parse_assignment(text)
+            if name in overrides and overrides[name] != value:  # issue #41: not "the last one wins"
+                raise MemstriboInputError(f"--set {name} is given twice with different values, '{overrides[name]}' "
+                                          f"and '{value}': they contradict each other; give it once.")
+            overrides[name] = value
         params = params.updated(overrides, origin="--set")
     from memstribo.checks import check_unused_values
 
@@ -162,6 +216,7 @@ def main(argv: list[str] | None = None) -> int:
     _Parser.argv = list(sys.argv[1:] if argv is None else argv)
     _complete(parser)
     args = parser.parse_args(argv)
+    vars(args).pop(_GIVEN, None)
     from memstribo.output import set_command_line  # provenance: the command line in every file written
 
     set_command_line(["memstribo", *(sys.argv[1:] if argv is None else argv)])

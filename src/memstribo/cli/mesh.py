@@ -149,6 +149,7 @@ def run(args, params):
     if not spec.minimum <= realisations <= spec.maximum:
         raise InputError(f"--realisations must be from {int(spec.minimum):,} to {int(spec.maximum):,} (the bounds "
                          f"of the parameter realisations), got {realisations:,}.")
+    _check_parallel(args, uncertainty, realisations)
     roughness = roughness_of(args)
     if args.refine:  # the finest cycle of the self-refining one, and its checks (MODEL 7d)
         dataset, summary = refined_cycle(params, roughness, **options)
@@ -268,6 +269,9 @@ def _uncertainty_option(args):
                 or getattr(args, "solve_sets", None) is not None:
             raise InputError("--fix, --sobol-samples and --solve-sets need --uncertainty N|auto.")
         return None
+    from memstribo.uncertainty.study import check_sobol_samples
+
+    check_sobol_samples(getattr(args, "sobol_samples", None), "--sobol-samples")  # before the first cycle
     text = str(text).strip().lower()
     if text == "auto":
         return "auto"
@@ -278,6 +282,54 @@ def _uncertainty_option(args):
     if n < 1:
         raise InputError(f"--uncertainty must be at least 1 sample, got {n}.")
     return n
+
+
+#: most worker processes ``--workers`` may ask for (as ``study`` and ``map``)
+MAX_WORKERS = 4096
+
+
+def machine_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system has one)."""
+    import os
+
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def _check_parallel(args, uncertainty, realisations) -> None:
+    """``--workers`` and ``--scheduler`` only with work to share (issue #41), ``--workers`` within its bounds.
+
+    One realisation without ``--uncertainty`` is one cycle in this process: the options would be ignored, so
+    they are refused. ``--workers`` above :data:`MAX_WORKERS` is refused; above the machine's cores it is
+    capped at them with a note on stderr (more processes than cores only share them).
+    """
+    import sys
+
+    from memstribo.errors import InputError
+
+    workers, scheduler = getattr(args, "workers", None), getattr(args, "scheduler", None)
+    if workers is None and not scheduler:
+        return
+    option = f"--workers {workers}" if workers is not None else f"--scheduler {scheduler}"
+    if workers is not None and scheduler:
+        raise InputError(f"--workers {workers} and --scheduler {scheduler} contradict each other: --workers starts a "
+                         "local cluster, --scheduler uses an existing one; give one of them.")
+    if uncertainty is None and realisations <= 1:
+        raise InputError(f"{option} shares realisations or uncertainty samples between workers, but this run has one "
+                         "realisation and no --uncertainty (one cycle, run in this process): add --realisations N "
+                         f"(N > 1) or --uncertainty N|auto, or drop {option.split()[0]}.")
+    if workers is None:
+        return
+    if workers < 1 or workers > MAX_WORKERS:
+        raise InputError(f"--workers must be from 1 to {MAX_WORKERS:,} worker processes, got {workers:,}.")
+    cores = machine_cores()
+    if workers > cores:
+        if not getattr(args, "quiet", False):
+            print(f"memstribo mesh: note: --workers {workers:,} is more than this machine's {cores} core(s): using "
+                  f"{cores} worker processes.", file=sys.stderr)
+        args.workers = cores
 
 
 def _client(args):

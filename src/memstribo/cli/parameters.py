@@ -19,8 +19,12 @@ def register(subparsers, parents):
 
 
 def run(args, params):
+    from memstribo.errors import InputError
     from memstribo.parameters import SPECS
 
+    if args.toml and args.json:
+        raise InputError("--toml and --json contradict each other: --toml prints the parameters as TOML (a --config "
+                         "file), --json as one JSON object; give one of them.")
     if args.coating:
         return _coating(args, params)
     if args.toml:

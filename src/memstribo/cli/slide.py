@@ -75,6 +75,11 @@ def run(args, params):
         raise InputError(f"--distance must be >= 0, got {args.distance!r}.")
     if step is not None and step <= 0:
         raise InputError(f"--step must be positive, got {args.step!r}.")
+    one_step = (params["sliding_step"] or params["bond_length"]) if step is None else step
+    if distance is not None and distance < one_step:  # COF 0.93 over no sliding before (issue #41)
+        raise InputError(f"--distance {args.distance!r} is shorter than one sliding step ({one_step:.4g} m, "
+                         f"{'--step' if step is not None else 'sliding_step, unset: bond_length'}): a slide of no "
+                         "length has no friction; allowed: at least one step.")
     profile = None
     if args.profile:
         if args.model == "single":

@@ -14,6 +14,15 @@ _UNITS = {"load": "N", "torque": "N*m", "area": "", "humidity": ""}
 _HEAD = {"load": ["normal_load"], "torque": ["drive_torque"], "area": ["area_multiple", "area"],
          "humidity": ["relative_humidity"]}
 
+#: most values ``--values`` may give, as a comma list or a START:STOP:STEP range (counted before any is read)
+MAX_SWEEP_VALUES = 1000
+
+#: what each sweep sets at every point: a different value given by the user contradicts it (issue #41)
+_SWEEP_SETS = {"load": {"load_case": "thesis"}, "torque": {"load_case": "torque"},
+               "humidity": {"environment": "air"}}
+#: the parameter each sweep replaces by its --values
+_SWEPT = {"load": "normal_load", "torque": "drive_torque", "area": "face_width", "humidity": "relative_humidity"}
+
 
 def register(subparsers, parents):
     from memstribo.cli.mesh import add_common_arguments
@@ -54,13 +63,38 @@ def parse_values(text: str, unit: str, name: str = "--values") -> list[float]:
         if step <= 0 or stop < start:
             raise InputError(f"{name} {text!r}: STEP must be positive and STOP not below START.")
         count = int(np.floor((stop - start) / step * (1 + 1e-9))) + 1
-        if count > 1000:
-            raise InputError(f"{name} {text!r} gives {count} points; at most 1000 are allowed.")
+        if count > MAX_SWEEP_VALUES:
+            raise InputError(f"{name} {text!r} gives {count} points; at most {MAX_SWEEP_VALUES} are allowed.")
         return [start + i * step for i in range(count)]
-    values = [to_si(p, unit, name) for p in text.split(",") if p.strip()]
+    parts = [p for p in text.split(",") if p.strip()]
+    if len(parts) > MAX_SWEEP_VALUES:  # refused before any value is converted (100 000 took minutes)
+        raise InputError(f"{name} lists {len(parts):,} values; at most {MAX_SWEEP_VALUES} are allowed (a sweep "
+                         "runs one meshing cycle per value).")
+    values = [to_si(p, unit, name) for p in parts]
     if not values:
         raise InputError(f"{name} is empty.")
     return values
+
+
+def check_sweep_contradictions(parameter: str, params) -> None:
+    """Refuse a value the user gave that the sweep would replace at every point without a word (issue #41):
+    ``sweep load --load-case torque`` (the load sweep is the thesis load case), ``sweep torque --load-case
+    thesis``, ``sweep humidity --set environment=vacuum``, and the swept parameter itself (``sweep load --set
+    normal_load=...``: --values gives it)."""
+    from memstribo.checks import user_set
+    from memstribo.errors import InputError
+
+    for name, needed in _SWEEP_SETS.get(parameter, {}).items():
+        if user_set(params, name) and params[name] != needed:
+            other = {"load": " (sweep torque sweeps the torque load case)",
+                     "torque": " (sweep load sweeps normal_load in the thesis load case)"}.get(parameter, "")
+            raise InputError(f"{name} = '{params[name]}' (from {params.source(name)}) contradicts 'sweep {parameter}', "
+                             f"which runs every point with {name} = '{needed}'{other}; drop it or give "
+                             f"{name} = '{needed}'.")
+    swept = _SWEPT[parameter]
+    if user_set(params, swept):
+        raise InputError(f"{swept} is what 'sweep {parameter}' sets at every point from --values; the value from "
+                         f"{params.source(swept)} would be ignored: drop it, or give it in --values.")
 
 
 def run(args, params):
@@ -68,7 +102,8 @@ def run(args, params):
     from memstribo.cli.mesh import MESH_KEYS, apply_load_case, simulation_options
 
     params = apply_load_case(args, params)
-    values = parse_values(args.values or _DEFAULTS[args.parameter], _UNITS[args.parameter])
+    check_sweep_contradictions(args.parameter, params)
+    values = parse_values(_DEFAULTS[args.parameter] if args.values is None else args.values, _UNITS[args.parameter])
     options = simulation_options(args, params)
     progress = options.pop("progress")
     from memstribo.cli.mesh import roughness_of

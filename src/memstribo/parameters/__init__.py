@@ -257,6 +257,53 @@ def _check_consistency(values: Mapping[str, Any]) -> None:
             raise InputError(
                 f"atomic_width ({values['atomic_width']:.4g} m) is larger than adhesive_width "
                 f"({values['adhesive_width']:.4g} m): atomic blocks sit on top of an adhesive block.")
+    _check_derived(values)
+
+
+#: the largest contact modulus E* two real solids can make [Pa]: diamond (E = 1.14 TPa, nu = 0.07) against a
+#: rigid body, E / (1 - nu^2) = 1.15 TPa, rounded up (issue #41: nu = -0.999 on both bodies gave E* = 40 TPa)
+MAX_CONTACT_MODULUS = 1.2e12
+
+
+def _check_derived(values: Mapping[str, Any]) -> None:
+    """Derived quantities against their bounds and lengths against each other (issue #41, round four)."""
+    a, d0 = values.get("hamaker_constant"), values.get("cutoff_distance")
+    if values.get("work_of_adhesion") is None and a and d0:
+        w = a / (12.0 * math.pi * d0**2)  # (3-34), as memstribo.materials.pair.work_of_adhesion
+        bound = SPECS["work_of_adhesion"].maximum
+        if w > bound:
+            raise InputError(
+                f"work_of_adhesion derived from hamaker_constant ({a:.4g} J) and cutoff_distance ({d0:.4g} m), "
+                f"A / (12 pi D0^2) = {w:.4g} J/m^2, is above its own bound of {bound:g} J/m^2 (surface energies of "
+                "solids are below 5 J/m^2): use a smaller hamaker_constant or a larger cutoff_distance, or give "
+                "work_of_adhesion.")
+    e1, nu1 = values.get("youngs_modulus"), values.get("poisson_ratio")
+    if e1 and nu1 is not None:
+        e2 = values.get("counter_youngs_modulus") or e1
+        nu2 = nu1 if values.get("counter_poisson_ratio") is None else values["counter_poisson_ratio"]
+        compliance = (1.0 - nu1**2) / e1 + (1.0 - nu2**2) / e2
+        modulus = math.inf if compliance <= 0 else 1.0 / compliance
+        if modulus > MAX_CONTACT_MODULUS:
+            raise InputError(
+                f"contact modulus E* = 1 / ((1 - nu1^2) / E1 + (1 - nu2^2) / E2) = {modulus / 1e12:.3g} TPa with "
+                f"poisson_ratio {nu1:g} and counter_poisson_ratio {nu2:g} (E1 {e1 / 1e9:.4g} GPa, E2 "
+                f"{e2 / 1e9:.4g} GPa) is above {MAX_CONTACT_MODULUS / 1e12:g} TPa, the stiffest contact of real "
+                "solids (diamond against a rigid body): near nu = -1 the plane-strain modulus E / (1 - nu^2) "
+                "diverges; use Poisson's ratios further from -1.")
+    bond = values.get("bond_length")
+    for other in ("lattice_constant", "atomic_pitch"):
+        if bond and values.get(other) and bond > values[other]:
+            raise InputError(
+                f"bond_length ({bond:.4g} m) is longer than {other} ({values[other]:.4g} m): a chemical bond joins "
+                f"nearest neighbours, which are no further apart than the {other.replace('_', ' ')}; allowed: "
+                f"bond_length <= {other}.")
+    h_a, h_f = values.get("addendum_coefficient"), values.get("dedendum_coefficient")
+    if h_a and h_f and h_f <= h_a:
+        raise InputError(
+            f"dedendum_coefficient ({h_f:g} x module) is not deeper than the mating addendum_coefficient ({h_a:g} x "
+            "module): "
+            "the mating tooth's tip would reach the root circle with no tip clearance (ISO 53: 0.25 m); allowed: "
+            "dedendum_coefficient > addendum_coefficient.")
 
 
 def get_parameter_values(name: str = DEFAULT_SET) -> Parameters:
@@ -332,6 +379,12 @@ def _entry_value(path, name: str, entry: dict):
     return value
 
 
+def _twice_in_config(shown: str, name: str) -> str:
+    """The message for a parameter given both at the top level and in [parameters] of one file (issue #41)."""
+    return (f"config file '{shown}': parameter '{name}' is given twice, at the top level and in [parameters]; "
+            "one of the two values would be dropped without a word: give it once (either place).")
+
+
 def read_config(path: str | Path) -> dict[str, Any]:
     """Read parameter overrides from a TOML file, validated whole.
 
@@ -386,6 +439,8 @@ def read_config(path: str | Path) -> dict[str, Any]:
                 if name not in SPECS:
                     raise InputError(f"config file '{shown}': unknown parameter '{printable(name)}' in [parameters]."
                                      f"{did_you_mean(name, SPECS)} Run 'memstribo parameters' to list them.")
+                if name in overrides:
+                    raise InputError(_twice_in_config(shown, name))
                 overrides[name] = _entry_value(shown, name, entry) if isinstance(entry, dict) else entry
         elif key in CONFIG_TABLES:
             if not isinstance(value, dict):
@@ -398,6 +453,8 @@ def read_config(path: str | Path) -> dict[str, Any]:
             raise InputError(f"config file '{shown}': unknown table [{printable(key)}]; allowed tables: "
                              f"{', '.join(f'[{t}]' for t in allowed_tables)}.{hint}")
         elif key in SPECS:
+            if key in overrides:
+                raise InputError(_twice_in_config(shown, key))
             overrides[key] = value
         else:
             raise InputError(f"config file '{shown}': unknown parameter '{printable(key)}'."

@@ -89,7 +89,21 @@ def module_from_outer_diameters(outer_diameter_pinion, outer_diameter_gear, teet
     """
     if outer_diameter_pinion <= 0 or outer_diameter_gear <= 0:
         raise InputError("outer diameters must be positive.")
-    return (outer_diameter_pinion + outer_diameter_gear) / (teeth_pinion + teeth_gear + 4 * addendum_coefficient)
+    module = (outer_diameter_pinion + outer_diameter_gear) / (teeth_pinion + teeth_gear + 4 * addendum_coefficient)
+    # each tip diameter must be its own wheel's, d_a = m (z + 2 h_a), within half a module (issue #41: the
+    # diameters given in the wrong order gave the same module, silently)
+    expected = (module * (teeth_pinion + 2 * addendum_coefficient), module * (teeth_gear + 2 * addendum_coefficient))
+    given = (outer_diameter_pinion, outer_diameter_gear)
+    if any(abs(d - e) > 0.5 * module for d, e in zip(given, expected)):
+        swapped = all(abs(d - e) <= 0.5 * module for d, e in zip(given[::-1], expected))
+        raise InputError(
+            f"outer diameters {given[0] * 1e6:.4g} µm (pinion, {teeth_pinion} teeth) and {given[1] * 1e6:.4g} µm "
+            f"(gear, {teeth_gear} teeth) do not fit a standard pair: with m = {module * 1e6:.4g} µm the tip diameters "
+            f"m (z + 2 h_a) are {expected[0] * 1e6:.4g} µm and {expected[1] * 1e6:.4g} µm (allowed: each within half "
+            "a module of its own)"
+            + ("; they are given in the wrong order: the pinion's first" if swapped else
+               "; change teeth_pinion, teeth_gear or addendum_coefficient to match them") + ".")
+    return module
 
 
 def minimum_teeth_without_undercut(pressure_angle, addendum_coefficient=1.0):

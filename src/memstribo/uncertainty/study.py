@@ -363,6 +363,28 @@ def _design(sampled, realisations, sets, solve_sets, rescalable, seed):
     return points
 
 
+#: most base samples N of the Sobol' design (issue #41: 2^40 ended in a generic memory message after SALib
+#: began to allocate): 2^14 = 16 384 gives N (D + 2) = 196 608 rows (cycles or rescalings) for D = 10 constants
+MAX_SOBOL_SAMPLES = 2**14
+
+
+def check_sobol_samples(sobol_samples, name: str = "sobol_samples") -> None:
+    """Refuse a Sobol' base sample count that is not a power of two from 2 to :data:`MAX_SOBOL_SAMPLES`
+    (before anything is allocated or run)."""
+    if sobol_samples is None:
+        return
+    if isinstance(sobol_samples, bool) or not isinstance(sobol_samples, (int, np.integer)):
+        raise InputError(f"{name} must be a whole number (a power of two), got {sobol_samples!r}.")
+    n = int(sobol_samples)
+    if n > MAX_SOBOL_SAMPLES:
+        raise InputError(f"{name} = {n:,} base samples of the Sobol' design is above the limit of "
+                         f"{MAX_SOBOL_SAMPLES:,} (2^14: N x (constants + 2) cycles or rescalings, about 200 000 at "
+                         "10 constants); use fewer.")
+    if n < 2 or n & (n - 1):
+        raise InputError(f"{name} must be a power of two from 2 to {MAX_SOBOL_SAMPLES:,} (Saltelli's design), "
+                         f"got {n:,}.")
+
+
 def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET, solve_sets=None):
     from memstribo.parameters.definitions import MEMORY_LIMIT_BYTES
 
@@ -466,6 +488,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
     n_steps = int(params["mesh_steps"] if steps is None else steps)
     _check_samples(samples, realisations, n_steps, budget, solve_sets)
+    check_sobol_samples(sobol_samples)
     client, own_client = _client_of(client)
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)

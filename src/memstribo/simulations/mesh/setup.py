@@ -198,7 +198,10 @@ def orient_map(surface, sliding_axis: str = "x"):
     """
     if sliding_axis not in ("x", "y"):
         raise InputError(f"sliding axis must be 'x' or 'y', got {sliding_axis!r}.")
-    if sliding_axis == "x" or not hasattr(surface, "line_scans"):
+    if sliding_axis == "y" and not hasattr(surface, "line_scans"):  # was ignored without a word (issue #41)
+        raise InputError(f"--sliding-axis y needs a 2D map, but the roughness '{getattr(surface, 'source', '')}' is "
+                         "a profile (one line, along x); allowed for a profile: --sliding-axis x (the default).")
+    if sliding_axis == "x":
         return surface
     from dataclasses import replace
 
@@ -211,6 +214,9 @@ def _read_roughness(roughness, sliding_axis="x"):
     from memstribo.surfaces import roughness as rough
 
     if roughness is None or (isinstance(roughness, str) and roughness == "thesis"):
+        if sliding_axis == "y":
+            raise InputError("--sliding-axis y needs a 2D map, but the default roughness ('thesis') is a synthetic "
+                             "profile; give a map with --roughness, or leave --sliding-axis at x.")
         return None
     if isinstance(roughness, (str, Path)):
         from memstribo.surfaces.readers import read_topography

@@ -12,7 +12,7 @@ from memstribo.errors import DataFileError, InputError, MemstriboError
 from memstribo.surfaces.roughness import Profile
 from memstribo.units import printable
 from memstribo.surfaces.readers._common import _ST_EXTENSIONS, _TEXT, _unit_factor
-from memstribo.surfaces.readers.containers import _MEMBER_MAX_BYTES, _read_container
+from memstribo.surfaces.readers.containers import _read_container
 from memstribo.surfaces.readers.instruments import _NotRead, _check_complete, _st_open, _st_topography
 from memstribo.surfaces.readers.numpy_files import _read_npy
 from memstribo.surfaces.readers.text import _decode_text, _plain_rows, _read_header_export, _read_plain_text, _text_reason
@@ -24,6 +24,10 @@ _SUPPORTED_SHORT = ("Supported: what SurfaceTopography reads (.di/.001, .tiff, .
 #: text extensions: plain numbers go to SurfaceTopography first, then memstribo's units and checks; the one-line
 #: 'Image Width' export (which SurfaceTopography reads as a 16384 x 1 map) is memstribo's own
 _PLAIN_FIRST = _TEXT
+
+#: largest text file read [bytes], checked by its size before reading (issue #41: a 1.9 GB file took 6.2 GB of
+#: memory before its refusal): 1 GiB holds memstribo's 10 million points at 100 characters each
+_TEXT_MAX_BYTES = 2**30
 
 
 def read_topography(path, channel=None, unit=None, physical_size=None):
@@ -114,9 +118,9 @@ def _read(path, shown, channel, unit, physical_size):
         result = None
         text = None
         if suffix in _PLAIN_FIRST:
-            if size > _MEMBER_MAX_BYTES:
+            if size > _TEXT_MAX_BYTES:
                 raise DataFileError(f"{shown}: {size:,} bytes; memstribo reads text files of at most "
-                                    f"{_MEMBER_MAX_BYTES:,} bytes.")
+                                    f"{_TEXT_MAX_BYTES:,} bytes (1 GiB: 10 million points of 100 characters).")
             try:
                 data = path.read_bytes()
             except OSError as exc:
