@@ -357,10 +357,9 @@ def map_point(params, coating: str | None = None, wear: float = 1.0, roughness: 
     ensemble = ensemble_interval(mesh.ensemble_summary(summaries))
     values: dict[str, Any] = {key: ensemble[key] for key in MAP_RESULTS if key in ensemble}
     values["stiction_probability_nominal"] = ensemble["stiction_probability"]
-    values["stiction_probability_low"], values["stiction_probability_high"] = ensemble["stiction_probability_ci"]
-    if "startup_stiction_probability_ci" in ensemble:
-        values["startup_stiction_probability_low"], values["startup_stiction_probability_high"] = \
-            ensemble["startup_stiction_probability_ci"]
+    for kind in ("stiction", "startup_stiction"):  # the running and start-up verdicts' intervals (MODEL 7d, 7f)
+        if f"{kind}_probability_ci" in ensemble:
+            values[f"{kind}_probability_low"], values[f"{kind}_probability_high"] = ensemble[f"{kind}_probability_ci"]
     values["uncertainty_samples"] = 0
     if uncertainty:
         from memstribo.uncertainty.study import uncertainty_study

@@ -122,7 +122,6 @@ def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[d
     """
     from memstribo.physics.gear import GearPair
     from memstribo.simulations.mesh import resisting_force, sliding_average, summarize
-    from memstribo.simulations.tooth_life import TOOTH_LIFE_KEYS
 
     allowed = rescalable(dataset)
     for overrides in overrides_list:
@@ -154,16 +153,7 @@ def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[d
     # the start-up verdict (peak instantaneous force at rest, MODEL 7d) is not rescaled yet: its keys would be the
     # nominal energies' (stale), so they are blanked; its per-mechanism peak forces would make it rescalable
     # the tooth's strength and temperature follow the nominal friction force too: blanked likewise
-    # the start-up verdict is rescaled from the rows' bond counts (MODEL 7f; startup_from_dataset), where the dataset
-    # has them; its ensemble keys and the tooth's strength and temperature (which follow the nominal friction force)
-    # are blanked
-    from memstribo.simulations.mesh.limits import startup_from_dataset
-
-    rescaled_startup = {"startup_margin", "startup_stiction", "static_cof_max", "startup_margin_capped",
-                        "stiction_mode", "stiction_mode_capped"}
-    startup_known = startup_from_dataset(dataset, params_nominal, _energies(dataset, params_nominal, {})) is not None
-    stale = [key for key in base if (key.startswith("startup") and not (startup_known and key in rescaled_startup))
-             or key in TOOTH_LIFE_KEYS]
+    startup_known, stale = _stale_keys(dataset, params_nominal, base)
     out = []
     for overrides in overrides_list:
         f_chem, f_vdw = _bond_friction(dataset, params_nominal, overrides)
@@ -190,24 +180,51 @@ def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[d
             **{k: float(v.sum()) for k, v in energy.items()},
             "rescaled": True,
         })
-        if startup_known:
-            startup = startup_from_dataset(dataset, params_nominal, _energies(dataset, params_nominal, overrides))
-            capped_margin = summary.get("stiction_margin_capped")
-            summary.update(startup)
-            summary["stiction_mode"] = "running" if margin < 0 else ("start-up" if startup["startup_margin"] < 0
-                                                                      else "none")
-            if capped_margin is not None:  # the running capped margin is the nominal's (not rescaled): kept as it was
-                summary["stiction_mode_capped"] = ("running" if capped_margin < 0 else
-                                                   "start-up" if startup["startup_margin_capped"] < 0 else "none")
-        if summary.get("verdict") not in (None, "undetermined"):  # the rescaled set's own verdict word
-            mode = summary.get("stiction_mode")
-            summary["verdict"] = ("running stiction" if margin < 0 else "start-up stiction" if mode == "start-up"
-                                  else "no stiction")
+        _rescaled_startup(summary, dataset, params_nominal, overrides, margin, startup_known)
         for key in stale:
             summary[key] = None
         summary["not_rescaled"] = list(stale)
         out.append(summary)
     return out
+
+
+#: The start-up keys of a summary that :func:`_rescaled_startup` recomputes for a set of bond energies.
+_RESCALED_STARTUP = ("startup_margin", "startup_stiction", "static_cof_max", "startup_margin_capped", "stiction_mode",
+                     "stiction_mode_capped")
+
+
+def _stale_keys(dataset, params_nominal, base) -> tuple[bool, list[str]]:
+    """(whether the start-up verdict rescales, the summary keys a rescaled set blanks). The start-up verdict rescales
+    from the rows' bond counts (MODEL 7f; :func:`memstribo.simulations.mesh.limits.startup_from_dataset`) where the
+    dataset has them; its ensemble keys and the tooth's strength and temperature (which follow the nominal friction
+    force) are blanked."""
+    from memstribo.simulations.mesh.limits import startup_from_dataset
+    from memstribo.simulations.tooth_life import TOOTH_LIFE_KEYS
+
+    known = startup_from_dataset(dataset, params_nominal, _energies(dataset, params_nominal, {})) is not None
+    stale = [key for key in base if (key.startswith("startup") and not (known and key in _RESCALED_STARTUP))
+             or key in TOOTH_LIFE_KEYS]
+    return known, stale
+
+
+def _rescaled_startup(summary, dataset, params_nominal, overrides, margin, known) -> None:
+    """Put a set's start-up verdict, its stiction modes and its verdict word into ``summary`` (``margin``: the set's
+    running margin [N])."""
+    from memstribo.simulations.mesh.limits import startup_from_dataset
+
+    if known:
+        startup = startup_from_dataset(dataset, params_nominal, _energies(dataset, params_nominal, overrides))
+        capped_margin = summary.get("stiction_margin_capped")
+        summary.update(startup)
+        summary["stiction_mode"] = "running" if margin < 0 else ("start-up" if startup["startup_margin"] < 0
+                                                                  else "none")
+        if capped_margin is not None:  # the running capped margin is the nominal's (not rescaled): kept as it was
+            summary["stiction_mode_capped"] = ("running" if capped_margin < 0 else
+                                               "start-up" if startup["startup_margin_capped"] < 0 else "none")
+    if summary.get("verdict") not in (None, "undetermined"):  # the rescaled set's own verdict word
+        mode = summary.get("stiction_mode")
+        summary["verdict"] = ("running stiction" if margin < 0 else "start-up stiction" if mode == "start-up"
+                              else "no stiction")
 
 
 def _energies(dataset, params_nominal, overrides) -> list[float]:

@@ -486,8 +486,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     sampled = {name: p for name, p in priors.items() if name not in fixed_names}
     if realisations is None:
         realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
-    n_steps = int(params["mesh_steps"] if steps is None else steps)
-    _check_samples(samples, realisations, n_steps, budget, solve_sets)
+    _check_samples(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget, solve_sets)
     check_sobol_samples(sobol_samples)
     client, own_client = _client_of(client)
     try:

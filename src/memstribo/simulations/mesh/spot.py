@@ -106,15 +106,14 @@ class _Finer:
 
     def _static(self, part, cycle):
         """The start-up friction force of the solved steps [N] (:func:`memstribo.simulations.mesh.limits`)."""
-        from memstribo.simulations.mesh import limits
+        from memstribo.simulations.mesh.limits import bond_energies, formed_share, row_bond_forces, static_friction_force
 
         out, params = cycle["out"], self.params
         registry = part.registry
         rows = out["row_bonds"].shape[-1]
         phases = registry.bond_phase if registry is not None and registry.bond_phase is not None else np.zeros(rows)
-        forces = limits.row_bond_forces(out["row_bonds"], limits.bond_energies(params, self.coating),
-                                        params["bond_length"])
-        return limits.static_friction_force(forces, phases, limits.formed_share(params), cycle["f_el"] + out["f_cap"])
+        forces = row_bond_forces(out["row_bonds"], bond_energies(params, self.coating), params["bond_length"])
+        return static_friction_force(forces, phases, formed_share(params), cycle["f_el"] + out["f_cap"])
 
     def solved(self) -> int:
         return self.solves
