@@ -147,3 +147,61 @@ def test_meshing_cycle_surface_strip_applies_the_hardness(params):
     np.testing.assert_allclose(loads, ds.normal_force, rtol=1e-6)
     assert any("reaches the hardness" in text for text in summary["warnings"])
 
+
+# ----------------------------------------------------------------------------- a map shorter than the flank travel
+
+
+def _short_map(nx=128, ny=40, spacing=39e-9, seed=3):
+    """A small Gaussian random map (rows along x) of nx spacing long: 4.96 µm at the defaults."""
+    from memstribo.surfaces.readers import SurfaceMap
+
+    rng = np.random.default_rng(seed)
+    f2 = np.add.outer(np.fft.fftfreq(ny) ** 2, np.fft.rfftfreq(nx) ** 2) * nx * nx
+    heights = np.fft.irfft2(np.fft.rfft2(rng.standard_normal((ny, nx))) * np.exp(-0.02 * f2), s=(ny, nx))
+    heights *= 5e-9 / heights.std()
+    return SurfaceMap(heights=heights, dx=spacing, dy=spacing, name="short map", source="synthetic test map")
+
+
+def test_a_map_shorter_than_the_travel_keeps_its_measured_lines(params):
+    """A 4.96 µm map against 6 µm of travel: before, '0 measured scan lines and 4 synthesised from the map's power
+    spectrum' (the measured lines thrown away). Now each measured line is used where it reaches, kept height for
+    height in the middle of its row's line, and completed beyond by a continuation synthesised from its spectrum
+    and conditioned on the measured heights (no step at the junctions)."""
+    from memstribo.surfaces.profile import level_profile
+    from memstribo.surfaces.synthesis import row_roughness
+
+    surface = _short_map()
+    scans = surface.line_scans()
+    length = 6e-6
+    rows = row_roughness(surface, params, 2, length)
+    stride = max(1, int(round(float(params["adhesive_width"]) / surface.dy)))
+    assert rows.measured_lines == 4 and rows.completed_lines == 4 and rows.synthesised_lines == 0
+    assert rows.measured_share == pytest.approx(4 * 127 * 39e-9 / sum(float(p.x[-1] - p.x[0])
+                                                                       for p in rows.pinion + rows.gear))
+    assert "completed" in rows.method and "conditioned on the measured heights" in rows.method
+    for k, line in enumerate(rows.pinion + rows.gear):
+        assert float(line.x[-1] - line.x[0]) >= length and not line.synthetic
+        measured = level_profile(scans[k * stride]).z
+        start = (line.z.size - measured.size) // 2
+        np.testing.assert_array_equal(line.z[start:start + measured.size], measured)
+        steps = np.diff(line.z)
+        typical = np.diff(measured).std()
+        assert abs(steps[start - 1]) < 5 * typical and abs(steps[start + measured.size - 1]) < 5 * typical
+        assert "measured" in line.source and "completed" in line.source
+    # the continuation has the spectrum's size: neither flat nor blown up
+    extension = np.concatenate([line.z[:10] for line in rows.pinion + rows.gear])
+    assert 0.1 * 5e-9 < extension.std() < 3 * 5e-9
+
+
+def test_the_default_cycle_uses_di3_measured_lines(params, afm_dir):
+    """data/afm/di-3.di (9.96 µm) against the flank travel of a 4 µm window (the self-sizing window grows to about
+    that on this map; 11.6 µm of travel, 9.8 µm with the default 2.3 µm window): 20 measured lines, each completed,
+    none synthesised whole (before: 0 measured, 20 synthesised)."""
+    from memstribo.simulations.mesh.setup import _prepare
+    from memstribo.surfaces.readers import read_topography
+
+    setup = _prepare(params, read_topography(afm_dir / "di-3.di"), 11, window=4e-6)
+    rows = setup.row_roughness
+    assert rows.measured_lines == 20 and rows.synthesised_lines == 0 and rows.completed_lines == 20
+    assert 0.8 < rows.measured_share < 0.9
+    assert "shorter than" in rows.method and "completed" in rows.method
