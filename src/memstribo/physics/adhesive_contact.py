@@ -264,16 +264,11 @@ def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_st
     :func:`memstribo.physics.closed_form.maugis_dugdale_line_pull_off` and, at large Maugis parameter,
     :func:`memstribo.physics.closed_form.jkr_line_pull_off_load`.
 
-    Where the grid does not resolve the Dugdale zone (its small-scale width pi h0 E* / (4 sigma0) narrower than
-    ``settings.zone_elements`` elements, e.g. R = 1 mm on 2048 elements) the solve widens it at the same work of
-    adhesion (:func:`memstribo.physics.contact.subgrid.resolved_zone`, Turon et al. 2007), and here without the
-    contact-only part of sigma0 that the meshing cycle keeps on the elements in contact: that part is a strength
-    criterion on the element at the contact edge, whose mean stress near the edge's singularity depends on the
-    element width, and it raised the pull-off at R = 1 mm (2048 elements) from 447.0 to 495.8 N/m (+10.9 %) where the
-    widened law alone gives 453.0 N/m (+1.3 %): the pull-off is set by the energy release rate at the edge, w, which
-    the widened law keeps. The result is flagged unconverged where widening the zone would itself move the
-    Maugis-Dugdale pull-off (closed form at the widened law against the given one) by more than 1 %, i.e. where the
-    grid is too coarse for the given law.
+    Where the grid does not resolve the Dugdale zone (e.g. R = 1 mm on 2048 elements) the solve widens it at the
+    same w (:func:`memstribo.physics.contact.subgrid.resolved_zone`, Turon et al. 2007), here without the
+    contact-only part of sigma0 the meshing cycle keeps: a strength criterion on the contact's edge element that
+    depends on its width (R = 1 mm: 495.8 N/m with it, 453.0 without, closed forms 447.0; docs/contact.md). The
+    result is flagged unconverged where the widening itself moves the closed-form pull-off by more than 1 %.
     """
     from memstribo.physics.contact import solve_line_contact
     from memstribo.physics.closed_form import jkr_line_pull_off_load, maugis_line_parameter
@@ -293,14 +288,7 @@ def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_st
     dx = length / n
     x = (np.arange(n) - 0.5 * (n - 1)) * dx
     separation = x**2 / (2.0 * radius)
-    from memstribo.physics.contact.settings import resolve
-    from memstribo.physics.contact.subgrid import resolved_zone
-
-    solver = dataclasses.replace(resolve(settings), contact_only_range=0.0)
-    options = dict(periodic=periodic, tolerance=tolerance, cohesive_stress=sigma0, cohesive_range=h0,
-                   settings=solver)
-    # the law the solve uses on this grid (sigma0 itself where the grid resolves the zone)
-    sigma_used, _ = resolved_zone(dx, modulus, sigma0, h0, solver.zone_elements)
+    options, sigma_used = _pull_off_options(dx, modulus, sigma0, h0, periodic, tolerance, settings)
     lam = float(maugis_line_parameter(radius, modulus, w, sigma0))
     scale = abs(float(jkr_line_pull_off_load(radius, modulus, w)))
 
@@ -322,15 +310,36 @@ def line_contact_pull_off(radius, contact_modulus, work_of_adhesion, cohesive_st
     zone = float(curve.adhesive_load[k]) / (sigma_used * dx)  # elements of both edges' zones at pull-off
     if zone < 4:
         message += f"; the cohesive zone at pull-off spans only {zone:.1f} elements: use more points"
-    if sigma_used < sigma0:
-        from memstribo.physics.closed_form import maugis_dugdale_line_pull_off
-
-        given = float(maugis_dugdale_line_pull_off(radius, modulus, w, sigma0)[0])
-        widened = float(maugis_dugdale_line_pull_off(radius, modulus, w, sigma_used)[0])
-        shift = abs(widened / given - 1.0)
-        message += (f"; the grid does not resolve the Dugdale zone: solved with the same w over sigma = "
-                    f"{sigma_used:.4g} Pa, which moves the closed-form pull-off by {100 * shift:.2g} %")
-        if shift > 0.01 and converged:
-            converged = False
-            message += ": more than 1 %, NOT converged; use more points or a shorter length"
+    converged, message = _widened_zone_check(radius, modulus, w, sigma0, sigma_used, converged, message)
     return PullOff(-load_min, width, lam, h0, curve, dx, length, converged, message)
+
+
+def _pull_off_options(dx, modulus, sigma0, h0, periodic, tolerance, settings):
+    """The solver options of the pull-off's solves (the settings with ``contact_only_range = 0``) and the Dugdale
+    stress [Pa] the solve uses on this grid (sigma0 itself where the grid resolves the zone)."""
+    from memstribo.physics.contact.settings import resolve
+    from memstribo.physics.contact.subgrid import resolved_zone
+
+    solver = dataclasses.replace(resolve(settings), contact_only_range=0.0)
+    options = dict(periodic=periodic, tolerance=tolerance, cohesive_stress=sigma0, cohesive_range=h0,
+                   settings=solver)
+    return options, resolved_zone(dx, modulus, sigma0, h0, solver.zone_elements)[0]
+
+
+def _widened_zone_check(radius, modulus, w, sigma0, sigma_used, converged, message):
+    """(converged, message) of a pull-off solved with the widened stress ``sigma_used`` [Pa] instead of ``sigma0``
+    [Pa]: not converged where the widening moves the closed-form Maugis-Dugdale pull-off by more than 1 %
+    (R [m], E* [Pa], w [J/m²])."""
+    if sigma_used >= sigma0:
+        return converged, message
+    from memstribo.physics.closed_form import maugis_dugdale_line_pull_off
+
+    given = float(maugis_dugdale_line_pull_off(radius, modulus, w, sigma0)[0])
+    widened = float(maugis_dugdale_line_pull_off(radius, modulus, w, sigma_used)[0])
+    shift = abs(widened / given - 1.0)
+    message += (f"; the grid does not resolve the Dugdale zone: solved with the same w over sigma = "
+                f"{sigma_used:.4g} Pa, which moves the closed-form pull-off by {100 * shift:.2g} %")
+    if shift > 0.01 and converged:
+        converged = False
+        message += ": more than 1 %, NOT converged; use more points or a shorter length"
+    return converged, message

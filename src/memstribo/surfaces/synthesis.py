@@ -324,8 +324,8 @@ def complete_line(measured: Profile, length: float, spectrum_of: Profile, rng=No
     z = s.copy()
     z[outside] += covariance[np.abs(outside[:, None] - where[None, :])] @ weights
     z[start:start + m] = levelled.z
-    source = (f"measured: '{measured.name}' ({span * 1e6:.4g} µm, points {start} to {start + m - 1} of {n}); completed "
-              f"to {(n - 1) * dx * 1e6:.4g} µm by a continuation synthesised from the power spectrum of "
+    source = (f"measured: '{measured.name}' ({span * 1e6:.4g} µm, points {start} to {start + m - 1} of {n}); "
+              f"completed to {(n - 1) * dx * 1e6:.4g} µm by a continuation synthesised from the power spectrum of "
               f"'{spectrum_of.name}' and conditioned on the measured heights (kriging); {measured.source}")
     return Profile(x=np.arange(n) * dx, z=z, name=name or f"{measured.name}, completed", source=source,
                    synthetic=bool(measured.synthetic))
@@ -433,64 +433,76 @@ def row_roughness(roughness, params, rows: int, length: float, realisation: int 
                             f"{n_lines} independent seeded synthetic lines with the thesis's statistics "
                             f"(seed {seed}, realisation {realisation})", first.name, first.source, True)
     if isinstance(roughness, Profile):
-        span = float(roughness.x[-1] - roughness.x[0])
-        usable = span >= length
-        lines, measured = [], 0
-        for k in range(n_lines):
-            if realisation == 0 and k == 0:
-                lines.append(roughness if usable else complete_line(roughness, 1.02 * length, roughness, rng,
-                                                                   name=f"{roughness.name}, line {k}"))
-                measured = 1
-            else:
-                lines.append(synthesize_like(roughness, 1.02 * length, rng, name=f"{roughness.name}, line {k}"))
-        share = min(span, _span(lines[0])) / sum(_span(line) for line in lines) if measured else 0.0
-        return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured,
-                            ("the measured profile for the first pinion row, " if measured else "")
-                            + f"{n_lines - measured} lines synthesised from its power spectrum (random phases, "
-                            f"realisation {realisation})"
-                            + ("" if usable or not measured else
-                               f"; the scan ({span * 1e6:.3g} µm) is shorter than the {length * 1e6:.3g} µm of flank "
-                               f"travel: the first pinion line is measured over {span * 1e6:.3g} µm in its middle "
-                               f"and completed to {_span(lines[0]) * 1e6:.3g} µm by a continuation synthesised from "
-                               "its spectrum and conditioned on the measured heights"),
-                            roughness.name, roughness.source, bool(roughness.synthetic),
-                            0 if usable or not measured else 1, share)
+        return _profile_rows(roughness, rows, length, realisation, rng, offsets)
     if hasattr(roughness, "line_scans"):
-        scans = list(roughness.line_scans())
-        name = getattr(roughness, "name", "surface map")
-        source = getattr(roughness, "source", "")
-        dy = float(getattr(roughness, "dy", 0.0) or 0.0)
-        stride = max(1, int(round(float(params["adhesive_width"]) / dy))) if dy > 0 else 1
-        long_enough = [s for s in scans if float(s.x[-1] - s.x[0]) >= length]
-        start = realisation * n_lines * stride
-        reference = max(scans, key=lambda s: s.x.size)
-        lines, measured, completed, measured_length = [], 0, 0, 0.0
-        for k in range(n_lines):  # in this order: the random draws of the completions and syntheses
-            index = start + k * stride
-            if index >= len(scans):
-                lines.append(synthesize_like(reference, 1.02 * length, rng, name=f"{name}, line {k}"))
-                continue
-            scan = scans[index]
-            span = float(scan.x[-1] - scan.x[0])
-            measured += 1
-            measured_length += span
-            if span >= length:
-                lines.append(scan)
-            else:  # measured where it reaches, completed from the map's spectrum beyond (issue #41)
-                completed += 1
-                lines.append(complete_line(scan, 1.02 * length, scan, rng, name=f"{name}, line {k}"))
-        share = measured_length / sum(_span(line) for line in lines)
-        note = (f"{measured} measured scan lines ({stride} map rows apart, one nanoblock width) and "
-                f"{n_lines - measured} lines synthesised from the map's power spectrum (realisation {realisation})")
-        if not long_enough:
-            note += f"; the map's lines are shorter than the {length * 1e6:.3g} µm of flank travel"
-            if completed:
-                spans = sorted({round(float(s.x[-1] - s.x[0]) * 1e6, 3) for s in scans})
-                note += (f": each measured line is used over its {spans[0]:.4g} µm in the middle of its flank's travel "
-                         f"and completed to {1.02 * length * 1e6:.3g} µm by continuations synthesised from each line's own "
-                         f"power spectrum and conditioned on the measured heights ({100 * share:.3g} % of the lines' length "
-                         "measured)")
-        return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured, note, name, source,
-                            False, completed, share)
+        return _map_rows(roughness, params, rows, length, realisation, rng, offsets)
     raise InputError(f"roughness must be None, 'thesis', a file path, a Profile or a SurfaceMap; got "
                      f"{type(roughness).__name__}.")
+
+
+def _profile_rows(roughness, rows, length, realisation, rng, offsets) -> RowRoughness:
+    """:func:`row_roughness` of a measured profile (its first pinion line; every other line synthesised like it)."""
+    n_lines = 2 * rows
+    span = float(roughness.x[-1] - roughness.x[0])
+    usable = span >= length
+    lines, measured = [], 0
+    for k in range(n_lines):
+        if realisation == 0 and k == 0:
+            lines.append(roughness if usable else complete_line(roughness, 1.02 * length, roughness, rng,
+                                                               name=f"{roughness.name}, line {k}"))
+            measured = 1
+        else:
+            lines.append(synthesize_like(roughness, 1.02 * length, rng, name=f"{roughness.name}, line {k}"))
+    share = min(span, _span(lines[0])) / sum(_span(line) for line in lines) if measured else 0.0
+    return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured,
+                        ("the measured profile for the first pinion row, " if measured else "")
+                        + f"{n_lines - measured} lines synthesised from its power spectrum (random phases, "
+                        f"realisation {realisation})"
+                        + ("" if usable or not measured else
+                           f"; the scan ({span * 1e6:.3g} µm) is shorter than the {length * 1e6:.3g} µm of flank "
+                           f"travel: the first pinion line is measured over {span * 1e6:.3g} µm in its middle "
+                           f"and completed to {_span(lines[0]) * 1e6:.3g} µm by a continuation synthesised from "
+                           "its spectrum and conditioned on the measured heights"),
+                        roughness.name, roughness.source, bool(roughness.synthetic),
+                        0 if usable or not measured else 1, share)
+
+
+def _map_rows(roughness, params, rows, length, realisation, rng, offsets) -> RowRoughness:
+    """:func:`row_roughness` of a map: its scan lines one nanoblock width apart, completed where they are short."""
+    n_lines = 2 * rows
+    scans = list(roughness.line_scans())
+    name = getattr(roughness, "name", "surface map")
+    source = getattr(roughness, "source", "")
+    dy = float(getattr(roughness, "dy", 0.0) or 0.0)
+    stride = max(1, int(round(float(params["adhesive_width"]) / dy))) if dy > 0 else 1
+    long_enough = [s for s in scans if float(s.x[-1] - s.x[0]) >= length]
+    start = realisation * n_lines * stride
+    reference = max(scans, key=lambda s: s.x.size)
+    lines, measured, completed, measured_length = [], 0, 0, 0.0
+    for k in range(n_lines):  # in this order: the random draws of the completions and syntheses
+        index = start + k * stride
+        if index >= len(scans):
+            lines.append(synthesize_like(reference, 1.02 * length, rng, name=f"{name}, line {k}"))
+            continue
+        scan = scans[index]
+        span = float(scan.x[-1] - scan.x[0])
+        measured += 1
+        measured_length += span
+        if span >= length:
+            lines.append(scan)
+        else:  # measured where it reaches, completed from the map's spectrum beyond (issue #41)
+            completed += 1
+            lines.append(complete_line(scan, 1.02 * length, scan, rng, name=f"{name}, line {k}"))
+    share = measured_length / sum(_span(line) for line in lines)
+    note = (f"{measured} measured scan lines ({stride} map rows apart, one nanoblock width) and "
+            f"{n_lines - measured} lines synthesised from the map's power spectrum (realisation {realisation})")
+    if not long_enough:
+        note += f"; the map's lines are shorter than the {length * 1e6:.3g} µm of flank travel"
+        if completed:
+            spans = sorted({round(float(s.x[-1] - s.x[0]) * 1e6, 3) for s in scans})
+            note += (f": each measured line is used over its {spans[0]:.4g} µm in the middle of its flank's travel "
+                     f"and completed to {1.02 * length * 1e6:.3g} µm by continuations synthesised from each line's "
+                     f"own power spectrum and conditioned on the measured heights ({100 * share:.3g} % of the lines' "
+                     "length measured)")
+    return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured, note, name, source,
+                        False, completed, share)
