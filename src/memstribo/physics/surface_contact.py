@@ -181,10 +181,14 @@ class SurfaceContactSolution(ContactSolve):
             "contact": (("y", "x"), self.contact.astype(np.int8),
                         {"units": "1", "long_name": "in contact (1) or not (0)"}),
         }
+        if self.plastic is not None:
+            data["plastic"] = (("y", "x"), self.plastic.astype(np.int8),
+                               {"units": "1", "long_name": "at the hardness, plastic flow (1) or not (0)"})
         attrs = {"approach": self.approach, "approach_units": "m", "load": self.load, "load_units": "N",
                  "contact_fraction": self.contact_fraction, "iterations": self.iterations,
                  "residual": self.residual, "converged": int(self.converged), "periodic": int(self.periodic),
-                 "message": self.message, "solver": "memstribo.physics.surface_contact.solve_surface_contact"}
+                 "message": self.message, "solver": "memstribo.physics.surface_contact.solve_surface_contact",
+                 "plastic_fraction": self.plastic_fraction}
         return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
