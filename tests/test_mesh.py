@@ -300,9 +300,10 @@ def test_measured_profile_and_map(params, afm_dir):
     ds_map = simulate_mesh(params, surface, steps=11)
     assert ds_map.attrs["rows_solved"] == ds_map.attrs["rows"] == 10
     assert "synthesised from the map" in ds_map.attrs["roughness_rows"]
-    # a scan shorter than the flank travel is extended by synthesis, not refused
+    # a scan shorter than the flank travel is used where it reaches and completed by synthesis, not refused (#41)
     short = simulate_mesh(params, read_topography(afm_dir / "si_profile_linescan.txt"), steps=11)
-    assert short.attrs["roughness_lines_measured"] == 0 and "shorter than" in short.attrs["roughness_rows"]
+    assert short.attrs["roughness_lines_measured"] == 1 and short.attrs["roughness_lines_completed"] == 1
+    assert "shorter than" in short.attrs["roughness_rows"] and "completed" in short.attrs["roughness_rows"]
 
 
 def test_unconverged_steps_are_flagged_and_counted(params, monkeypatch):

@@ -91,6 +91,10 @@ REFERENCES: dict[str, str] = {
         "T. D. B. Jacobs, T. Junge, L. Pastewka, 'Quantitative characterization of surface topography using "
         "spectral analysis', Surf. Topogr.: Metrol. Prop. 5 (2017) 013001. doi:10.1088/2051-672X/aa51f8"
     ),
+    "journel_huijbregts_1978": (
+        "A. G. Journel, Ch. J. Huijbregts, Mining Geostatistics, Academic Press, London, 1978 (ch. V: conditional "
+        "simulation by kriging)."
+    ),
     "teodorescu_2009": (
         "M. Teodorescu, S. Theodossiades, H. Rahnejat, 'Impact dynamics of rough and surface protected MEMS "
         "gears', Tribol. Int. 42 (2009) 197-205. doi:10.1016/j.triboint.2008.04.012"

@@ -29,6 +29,16 @@ point in x and y, each solved loosely); Polonsky & Keer's (1999) constrained con
 gradient (preconditioned) is the fallback. Real 2D FFTs (scipy.fft, ``workers=1``), kernels
 cached per grid, float64 throughout.
 
+Plastic flow (``hardness``): the pressure is capped at the hardness H of the softer body, the
+elastic-perfectly-plastic surface model of the line solve
+(:func:`memstribo.physics.contact.solve_line_contact_capped`, MODEL 7d) and of the peer BEM codes
+(ContactMechanics' ``constrained_conjugate_gradients(..., hardness=H)``, whose CG leaves out the
+elements at H and truncates the pressure there, with its ``PlasticNonSmoothContactSystem``; Tamaas'
+``KatoSaturated`` solver with its saturation pressure ``pmax``; Almqvist et al. 2007):
+0 <= p <= H, g = 0 where 0 < p < H, g <= 0 where p = H (the interpenetration is the plastic
+flattening), g >= 0 where p = 0, dx dy sum(p) = W; solved, as in the line solve, by an active set on
+the plastic elements around the elastic solver (:func:`_solve_capped`).
+
 Adhesion hook: the solver is written for the non-adhesive complementarity conditions; the
 keyword ``interaction`` of :func:`solve_surface_contact` is reserved for a cohesive-zone law
 (Maugis-Dugdale: a constant tensile traction where 0 < g < range), which would enter as an
@@ -43,10 +53,15 @@ References
 .. [3] H. M. Stanley, T. Kato, 'An FFT-based method for rough surface contact', J. Tribol.
    119 (1997) 481-485. :doi:`10.1115/1.2833523`
 .. [4] E. A. H. Vollebregt, J. Comput. Phys. 257 (2014) 333-351. :doi:`10.1016/j.jcp.2013.10.005`
+.. [5] A. Almqvist, F. Sahlin, R. Larsson, S. Glavatskih, Tribol. Int. 40 (2007) 574-579
+   (elastic-perfectly-plastic contact of rough surfaces, the pressure capped at the hardness).
+.. [6] L. Frérot, G. Anciaux, V. Rey, S. Pham-Ba, J.-F. Molinari, 'Tamaas: a library for elastic-plastic contact
+   of periodic rough surfaces', J. Open Source Softw. 5 (2020) 2121 (``KatoSaturated``).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import time
 from dataclasses import dataclass
@@ -111,12 +126,27 @@ class SurfaceContactSolution(ContactSolve):
         peak-to-valley of the separation [-].
     dx, dy : float
         Element sizes along x and y [m].
+    plastic : numpy.ndarray or None
+        Where a ``hardness`` was given: True where an element is in plastic flow (pressure at the hardness),
+        shape (ny, nx); None without a hardness.
+    plastic_updates : int
+        Updates of the plastic set (0 where no element reached the hardness).
     """
 
     dx: float
     dy: float
     periodic: bool
     coarse_iterations: int = 0
+    plastic: np.ndarray | None = None
+    plastic_updates: int = 0
+
+    @property
+    def plastic_fraction(self) -> float:
+        """Share of the elements in contact that are at the hardness [-] (0 without a hardness or contact)."""
+        n_contact = int(np.count_nonzero(self.contact))
+        if self.plastic is None or n_contact == 0:
+            return 0.0
+        return float(np.count_nonzero(self.plastic) / n_contact)
 
     @property
     def contact_fraction(self) -> float:
@@ -151,10 +181,14 @@ class SurfaceContactSolution(ContactSolve):
             "contact": (("y", "x"), self.contact.astype(np.int8),
                         {"units": "1", "long_name": "in contact (1) or not (0)"}),
         }
+        if self.plastic is not None:
+            data["plastic"] = (("y", "x"), self.plastic.astype(np.int8),
+                               {"units": "1", "long_name": "at the hardness, plastic flow (1) or not (0)"})
         attrs = {"approach": self.approach, "approach_units": "m", "load": self.load, "load_units": "N",
                  "contact_fraction": self.contact_fraction, "iterations": self.iterations,
                  "residual": self.residual, "converged": int(self.converged), "periodic": int(self.periodic),
-                 "message": self.message, "solver": "memstribo.physics.surface_contact.solve_surface_contact"}
+                 "message": self.message, "solver": "memstribo.physics.surface_contact.solve_surface_contact",
+                 "plastic_fraction": self.plastic_fraction}
         return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
@@ -344,7 +378,7 @@ def _dot(a, b):
 
 
 def _check_inputs(separation, dx, dy, contact_modulus, load, mean_pressure, tolerance, max_iterations,
-                  initial_pressure, interaction):
+                  initial_pressure, interaction, hardness=None):
     h = np.asarray(separation, dtype=float)
     if h.ndim != 2 or min(h.shape) < 2:
         raise InputError(f"separation must be a 2-D array (ny, nx) of gap values [m] with ny, nx >= 2, got shape "
@@ -367,6 +401,8 @@ def _check_inputs(separation, dx, dy, contact_modulus, load, mean_pressure, tole
         p0 = np.asarray(initial_pressure, dtype=float)
         if p0.shape != h.shape or not np.all(np.isfinite(p0)) or np.any(p0 < 0):
             raise InputError("initial_pressure [Pa] must be finite, >= 0 and of the same shape as separation")
+    if hardness is not None and not (np.isscalar(hardness) and np.isfinite(hardness) and hardness > 0):
+        raise InputError(f"hardness must be a positive finite pressure [Pa] or None (no cap), got {hardness!r}")
     if interaction is not None:
         raise InputError("interaction (an adhesive cohesive-zone law, e.g. Maugis-Dugdale) is reserved and not "
                          "implemented yet; leave it None (non-adhesive contact)")
@@ -547,7 +583,7 @@ def _resolution_notes(coarse_iterations, contact, periodic) -> str:
 @cites("johnson_1985", "polonsky_keer_1999", "vollebregt_2014")
 def solve_surface_contact(separation, dx, dy, contact_modulus, *, load=None, mean_pressure=None, periodic=False,
                           tolerance=1e-8, max_iterations=None, initial_pressure=None, continuation=True,
-                          interaction=None):
+                          interaction=None, hardness=None):
     r"""Solve the non-adhesive normal contact of a rough surface under a given load.
 
     Parameters
@@ -576,12 +612,17 @@ def solve_surface_contact(separation, dx, dy, contact_modulus, *, load=None, mea
         Start from nested coarser grids (default).
     interaction : None
         Reserved for an adhesive cohesive-zone law (Maugis-Dugdale); must be None.
+    hardness : float, optional
+        Largest contact pressure H [Pa] (elastic-perfectly-plastic: the pressure is capped at H, the
+        surfaces close in by plastic flattening there; module docstring). None (default): purely elastic.
+        Where no element of the elastic solution exceeds H the elastic solution is returned as it is.
 
     Returns
     -------
     SurfaceContactSolution
         Pressure, gap, contact set, approach, load, iterations, residual, converged flag,
-        timing. Non-convergence is reported by ``converged=False`` and ``message``.
+        timing, and with a hardness the plastic elements. Non-convergence is reported by
+        ``converged=False`` and ``message``.
 
     Notes
     -----
@@ -603,7 +644,21 @@ def solve_surface_contact(separation, dx, dy, contact_modulus, *, load=None, mea
     """
     start = time.perf_counter()
     h = _check_inputs(separation, dx, dy, contact_modulus, load, mean_pressure, tolerance, max_iterations,
-                      initial_pressure, interaction)
+                      initial_pressure, interaction, hardness)
+    elastic = _solve_elastic(h, dx, dy, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
+                             initial_pressure, continuation, start)
+    if hardness is None:
+        return elastic
+    if not np.any(elastic.pressure > hardness):  # the cap is not reached: the elastic solution, bit for bit
+        return dataclasses.replace(elastic, plastic=np.zeros(h.shape, dtype=bool))
+    total_load = float(load) if load is not None else float(mean_pressure) * h.size * float(dx) * float(dy)
+    return _solve_capped(h, elastic, float(contact_modulus), total_load, float(hardness), tolerance, max_iterations,
+                         start)
+
+
+def _solve_elastic(h, dx, dy, contact_modulus, load, mean_pressure, periodic, tolerance, max_iterations,
+                   initial_pressure, continuation, start):
+    """The elastic solve of :func:`solve_surface_contact` (inputs checked; ``start`` [s]: when the solve began)."""
     ny, nx = h.shape
     dx, dy, modulus, periodic = float(dx), float(dy), float(contact_modulus), bool(periodic)
     target = float(mean_pressure) if mean_pressure is not None else float(load) / (h.size * dx * dy)
@@ -643,3 +698,69 @@ def solve_surface_contact(separation, dx, dy, contact_modulus, *, load=None, mea
                                   converged=bool(converged), solve_time=time.perf_counter() - start,
                                   message=message, dx=dx, dy=dy, periodic=periodic,
                                   coarse_iterations=coarse_iterations)
+
+
+#: Updates of the plastic set before the capped surface solve gives up (converged=False): the line solve's
+#: ``SolverSettings.max_plastic_updates``.
+_MAX_PLASTIC_UPDATES = _LINE_DEFAULTS.max_plastic_updates
+
+
+@cites("almqvist_2007", "johnson_1985", "model")
+def _solve_capped(h, elastic, modulus, load, hardness, tolerance, max_iterations, start):
+    """The surface contact with the pressure capped at ``hardness`` [Pa] under the ``load`` [N], from its elastic
+    solution ``elastic`` (``h`` [m] the separation, ``modulus`` E* [Pa], ``start`` [s] when the solve began).
+
+    An active set on the plastic elements P (those at the hardness), as the line solve's
+    (:func:`memstribo.physics.contact.solve_line_contact_capped`): with P held at p = H, the rest is the
+    elastic problem with the gap raised by the displacement of the plastic pressure, h + u(H 1_P), and the
+    load W - H dx dy |P| (the elements of P lifted out of reach); then elements of the elastic solution above H
+    join P and elements of P whose gap opens (g > 0) leave, until P no longer changes. The KKT conditions are
+    those of ContactMechanics' constrained CG with a hardness and of Tamaas' ``KatoSaturated``: 0 <= p <= H,
+    g = 0 on 0 < p < H, g <= 0 on p = H, g >= 0 on p = 0.
+    """
+    dx, dy, periodic = elastic.dx, elastic.dy, elastic.periodic
+    area = dx * dy
+    operator = _half_space(h.shape, dx, dy, modulus, periodic)
+    plastic = elastic.pressure > hardness
+    guess_pressure = elastic.pressure
+    history = set()
+    updates, note, iterations = 0, "", elastic.iterations
+    while True:
+        updates += 1
+        raised = h + operator.displacement(np.where(plastic, hardness, 0.0))
+        free = ~plastic
+        top = float(raised[free].max()) if free.any() else float(raised.max())
+        lifted = np.where(plastic, np.maximum(raised, top) + max(float(np.ptp(raised)), 1e-12), raised)
+        rest = load - hardness * area * int(np.count_nonzero(plastic))
+        if rest <= 0.0 or not free.any():  # cannot happen (each joining element takes less than its share)
+            note = "; NOT converged: the plastic set carries the whole load"
+            break
+        guess = np.where(plastic, 0.0, np.clip(guess_pressure, 0.0, hardness))
+        inner = solve_surface_contact(lifted, dx, dy, modulus, load=rest, periodic=periodic, tolerance=tolerance,
+                                      max_iterations=max_iterations,
+                                      initial_pressure=guess if guess.sum() > 0 else None)
+        iterations += inner.iterations
+        pressure = np.where(plastic, hardness, inner.pressure)
+        total = raised + operator.displacement(inner.pressure)
+        elastic_contact = inner.contact & free
+        delta = float(total[elastic_contact].mean()) if elastic_contact.any() else float(total[plastic].max())
+        gap_all = total - delta
+        guess_pressure = pressure
+        joining = (inner.pressure > hardness) & free
+        leaving = plastic & (gap_all > 0.0)
+        if not joining.any() and not leaving.any():
+            break
+        history.add(plastic.tobytes())
+        plastic = (plastic | joining) & ~leaving
+        if plastic.tobytes() in history or updates >= _MAX_PLASTIC_UPDATES:
+            note = f"; NOT converged: the plastic set did not settle in {updates} updates"
+            break
+    n_plastic = int(np.count_nonzero(plastic))
+    converged = bool(inner.converged and not note)
+    message = (f"{inner.message}; pressure capped at the hardness {hardness / 1e9:.3g} GPa on {n_plastic} "
+               f"element(s) after {updates} plastic-set update(s){note}")
+    return dataclasses.replace(
+        inner, pressure=pressure, gap=np.where(plastic, 0.0, inner.gap), contact=inner.contact | plastic,
+        approach=delta, load=float(pressure.sum() * area), iterations=iterations, converged=converged,
+        solve_time=time.perf_counter() - start, message=message, plastic=plastic, plastic_updates=updates,
+        coarse_iterations=elastic.coarse_iterations + inner.coarse_iterations)

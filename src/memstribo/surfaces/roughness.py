@@ -38,8 +38,8 @@ from memstribo.surfaces.statistics import (ArealStatistics, LineScanStatistics, 
                                            kurtosis, line_scan_statistics, max_height, max_peak_height,
                                            max_valley_depth, profile_statistics, rms_height, rms_slope,
                                            rms_wavelength, skewness)
-from memstribo.surfaces.synthesis import (RowRoughness, default_profile, power_spectrum_1d, row_roughness,
-                                          synthesize_like, synthetic_profile)
+from memstribo.surfaces.synthesis import (RowRoughness, complete_line, default_profile, power_spectrum_1d,
+                                          row_roughness, synthesize_like, synthetic_profile)
 
 __all__ = [
     "Profile",
@@ -67,6 +67,7 @@ __all__ = [
     "synthetic_profile",
     "power_spectrum_1d",
     "synthesize_like",
+    "complete_line",
     "RowRoughness",
     "row_roughness",
     "default_profile",

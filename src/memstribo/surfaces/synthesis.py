@@ -185,6 +185,18 @@ def power_spectrum_1d(profile: Profile, bins_per_decade: int = 12):
     return np.exp(q_mean / counts), c_mean / counts
 
 
+def _amplitudes(spectrum, n: int, dx: float) -> np.ndarray:
+    """sqrt(C(q)) [m^1.5] on the wavenumbers of an n-point real FFT at step dx [m] of a smoothed PSD
+    ``spectrum`` = (q [rad/m], C [m^3]) (:func:`power_spectrum_1d`): interpolated log-log, held at its
+    long-wavelength value below the scan's lowest wavenumber, cut above its Nyquist wavenumber, 0 at q = 0."""
+    q_measured, c_measured = spectrum
+    q = 2 * np.pi * np.fft.rfftfreq(n, dx)
+    log_c = np.interp(np.log(np.maximum(q, q_measured[0])), np.log(q_measured), np.log(np.maximum(c_measured, 1e-300)))
+    amplitude = np.sqrt(np.exp(log_c)) * (q <= q_measured[-1] * (1 + 1e-9))
+    amplitude[0] = 0.0
+    return amplitude
+
+
 def synthesize_like(profile: Profile, length: float, rng=None, spacing: float | None = None,
                     name: str | None = None) -> Profile:
     """An independent line with the power spectrum and Rq of a measured profile.
@@ -218,15 +230,13 @@ def synthesize_like(profile: Profile, length: float, rng=None, spacing: float | 
     if not (np.isfinite(length) and length > 0):
         raise InputError(f"synthesize_like: length must be a positive number of metres, got {length!r}.")
     generator = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
-    q_measured, c_measured = power_spectrum_1d(profile)
+    spectrum = power_spectrum_1d(profile)
     dx = float(profile.x[1] - profile.x[0]) if spacing is None else float(spacing)
     n = int(math.ceil(length / dx)) + 1
     if n > 50_000_000:
         raise InputError(f"synthesize_like: {n} points ({length:.3g} m at {dx:.3g} m) is too many.")
+    amplitude = _amplitudes(spectrum, n, dx)
     q = 2 * np.pi * np.fft.rfftfreq(n, dx)
-    log_c = np.interp(np.log(np.maximum(q, q_measured[0])), np.log(q_measured), np.log(np.maximum(c_measured, 1e-300)))
-    amplitude = np.sqrt(np.exp(log_c)) * (q <= q_measured[-1] * (1 + 1e-9))
-    amplitude[0] = 0.0
     amplitude = amplitude * generator.rayleigh(1.0, q.size)
     phases = np.exp(2j * np.pi * generator.random(q.size))
     z = np.fft.irfft(amplitude * phases, n)
@@ -237,6 +247,88 @@ def synthesize_like(profile: Profile, length: float, rng=None, spacing: float | 
     source = (f"synthetic: Fourier synthesis (random phases) from the power spectrum of '{profile.name}', "
               f"scaled to its Rq {rq_target:.4g} m; {n} points at {dx:.4g} m")
     return Profile(x=x, z=z, name=name or f"synthesised like {profile.name}", source=source, synthetic=True)
+
+
+#: Measured points next to each end of a measured line on which its synthesised continuation is conditioned.
+_CONDITIONING_POINTS = 256
+#: Variance of the white noise assumed on the measured heights in that conditioning, relative to Rq^2 [-].
+_NOISE = 1e-4
+
+
+@cites("jacobs_2017", "journel_huijbregts_1978")
+def complete_line(measured: Profile, length: float, spectrum_of: Profile, rng=None, name: str | None = None) -> Profile:
+    """A measured line shorter than ``length``, completed on both sides from a power spectrum; the measured heights
+    are kept as they are.
+
+    The levelled measured line sits in the middle of the new line (same step); the rest is a line synthesised from
+    the spectrum of ``spectrum_of`` (:func:`synthesize_like`, twice as long, so that its periodicity does not tie
+    the two ends together) conditioned on the measured heights next to each end (the last
+    :data:`_CONDITIONING_POINTS` on each side) by simple kriging with the covariance of that spectrum: conditional
+    simulation (Journel and Huijbregts 1978, ch. V), z = s + k^T K^-1 (z_measured - s) outside the measured part,
+    where s is the unconditional line, K the covariance between the measured points used and k that between them
+    and each point outside. The continuation meets the measured line without a step and has the spectrum's
+    statistics away from it (a Gaussian process, whatever the measured height distribution).
+
+    Parameters
+    ----------
+    measured : Profile
+        The measured line (uniform step, at least 16 points).
+    length : float
+        Length of the completed line [m]; a line at least this long is returned as it is.
+    spectrum_of : Profile
+        The line whose spectrum and Rq the continuation has (e.g. the measured line itself, or a map's longest
+        line).
+    rng : numpy.random.Generator or int or None
+    name : str, optional
+
+    Returns
+    -------
+    Profile
+        ``synthetic=False`` (its middle is measured); ``source`` says which part is measured.
+    """
+    import scipy.linalg
+
+    span = float(measured.x[-1] - measured.x[0])
+    if span >= length:
+        return measured
+    levelled = level_profile(measured)
+    m = levelled.z.size
+    if m < 16:
+        raise InputError(f"line '{measured.name}' has {m} points; completing it needs at least 16.")
+    dx = span / (m - 1)
+    n = int(math.ceil(length / dx)) + 1
+    generator = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
+    unconditional = synthesize_like(spectrum_of, 2.0 * length, generator, spacing=dx)
+    big = unconditional.z.size
+    s = unconditional.z[:n] - unconditional.z[:n].mean()
+    # the covariance of the synthesis: the inverse transform of C(q) on its grid, scaled to its Rq
+    covariance = np.fft.irfft(_amplitudes(power_spectrum_1d(spectrum_of), big, dx) ** 2, big)
+    rq = rms_height(level_profile(spectrum_of).z)
+    covariance *= rq**2 / covariance[0] if covariance[0] > 0 else 0.0
+    start = (n - m) // 2
+    k = min(m, _CONDITIONING_POINTS)
+    used = np.unique(np.concatenate([np.arange(k), np.arange(m - k, m)]))  # measured points used
+    where = start + used
+    outside = np.concatenate([np.arange(start), np.arange(start + m, n)])
+    matrix = covariance[np.abs(where[:, None] - where[None, :])]
+    # white noise on the measured heights, of 1 % of Rq (an instrument's noise floor), or the measured line's
+    # short-wavelength power that the smoothed, band-limited spectrum leaves out (its step variance above the
+    # model's 2 (C(0) - C(dx))) where that is more: the spectrum's covariance is smooth, and kriging on it without
+    # noise extrapolates the measured line's curvature (a measured edge at 151 nm continued at 245 nm on di-3.di)
+    excess = 0.5 * max(float(np.var(np.diff(levelled.z))) - 2.0 * float(covariance[0] - covariance[1]), 0.0)
+    matrix[np.diag_indices_from(matrix)] += max(excess, _NOISE * float(covariance[0]))
+    try:
+        weights = scipy.linalg.cho_solve(scipy.linalg.cho_factor(matrix), levelled.z[used] - s[where])
+    except np.linalg.LinAlgError:  # a spectrum with (numerically) no power at some wavelengths
+        weights = np.linalg.lstsq(matrix, levelled.z[used] - s[where], rcond=None)[0]
+    z = s.copy()
+    z[outside] += covariance[np.abs(outside[:, None] - where[None, :])] @ weights
+    z[start:start + m] = levelled.z
+    source = (f"measured: '{measured.name}' ({span * 1e6:.4g} µm, points {start} to {start + m - 1} of {n}); "
+              f"completed to {(n - 1) * dx * 1e6:.4g} µm by a continuation synthesised from the power spectrum of "
+              f"'{spectrum_of.name}' and conditioned on the measured heights (kriging); {measured.source}")
+    return Profile(x=np.arange(n) * dx, z=z, name=name or f"{measured.name}, completed", source=source,
+                   synthetic=bool(measured.synthetic))
 
 
 @dataclass(frozen=True)
@@ -251,13 +343,18 @@ class RowRoughness:
         Offset across the face width of the gear's atomic-block lattice relative to the
         pinion's, per row [m] (uniform in [0, atomic pitch)): the lattices are not aligned.
     measured_lines, synthesised_lines : int
-        How many of the 2 x rows lines are measured and how many synthesised.
+        How many of the 2 x rows lines are measured (wholly or in part) and how many synthesised whole.
     method : str
         How the lines were made (one sentence).
     name, source : str
         The roughness the statistics come from, and its provenance.
     synthetic : bool
         Whether the statistics themselves are synthetic (the thesis default).
+    completed_lines : int
+        How many of the measured lines are shorter than the travel and were completed from the spectrum
+        (:func:`complete_line`).
+    measured_share : float
+        Share of the lines' total length that is measured [-].
     """
 
     pinion: list
@@ -269,6 +366,12 @@ class RowRoughness:
     name: str
     source: str
     synthetic: bool
+    completed_lines: int = 0
+    measured_share: float = 0.0
+
+
+def _span(line: Profile) -> float:
+    return float(line.x[-1] - line.x[0])
 
 
 def _realisation_rng(seed: int, realisation: int) -> np.random.Generator:
@@ -283,11 +386,14 @@ def row_roughness(roughness, params, rows: int, length: float, realisation: int 
     - ``None`` / ``"thesis"``: the synthetic default recipe (:func:`default_profile`) with
       independent seeds; realisation 0's first pinion line is exactly the default profile;
     - a :class:`Profile` (a measured line scan): it is the first pinion line of realisation 0
-      when it is long enough; every other line is synthesised like it (:func:`synthesize_like`);
+      (completed from its spectrum where it is shorter than ``length``, :func:`complete_line`);
+      every other line is synthesised like it (:func:`synthesize_like`);
     - a map (``line_scans()``, pixel size ``dy``): scan lines one nanoblock width apart are
-      the pinion's rows, the next ones the gear's; a map with too few lines, or lines shorter
-      than ``length``, is completed by lines synthesised from its mean spectrum, and the
-      realisations > 0 take other lines of the map where there are enough, else synthesise.
+      the pinion's rows, the next ones the gear's; lines shorter than ``length`` are used where
+      they reach and completed from their own spectrum beyond (:func:`complete_line`); a map
+      with too few lines is completed by lines synthesised whole from the spectrum of its longest
+      line, and the realisations > 0 take other lines of the map where there are enough, else
+      synthesise.
 
     Parameters
     ----------
@@ -327,45 +433,76 @@ def row_roughness(roughness, params, rows: int, length: float, realisation: int 
                             f"{n_lines} independent seeded synthetic lines with the thesis's statistics "
                             f"(seed {seed}, realisation {realisation})", first.name, first.source, True)
     if isinstance(roughness, Profile):
-        usable = float(roughness.x[-1] - roughness.x[0]) >= length
-        lines, measured = [], 0
-        for k in range(n_lines):
-            if realisation == 0 and k == 0 and usable:
-                lines.append(roughness)
-                measured = 1
-            else:
-                lines.append(synthesize_like(roughness, 1.02 * length, rng, name=f"{roughness.name}, line {k}"))
-        return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured,
-                            ("the measured profile for the first pinion row, " if measured else "")
-                            + f"{n_lines - measured} lines synthesised from its power spectrum (random phases, "
-                            f"realisation {realisation})"
-                            + ("" if usable else f"; the scan ({(roughness.x[-1] - roughness.x[0]) * 1e6:.3g} µm) "
-                               f"is shorter than the {length * 1e6:.3g} µm of flank travel"),
-                            roughness.name, roughness.source, bool(roughness.synthetic))
+        return _profile_rows(roughness, rows, length, realisation, rng, offsets)
     if hasattr(roughness, "line_scans"):
-        scans = list(roughness.line_scans())
-        name = getattr(roughness, "name", "surface map")
-        source = getattr(roughness, "source", "")
-        dy = float(getattr(roughness, "dy", 0.0) or 0.0)
-        stride = max(1, int(round(float(params["adhesive_width"]) / dy))) if dy > 0 else 1
-        long_enough = [s for s in scans if float(s.x[-1] - s.x[0]) >= length]
-        picked = []
-        start = realisation * n_lines * stride
-        for k in range(n_lines):
-            index = start + k * stride
-            if index < len(scans) and float(scans[index].x[-1] - scans[index].x[0]) >= length:
-                picked.append(scans[index])
-            else:
-                picked.append(None)
-        measured = sum(p is not None for p in picked)
-        reference = max(scans, key=lambda s: s.x.size)
-        lines = [p if p is not None else synthesize_like(reference, 1.02 * length, rng, name=f"{name}, line {k}")
-                 for k, p in enumerate(picked)]
-        note = (f"{measured} measured scan lines ({stride} map rows apart, one nanoblock width) and "
-                f"{n_lines - measured} lines synthesised from the map's power spectrum (realisation {realisation})")
-        if not long_enough:
-            note += f"; the map's lines are shorter than the {length * 1e6:.3g} µm of flank travel"
-        return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured, note, name, source,
-                            False)
+        return _map_rows(roughness, params, rows, length, realisation, rng, offsets)
     raise InputError(f"roughness must be None, 'thesis', a file path, a Profile or a SurfaceMap; got "
                      f"{type(roughness).__name__}.")
+
+
+def _profile_rows(roughness, rows, length, realisation, rng, offsets) -> RowRoughness:
+    """:func:`row_roughness` of a measured profile (its first pinion line; every other line synthesised like it)."""
+    n_lines = 2 * rows
+    span = float(roughness.x[-1] - roughness.x[0])
+    usable = span >= length
+    lines, measured = [], 0
+    for k in range(n_lines):
+        if realisation == 0 and k == 0:
+            lines.append(roughness if usable else complete_line(roughness, 1.02 * length, roughness, rng,
+                                                               name=f"{roughness.name}, line {k}"))
+            measured = 1
+        else:
+            lines.append(synthesize_like(roughness, 1.02 * length, rng, name=f"{roughness.name}, line {k}"))
+    share = min(span, _span(lines[0])) / sum(_span(line) for line in lines) if measured else 0.0
+    return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured,
+                        ("the measured profile for the first pinion row, " if measured else "")
+                        + f"{n_lines - measured} lines synthesised from its power spectrum (random phases, "
+                        f"realisation {realisation})"
+                        + ("" if usable or not measured else
+                           f"; the scan ({span * 1e6:.3g} µm) is shorter than the {length * 1e6:.3g} µm of flank "
+                           f"travel: the first pinion line is measured over {span * 1e6:.3g} µm in its middle "
+                           f"and completed to {_span(lines[0]) * 1e6:.3g} µm by a continuation synthesised from "
+                           "its spectrum and conditioned on the measured heights"),
+                        roughness.name, roughness.source, bool(roughness.synthetic),
+                        0 if usable or not measured else 1, share)
+
+
+def _map_rows(roughness, params, rows, length, realisation, rng, offsets) -> RowRoughness:
+    """:func:`row_roughness` of a map: its scan lines one nanoblock width apart, completed where they are short."""
+    n_lines = 2 * rows
+    scans = list(roughness.line_scans())
+    name = getattr(roughness, "name", "surface map")
+    source = getattr(roughness, "source", "")
+    dy = float(getattr(roughness, "dy", 0.0) or 0.0)
+    stride = max(1, int(round(float(params["adhesive_width"]) / dy))) if dy > 0 else 1
+    long_enough = [s for s in scans if float(s.x[-1] - s.x[0]) >= length]
+    start = realisation * n_lines * stride
+    reference = max(scans, key=lambda s: s.x.size)
+    lines, measured, completed, measured_length = [], 0, 0, 0.0
+    for k in range(n_lines):  # in this order: the random draws of the completions and syntheses
+        index = start + k * stride
+        if index >= len(scans):
+            lines.append(synthesize_like(reference, 1.02 * length, rng, name=f"{name}, line {k}"))
+            continue
+        scan = scans[index]
+        span = float(scan.x[-1] - scan.x[0])
+        measured += 1
+        measured_length += span
+        if span >= length:
+            lines.append(scan)
+        else:  # measured where it reaches, completed from the map's spectrum beyond (issue #41)
+            completed += 1
+            lines.append(complete_line(scan, 1.02 * length, scan, rng, name=f"{name}, line {k}"))
+    share = measured_length / sum(_span(line) for line in lines)
+    note = (f"{measured} measured scan lines ({stride} map rows apart, one nanoblock width) and "
+            f"{n_lines - measured} lines synthesised from the map's power spectrum (realisation {realisation})")
+    if not long_enough:
+        note += f"; the map's lines are shorter than the {length * 1e6:.3g} µm of flank travel"
+        if completed:
+            spans = sorted({round(float(s.x[-1] - s.x[0]) * 1e6, 3) for s in scans})
+            note += (f": each measured line is used over its {spans[0]:.4g} µm in the middle of its flank's travel "
+                     f"and completed to {1.02 * length * 1e6:.3g} µm by continuations synthesised from each line's "
+                     f"own power spectrum and conditioned on the measured heights ({100 * share:.3g} % of the lines' "
+                     "length measured)")
+    return RowRoughness(lines[:rows], lines[rows:], offsets, measured, n_lines - measured, note, name, source,
+                        False, completed, share)

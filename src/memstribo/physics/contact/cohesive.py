@@ -443,18 +443,19 @@ def _zone_kind(sigma0, h0, zones):
                and zones[1][1] < 1e-3 * zones[0][1])  # the contact-only part has (almost) no range
     if not widened:
         return _kind_text(sigma0, h0)
-    (sigma, h), _ = zones
-    return _kind_text(sigma0, h0, sigma, h)
+    (sigma, h), (_, reach) = zones
+    return _kind_text(sigma0, h0, sigma, h, reach == 0.0)
 
 
 @functools.lru_cache(maxsize=16)
-def _kind_text(sigma0, h0, sigma=None, h=None):
-    """:func:`_zone_kind`'s text, kept per zone (a meshing cycle's ~10^4 solves share one)."""
+def _kind_text(sigma0, h0, sigma=None, h=None, everywhere=False):
+    """:func:`_zone_kind`'s text, kept per zone (a meshing cycle's ~10^4 solves share one); ``everywhere``: the
+    contact-only part has no range at all (``SolverSettings.contact_only_range = 0``), the contact holds sigma too."""
     if sigma is None:
         return f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {h0:.4g} m)"
     return (f"adhesive (Maugis-Dugdale, sigma0 = {sigma0:.4g} Pa, h0 = {sigma * h / sigma0:.4g} m; the zone is "
-            f"narrower than this grid resolves: the same w over sigma = {sigma:.4g} Pa, h = {h:.4g} m outside the "
-            f"contact)")
+            f"narrower than this grid resolves: the same w over sigma = {sigma:.4g} Pa, h = {h:.4g} m "
+            + ("in and outside the contact)" if everywhere else "outside the contact)"))
 
 
 def _approach_problem(operator, h, dx, modulus, periodic, reference, cap, small, sigma0, h0, zones, p_start, delta,

@@ -119,7 +119,8 @@ class SolverSettings:
     """Range of the contact-only part of a widened zone (the rest of sigma0 on the elements in contact), relative to
     h0 [dimensionless]: an element outside the contact would need a gap below it to carry that part
     (:func:`memstribo.physics.contact.subgrid.resolved_zones`). Not tuned: only its smallness matters (the widened zone it
-    belongs to is measured by bench/bench_grid_adhesion.py)."""
+    belongs to is measured by bench/bench_grid_adhesion.py). 0: no contact-only part, the contact holds the widened
+    sigma too (the pull-off, :func:`memstribo.physics.adhesive_contact.line_contact_pull_off`, issue #41)."""
 
     fraction_tolerance: float = 1e-4
     """The cohesive zone has settled when no element's cohesive fraction changes by more than this

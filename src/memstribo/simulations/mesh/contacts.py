@@ -109,8 +109,13 @@ def _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar):
     Each nanoblock row is ``k = round(w_adh / dx)`` element rows wide across the face width and
     carries its own roughness line (the same line over its k element rows); the free-boundary
     half-space solve (:func:`memstribo.physics.surface_contact.solve_surface_contact`) carries the pair's
-    whole load. Returns per-row pressure and gap (means over each row's element rows), shapes
-    (rows, steps, n), and the solver info per step (converged, residual, iterations, approach).
+    whole load, with the pressure capped at ``hardness`` where it is set (elastic-perfectly-plastic, as the line
+    solve's :func:`memstribo.physics.contact.solve_line_contact_capped`; MODEL 7d). Returns per-row pressure and
+    gap (means over each row's element rows), shapes (rows, steps, n), and the solver info per row and step,
+    shape (rows, steps, 8), in the columns of :func:`_solve_contacts` (converged, residual, iterations,
+    approach, 0, 0, the row's elements at the hardness) and an eighth, the row's elements in contact; the last two
+    counted on the surface grid, its element rows' elements over k (the contact of the row's mean gap and
+    pressure counts an element only where all k element rows touch, and would overstate the plastic share).
     """
     from memstribo.physics.surface_contact import solve_surface_contact
 
@@ -128,17 +133,22 @@ def _solve_contacts_surface(setup, params, modulus, r_ef, s1, s2, pbar):
         lines[row] = grid[None, :] ** 2 / (2 * r_ef[:, None]) - z1 - z2
     pressure = np.zeros((rows, n_steps, n))
     gap = np.zeros((rows, n_steps, n))
-    info = np.zeros((n_steps, 5))
+    info = np.zeros((rows, n_steps, 8))
+    hardness = params["hardness"]
     previous = None
     for i in range(n_steps):
         separation = np.repeat(lines[:, i, :], k, axis=0)  # (rows * k, n)
         solution = solve_surface_contact(separation, dx, dy, modulus, load=float(setup.load[i]), periodic=False,
-                                         tolerance=params["mesh_contact_tolerance"], initial_pressure=previous)
+                                         tolerance=params["mesh_contact_tolerance"], initial_pressure=previous,
+                                         hardness=hardness)
         field_p = solution.pressure.reshape(rows, k, n)
         field_g = solution.gap.reshape(rows, k, n)
         pressure[:, i, :] = field_p.mean(axis=1)
         gap[:, i, :] = field_g.mean(axis=1)
-        info[i] = (solution.converged, solution.residual, solution.iterations, solution.approach, 0.0)
+        info[:, i, :4] = (solution.converged, solution.residual, solution.iterations, solution.approach)
+        info[:, i, 7] = solution.contact.reshape(rows, k, n).sum(axis=(1, 2)) / k
+        if solution.plastic is not None:  # elements at the hardness, per row in units of the row's elements
+            info[:, i, 6] = solution.plastic.reshape(rows, k, n).sum(axis=(1, 2)) / k
         previous = solution.pressure if solution.converged and np.any(solution.pressure > 0) else None
         if pbar is not None:
             pbar.update(rows)

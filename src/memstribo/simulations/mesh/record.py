@@ -165,6 +165,8 @@ def _attributes(params, setup, cycle, verdict, modulus, beta, coating, wear, rea
         "roughness_rows": rows_info.method,
         "roughness_lines_measured": int(rows_info.measured_lines),
         "roughness_lines_synthesised": int(rows_info.synthesised_lines),
+        "roughness_lines_completed": int(getattr(rows_info, "completed_lines", 0)),
+        "roughness_measured_share": float(getattr(rows_info, "measured_share", 0.0)),
         "block_load_variant": BLOCK_LOAD_VARIANT,
         "rows": setup.rows,
         "rows_solved": len(cycle["block_loads"]),

@@ -194,7 +194,7 @@ def _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row
                                ctx.grid, ctx.w_adh, row, ctx.coating, ctx.wear, ctx.surface_tension)
     if strip is not None:
         strip_pressure, strip_gap, strip_info = strip
-        return strip_pressure[row], strip_gap[row], strip_info, zone  # one solve for all rows
+        return strip_pressure[row], strip_gap[row], strip_info[row], zone  # one solve for all rows
     if beta != 0.0 and mu_previous is not None:
         pressure, gap, info = _solve_with_shear(setup, params, modulus, r_ef, s1, s2, row, beta, mu_previous,
                                                 kinematics["slip"], pbar, zone, warm_start)
@@ -220,8 +220,11 @@ def _record_solve(out, ctx, pressure, gap, info, n_rows_solved):
     # tensile, down to -sigma0, near the contact's edges; the zone outside has an open gap)
     in_contact = ((gap <= 0.0) & (pressure != 0.0)).sum(axis=1)
     out["contact_width"] += in_contact * dx / n_rows_solved
-    out["contact_elements"] += in_contact
-    if info.shape[1] > 6:  # elements at the hardness (the line solve's pressure cap, MODEL 7d)
+    # the surface solve counts its elements in contact on its own grid (eighth column): the share of them at the
+    # hardness is the plastic fraction (the row's mean gap and pressure see contact only where all its element
+    # rows touch)
+    out["contact_elements"] += info[:, 7] if info.shape[1] > 7 else in_contact
+    if info.shape[1] > 6:  # elements at the hardness (the pressure cap of the line or surface solve, MODEL 7d)
         out["plastic_elements"] += info[:, 6]
     out["max_pressure"] = np.maximum(out["max_pressure"], pressure.max(axis=1))
 
