@@ -661,6 +661,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
             found = critical_value(function, sampled[name])
             entry["startup_critical_value"] = found["critical_value"]
             entry["startup_stiction_above"] = found["stiction_above"]
+            entry["startup_note"] = found["note"]  # e.g. no crossing inside the prior
     nominal_value = float(params[dominant]) if dominant in params and params[dominant] is not None else \
         _coating_nominal(dominant, coating_name)
     result["designer_sentence"] = designer_sentence(dominant, sensitivity[dominant], sampled[dominant], nominal_value)
