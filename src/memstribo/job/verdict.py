@@ -92,7 +92,8 @@ def uncertainty_summary(result) -> dict[str, Any]:
         "summary": (f"P(stiction) = {result['stiction_probability_text']} over {result['realisations']} roughness "
                     f"realisations x {result['constant_sets']} sets of the unmeasured constants drawn from their priors; "
                     f"at the nominal constants {result['stiction_probability_nominal_text']}. "
-                    + result.get("designer_sentence", "")),
+                    + result.get("designer_sentence", "")
+                    + (" " + result["decision_sentence"] if result.get("decision_sentence") else "")),
         "interval": (f"stiction margin 5 / 50 / 95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / "
                      f"{q['p95'] * 1e3:+.3g} mN (negative: stiction)"),
         "drivers": drivers,

@@ -244,28 +244,36 @@ def sobol_indices(names, outputs: Mapping[str, np.ndarray], base_samples: int, s
     Returns
     -------
     dict
-        ``{output: {factor: {"first", "first_ci", "total", "total_ci"}}}`` [-]; an interval is
-        [index - half-width, index + half-width] of the bootstrap at ``confidence``.
+        ``{output: {factor: {"first", "first_ci", "total", "total_ci", "clipped"}}}`` [-]; an interval is
+        [index - half-width, index + half-width] of the bootstrap at ``confidence``. Indices and interval ends are
+        clipped to [0, 1] (``clipped``: whether any was outside; Saltelli's estimators leave [0, 1] at few base
+        samples, and a share of variance cannot).
     """
     from SALib.analyze import sobol as sobol_analyze
+
+    from memstribo.uncertainty.decision import clip_unit
 
     problem = {"num_vars": len(names), "names": list(names), "bounds": [[0.0, 1.0]] * len(names)}
     result = {}
     for output, y in outputs.items():
         y = np.asarray(y, dtype=float)
         if np.ptp(y) == 0.0:  # a constant output has no variance to share
-            result[output] = {n: {"first": 0.0, "first_ci": [0.0, 0.0], "total": 0.0, "total_ci": [0.0, 0.0]}
-                              for n in names}
+            result[output] = {n: {"first": 0.0, "first_ci": [0.0, 0.0], "total": 0.0, "total_ci": [0.0, 0.0],
+                                  "clipped": False} for n in names}
             continue
         # SALib seeds its bootstrap only for a truthy seed (seed 0 would draw new intervals each run): seed + 1
         si = sobol_analyze.analyze(problem, y, calc_second_order=False, num_resamples=resamples,
                                    conf_level=confidence, seed=int(seed) + 1)
-        result[output] = {
-            n: {"first": float(si["S1"][j]), "first_ci": [float(si["S1"][j] - si["S1_conf"][j]),
-                                                          float(si["S1"][j] + si["S1_conf"][j])],
-                "total": float(si["ST"][j]), "total_ci": [float(si["ST"][j] - si["ST_conf"][j]),
-                                                          float(si["ST"][j] + si["ST_conf"][j])]}
-            for j, n in enumerate(names)}
+        result[output] = {}
+        for j, n in enumerate(names):
+            raw = {"first": float(si["S1"][j]), "first_ci": [float(si["S1"][j] - si["S1_conf"][j]),
+                                                             float(si["S1"][j] + si["S1_conf"][j])],
+                   "total": float(si["ST"][j]), "total_ci": [float(si["ST"][j] - si["ST_conf"][j]),
+                                                             float(si["ST"][j] + si["ST_conf"][j])]}
+            # an index is a share of variance: the estimator's excursions outside [0, 1] are sampling error
+            clipped = {key: clip_unit(value) for key, value in raw.items()}
+            clipped["clipped"] = clipped != raw
+            result[output][n] = clipped
     return result
 
 
@@ -385,11 +393,30 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
         raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
 
 
+def _check_levels(confidence, threshold, band_factor, band_samples, span):
+    def number(x):
+        return not isinstance(x, bool) and isinstance(x, (int, float, np.integer, np.floating)) and math.isfinite(x)
+
+    if not number(confidence) or not 0.0 < confidence < 1.0:
+        raise InputError(f"confidence is a fraction strictly between 0 and 1, got {confidence!r}.")
+    if not number(threshold) or not 0.0 <= threshold <= 1.0:
+        raise InputError(f"threshold (the total Sobol' index above which a critical value is searched) is a fraction "
+                         f"in [0, 1], got {threshold!r}.")
+    if not number(band_factor) or band_factor <= 1.0:
+        raise InputError(f"band_factor (each prior bound moved by it either way) must be a number above 1, "
+                         f"got {band_factor!r}.")
+    if isinstance(band_samples, bool) or not isinstance(band_samples, (int, np.integer)) or band_samples < 1:
+        raise InputError(f"band_samples must be a whole number >= 1, got {band_samples!r}.")
+    if not number(span) or not 0.0 < span <= 1.0:
+        raise InputError(f"prior_dominated_span is a fraction in (0, 1], got {span!r}.")
+
+
 @cites("model", "wilson_1927", "sobol_2001", "saltelli_2010")
 def uncertainty_study(params, roughness=None, *, samples="auto", realisations=None, steps=None, coating=None,
                       wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
                       sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
-                      threshold=0.1, curve_points=9, priors=None, solve_sets=None) -> dict:
+                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, band_factor=2.0,
+                      band_samples=32, prior_dominated_span=0.3) -> dict:
     """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
 
     Parameters
@@ -430,6 +457,14 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         every constant set its own); the bond energies are rescaled and keep every set's value
         (:func:`_design`). Fewer solves; the samples of a group share their contact solution and are
         correlated: the interval is Wilson's at ``samples / design_effect`` samples (:func:`_probability`).
+    band_factor : float
+        With ``sensitivity``: each bound of a decisive constant's prior is moved by this factor either way for the
+        robust-Bayes band of P(stiction) (> 1; default 2, MODEL 7h; :func:`memstribo.uncertainty.decision.moved_priors`).
+    band_samples : int
+        Samples of the study re-drawn under each moved prior of a constant that needs new contact solves (its first
+        ones; a rescaled bond energy re-draws every sample) [-], >= 1.
+    prior_dominated_span : float
+        A band of P(stiction) wider than this makes the verdict "prior-dominated", in (0, 1] [-] (default 0.3).
 
     Returns
     -------
@@ -445,13 +480,18 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
         ``design_effect`` and ``effective_samples`` [-] (samples that share a contact solve: :func:`_probability`),
         ``solve_seconds`` and ``rescale_seconds`` [s] (wall time of the solves and of the rescalings; the counts
-        and times include the Sobol' rows and the critical values), ``elapsed`` [s], ``warnings``.
+        and times include the Sobol' rows and the critical values), ``elapsed`` [s], ``warnings``; with
+        ``sensitivity``: ``sobol_design`` (``base_samples``, ``rows``, ``steps``, ``failed_rows``), and the
+        sensitivity of the decision (:func:`memstribo.uncertainty.decision.decision_analysis`):
+        ``decision_sensitivity``, ``decision_design``, ``flipping_constants``, ``flipping_constants_startup``,
+        ``robust_bayes``, ``prior_dominated``, ``prior_dominated_constants``, ``decision_sentence``.
 
     Raises
     ------
     InputError
         Bad sample counts, a fixed constant without a prior or named twice, a sample count above
-        the memory estimate, bad priors.
+        the memory estimate, bad priors, ``confidence`` outside (0, 1), ``threshold`` outside [0, 1],
+        ``band_factor`` not above 1, ``band_samples`` below 1, ``prior_dominated_span`` outside (0, 1].
     """
     from memstribo.uncertainty.priors import priors_for
     from memstribo.uncertainty.sampling import _check_fixed
@@ -466,18 +506,25 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
     n_steps = int(params["mesh_steps"] if steps is None else steps)
     _check_samples(samples, realisations, n_steps, budget, solve_sets)
+    _check_levels(confidence, threshold, band_factor, band_samples, prior_dominated_span)
     client, own_client = _client_of(client)
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
         R = int(realisations)
         nominal = runner.summaries([(r, {}) for r in range(R)])
-        sets_count, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
+        sets_count, points, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
         runners = [runner]
         if sensitivity and sampled:
-            runners.append(_sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps,
-                                        coating_name, wear, client, progress, sobol_samples or 32, sobol_steps,
-                                        critical, threshold, curve_points))
+            sobol_runner, rows = _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps,
+                                              coating_name, wear, client, progress, sobol_samples or 32, sobol_steps,
+                                              critical, threshold, curve_points)
+            runners.append(sobol_runner)
+            from memstribo.uncertainty.decision import decision_analysis
+
+            decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence,
+                              threshold=threshold, band_factor=band_factor, band_samples=band_samples,
+                              span=prior_dominated_span, critical=critical)
         result["warnings"] = _warnings(result)
         _count(result, runners)
         result["elapsed"] = time.perf_counter() - start
@@ -495,18 +542,20 @@ def _count(result, runners):
 
 
 def _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget):
-    """(constant sets per realisation, summaries) of the design; ``samples="auto"`` doubles the sets until the
+    """(constant sets per realisation, points, summaries) of the design; ``samples="auto"`` doubles the sets until the
     interval's half-width is below :data:`TARGET_HALF_WIDTH` or the budget is spent."""
     if samples != "auto":
         sets_count = max(1, int(samples) // R)
-        return sets_count, runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
+        points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+        return sets_count, points, runner.summaries(points)
     sets_count = 16
     while True:
-        summaries = runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
+        points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+        summaries = runner.summaries(points)
         p = _probability(summaries, confidence)
         if (0.5 * (p["ci"][1] - p["ci"][0]) < TARGET_HALF_WIDTH and not p["failed"]) \
                 or 2 * R * sets_count > int(budget):
-            return sets_count, summaries
+            return sets_count, points, summaries
         sets_count *= 2
 
 
@@ -574,7 +623,9 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
 def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear, client,
                  progress, sobol_samples, sobol_steps, critical, threshold, curve_points):
     """Sobol' indices, critical values and the curve of the dominant constant into ``result``; returns the
-    runner of the Sobol' rows (``runner`` itself unless ``sobol_steps`` differs), for its counts."""
+    runner of the Sobol' rows (``runner`` itself unless ``sobol_steps`` differs), for its counts, and the rows
+    (``{"points", "summaries", "blocks"}``, a block per base sample) where they ran at the study's steps, else None
+    (they then judge the verdict at other steps and do not join the samples of the decision's sensitivity)."""
     names = list(sampled)
     factors = names + [REALISATION_FACTOR]
     design = _saltelli_design(len(factors), int(sobol_samples), seed)
@@ -605,23 +656,18 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
     result["sobol_design"] = {"base_samples": int(sobol_samples), "rows": int(design.shape[0]),
                               "steps": sobol_steps or steps or int(params["mesh_steps"]),
                               "failed_rows": int(sum(failed))}
+    rows = None
+    if sobol_runner is runner:
+        rows = {"points": points, "summaries": summaries,
+                "blocks": [f"sobol {i // (len(factors) + 2)}" for i in range(len(points))]}
     constants_ranked = [n for n in ranked if n != REALISATION_FACTOR]
     if not constants_ranked:
-        return sobol_runner
+        return sobol_runner, rows
     dominant = constants_ranked[0]
     result["dominant"] = dominant
 
     def margin_function(name, key="stiction_margin"):
-        cache = {}
-        reals = R if name in runner.rescalable() else min(R, 8)
-
-        def median_margin(x):
-            if x not in cache:
-                out = runner.summaries([(r, {name: x}) for r in range(reals)])
-                values = [s[key] for s in out if not s.get("failed") and s.get(key) is not None]
-                cache[x] = float(np.median(values)) if values else float("nan")
-            return cache[x]
-        return median_margin, reals
+        return _margin_function(runner, name, R, key)
 
     for name in constants_ranked:
         entry = sensitivity[name]
@@ -647,7 +693,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
     values = sorted(set([float(v) for v in prior.ppf(np.linspace(0.0, 1.0, max(2, int(curve_points))))]
                         + ([sensitivity[dominant]["critical_value"]] if sensitivity[dominant]["critical_value"]
                            else [])))
-    reals = R if dominant in runner.rescalable() else min(R, 8)
+    reals = R if dominant in runner.rescalable() else min(R, SOLVED_REALISATIONS)
     curve = {"name": dominant, "values": values, "probability": [], "ci_low": [], "ci_high": [], "realisations": reals,
              "critical_value": sensitivity[dominant]["critical_value"], "nominal": nominal_value}
     for x in values:
@@ -656,7 +702,27 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         curve["ci_low"].append(p["ci"][0])
         curve["ci_high"].append(p["ci"][1])
     result["critical_curve"] = curve
-    return sobol_runner
+    return sobol_runner, rows
+
+
+#: realisations of the median margin of a constant that needs a new contact solve per value (critical values and
+#: the end-point test of the decision); a rescaled bond energy uses every realisation
+SOLVED_REALISATIONS = 8
+
+
+def _margin_function(runner, name, R, key="stiction_margin"):
+    """(value -> median of ``key`` over the realisations with ``name`` at that value and the others nominal [N], the
+    number of realisations): all ``R`` for a rescaled bond energy, :data:`SOLVED_REALISATIONS` otherwise."""
+    cache = {}
+    reals = R if name in runner.rescalable() else min(R, SOLVED_REALISATIONS)
+
+    def median_margin(x):
+        if x not in cache:
+            out = runner.summaries([(r, {name: x}) for r in range(reals)])
+            values = [s[key] for s in out if not s.get("failed") and s.get(key) is not None]
+            cache[x] = float(np.median(values)) if values else float("nan")
+        return cache[x]
+    return median_margin, reals
 
 
 def _coating_nominal(name, coating_name):
