@@ -157,9 +157,11 @@ def test_bad_decision_input(params):
         robust_bayes_band(_probability_over(2.0), Prior("x", "uniform", 1.0, 3.0), span=1.5)
     with pytest.raises(InputError, match="confidence"):
         regional_sensitivity({"x": [1.0, 2.0]}, [True, False], confidence=1.0)
-    for kwargs, message in (({"confidence": 1.5}, "confidence"), ({"band_factor": 0.5}, "band_factor"),
-                            ({"prior_dominated_span": 0.0}, "prior_dominated_span"),
-                            ({"band_samples": 0}, "band_samples"), ({"threshold": -0.1}, "threshold")):
+    for kwargs, message in (({"confidence": 1.5}, "confidence"), ({"threshold": -0.1}, "threshold"),
+                            ({"decision": {"band_factor": 0.5}}, "band_factor"),
+                            ({"decision": {"span": 0.0}}, r"\(0, 1\]"), ({"decision": {"span": 1.2}}, r"\(0, 1\]"),
+                            ({"decision": {"band_samples": 0}}, "band_samples"),
+                            ({"decision": {"factor": 2}}, "unknown option")):
         with pytest.raises(InputError, match=message):
             uncertainty_study(params, samples=2, realisations=1, steps=5, **kwargs)
 

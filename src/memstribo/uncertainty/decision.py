@@ -29,13 +29,20 @@ import numpy as np
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["ks_distance", "regional_sensitivity", "moved_priors", "robust_bayes_band", "measurable", "clip_unit",
-           "PRIOR_DOMINATED_SPAN", "BAND_FACTOR"]
+__all__ = ["critical_value", "ks_distance", "regional_sensitivity", "moved_priors", "robust_bayes_band", "measurable", "clip_unit",
+           "decision_analysis", "decision_options", "decision_sentence", "PRIOR_DOMINATED_SPAN", "BAND_FACTOR", "REALISATION_FACTOR",
+           "SOLVED_REALISATIONS"]
 
 #: a robust-Bayes band of P(stiction) wider than this makes the verdict "prior-dominated" (MODEL 7h) [-]
 PRIOR_DOMINATED_SPAN = 0.3
 #: the factor by which each bound of a decisive prior is moved, either way (MODEL 7h) [-]
 BAND_FACTOR = 2.0
+#: name of the roughness realisation as a factor of the sensitivity analysis (aleatory, not a constant)
+REALISATION_FACTOR = "roughness_realisation"
+
+#: realisations of the median margin of a constant that needs a new contact solve per value (critical values and
+#: the end-point test of the decision); a rescaled bond energy uses every realisation
+SOLVED_REALISATIONS = 8
 
 
 def clip_unit(value):
@@ -346,6 +353,62 @@ def measurable(name: str, value: float, params) -> list[dict]:
 
 
 # --- the study's part: the samples it has, the ends of each prior, the moved priors --------------------------------
+@cites("model")
+def critical_value(margin_of, prior, *, tolerance=1e-3) -> dict:
+    """Where ``margin_of(value)`` (the median margin [N]) crosses zero within ``prior`` (Brent's method).
+
+    Parameters
+    ----------
+    margin_of : callable
+        value [unit of the constant] -> median margin [N].
+    prior : Prior
+        Searched between ``low`` and ``high`` (on a log scale for a log-uniform prior).
+    tolerance : float
+        Relative tolerance on the value (of the searched interval's width) [-].
+
+    Returns
+    -------
+    dict
+        ``critical_value`` [unit of the constant] or None, ``stiction_above`` (True: stiction
+        for values above it), ``margin_at_low``, ``margin_at_high`` [N], ``note``.
+    """
+    from scipy.optimize import brentq
+
+    forward = math.log if prior.log_scale else (lambda x: x)
+    back = math.exp if prior.log_scale else (lambda t: t)
+    t_lo, t_hi = forward(prior.low), forward(prior.high)
+    m_lo, m_hi = float(margin_of(prior.low)), float(margin_of(prior.high))
+    out = {"margin_at_low": m_lo, "margin_at_high": m_hi, "critical_value": None, "stiction_above": None}
+    if not (np.isfinite(m_lo) and np.isfinite(m_hi)):
+        out["note"] = "the margin could not be computed at an end of the prior"
+        return out
+    if (m_lo < 0) == (m_hi < 0):
+        state = "stiction" if m_lo < 0 else "no stiction"
+        out["note"] = (f"no crossing within the prior: the median margin is {m_lo:+.3g} N at {prior.low:.4g} and "
+                       f"{m_hi:+.3g} N at {prior.high:.4g} ({state} over the whole range)")
+        return out
+    root = brentq(lambda t: float(margin_of(back(t))), t_lo, t_hi, xtol=tolerance * abs(t_hi - t_lo), maxiter=60)
+    out["critical_value"] = float(back(root))
+    out["stiction_above"] = bool(m_hi < 0)
+    out["note"] = f"the median margin crosses zero at {back(root):.4g} (stiction {'above' if m_hi < 0 else 'below'})"
+    return out
+
+
+def _margin_function(runner, name, R, key="stiction_margin"):
+    """(value -> median of ``key`` over the realisations with ``name`` at that value and the others nominal [N], the
+    number of realisations): all ``R`` for a rescaled bond energy, :data:`SOLVED_REALISATIONS` otherwise."""
+    cache = {}
+    reals = R if name in runner.rescalable() else min(R, SOLVED_REALISATIONS)
+
+    def median_margin(x):
+        if x not in cache:
+            out = runner.summaries([(r, {name: x}) for r in range(reals)])
+            values = [s[key] for s in out if not s.get("failed") and s.get(key) is not None]
+            cache[x] = float(np.median(values)) if values else float("nan")
+        return cache[x]
+    return median_margin, reals
+
+
 def _median(summaries, key):
     values = [s[key] for s in summaries if not s.get("failed") and s.get(key) is not None]
     return float(np.median(values)) if values else None
@@ -358,8 +421,8 @@ def _has_startup(summaries) -> bool:
 
 def _end_points(runner, name, prior, nominal, R, confidence, startup) -> dict:
     """The verdict with ``name`` at each end of its prior and the others nominal (median margin over the
-    realisations, :func:`memstribo.uncertainty.study._margin_function`'s count), against the nominal constants'."""
-    from memstribo.uncertainty.study import SOLVED_REALISATIONS, _probability
+    realisations, :func:`_margin_function`'s count), against the nominal constants'."""
+    from memstribo.uncertainty.intervals import sample_probability as _probability
 
     reals = R if name in runner.rescalable() else min(R, SOLVED_REALISATIONS)
     reference = nominal[:reals]
@@ -393,7 +456,7 @@ def _end_points(runner, name, prior, nominal, R, confidence, startup) -> dict:
 def _probability_under(runner, name, prior, points, summaries, subset, confidence, startup):
     """Prior -> P(stiction) of the study's samples ``subset`` with ``name`` re-drawn from that prior at the same
     quantile (the same low-discrepancy design, mapped by the new prior's inverse CDF); the prior itself: the study's."""
-    from memstribo.uncertainty.study import _probability
+    from memstribo.uncertainty.intervals import sample_probability as _probability
 
     def under(moved):
         if moved is prior:
@@ -464,34 +527,41 @@ def decision_sentence(flipping, flipping_startup, sensitivity, bands, factor, pa
     return " ".join(parts)
 
 
-@cites("model", "spear_hornberger_1980", "berger_1994")
-def decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence, *,
-                      threshold=0.1, band_factor=BAND_FACTOR, band_samples=32, span=PRIOR_DOMINATED_SPAN,
-                      resamples=500, critical=True) -> dict:
-    """The sensitivity of the decision into ``result`` (MODEL 7h; called by the uncertainty study).
+def decision_options(options=None) -> dict:
+    """The options of :func:`decision_analysis` (``band_factor``, ``band_samples``, ``span``), checked, with defaults.
 
-    1. Regional sensitivity of the verdict (:func:`regional_sensitivity`) on the samples the study has: its own
-       (realisations x constant sets) and the rows of the Sobol' design where they ran at the study's steps (each
-       base sample's D + 2 rows one block).
-    2. For every sampled constant, the verdict at each end of its prior with the others nominal (the median margin
-       over the realisations, as the critical values take it): ``can_flip`` where its sign differs from the nominal
-       constants'. A constant that can flip and was not searched for its critical value (total index at or below
-       ``threshold``) is searched now (unless ``critical`` is False).
-    3. For every decisive constant (it can flip the verdict, or its total index exceeds ``threshold``), the
-       robust-Bayes band (:func:`robust_bayes_band`): the study's samples with that constant re-drawn under each
-       moved prior at the same design quantile (a rescaled bond energy: every sample, by rescaling; a constant that
-       needs a contact solve: the first ``band_samples``).
-
-    Returns ``result`` with ``decision_sensitivity``, ``decision_design``, ``flipping_constants``,
-    ``flipping_constants_startup``, ``robust_bayes``, ``prior_dominated``, ``prior_dominated_constants`` and
-    ``decision_sentence``.
+    Raises
+    ------
+    InputError
+        An unknown option, ``band_factor`` not a number above 1, ``band_samples`` not a whole number >= 1, ``span``
+        not a fraction in (0, 1].
     """
-    from memstribo.uncertainty.study import REALISATION_FACTOR, _margin_function, critical_value
+    out = {"band_factor": BAND_FACTOR, "band_samples": 32, "span": PRIOR_DOMINATED_SPAN}
+    options = dict(options or {})
+    unknown = sorted(set(options) - set(out))
+    if unknown:
+        raise InputError(f"unknown option(s) of the decision's sensitivity: {', '.join(unknown)}; allowed: "
+                         f"{', '.join(out)}.")
+    out.update(options)
 
-    names = list(sampled)
-    sensitivity = result.get("sensitivity") or {}
-    startup = "startup_margin_quantiles" in result
-    # 1. the samples the study has
+    def number(x):
+        return not isinstance(x, bool) and isinstance(x, (int, float, np.integer, np.floating)) and math.isfinite(x)
+
+    if not number(out["band_factor"]) or out["band_factor"] <= 1.0:
+        raise InputError(f"band_factor (each prior bound moved by it either way) must be a number above 1, "
+                         f"got {out['band_factor']!r}.")
+    samples = out["band_samples"]
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
+        raise InputError(f"band_samples must be a whole number >= 1, got {samples!r}.")
+    if not number(out["span"]) or not 0.0 < out["span"] <= 1.0:
+        raise InputError(f"span (a band wider than it is prior-dominated) is a fraction in (0, 1], "
+                         f"got {out['span']!r}.")
+    return out
+
+
+def _regional(result, names, points, summaries, rows, seed, confidence, resamples) -> dict:
+    """Step 1 of :func:`decision_analysis`: the regional index of the running (and start-up) verdict per factor,
+    into ``result["decision_design"]``; returns ``{factor: entry}``."""
     all_points, all_summaries = list(points), list(summaries)
     blocks = [f"sample {i}" for i in range(len(points))]
     sources = ["the study's samples"]
@@ -508,18 +578,67 @@ def decision_analysis(result, params, runner, sampled, nominal, points, summarie
     running = regional_sensitivity(values, stuck, blocks=kept_blocks, confidence=confidence, resamples=resamples,
                                    seed=seed)
     starting = None
-    if startup and _has_startup([all_summaries[i] for i in keep]):
+    if "startup_margin_quantiles" in result and _has_startup([all_summaries[i] for i in keep]):
         starting = regional_sensitivity(values, [bool(all_summaries[i]["startup_stiction"]) for i in keep],
                                         blocks=kept_blocks, confidence=confidence, resamples=resamples, seed=seed)
     decision = {}
-    for name in [REALISATION_FACTOR] + names:
+    for name in [REALISATION_FACTOR] + list(names):
         entry = dict(running[name])
         if starting is not None:
             entry.update(startup_index=starting[name]["index"], startup_index_ci=starting[name]["index_ci"],
                          startup_noise_level=starting[name]["noise_level"])
         decision[name] = entry
-    # 2. each constant alone at the ends of its prior
-    for name in names:
+    result["decision_design"] = {"samples": len(keep), "stuck": int(sum(stuck)), "free": len(keep) - int(sum(stuck)),
+                                 "failed": len(all_summaries) - len(keep), "blocks": len(set(kept_blocks)),
+                                 "sources": sources, "resamples": int(resamples), "confidence": float(confidence)}
+    return decision
+
+
+def _band(runner, name, prior, points, summaries, entry, sensitivity, result, confidence, band_factor, band_samples,
+          span) -> dict:
+    """Step 3 of :func:`decision_analysis`: the robust-Bayes band of one decisive constant."""
+    subset = list(range(len(points) if name in runner.rescalable() else min(len(points), int(band_samples))))
+    startup = "startup_margin_quantiles" in result and _has_startup(summaries)
+    band = robust_bayes_band(_probability_under(runner, name, prior, points, summaries, subset, confidence, startup),
+                             prior, band_factor, span)
+    band.update(factor=float(band_factor), samples=len(subset), distribution=prior.distribution,
+                measure=prior.measure, critical_value=sensitivity.get(name, {}).get("critical_value"),
+                stiction_above=sensitivity.get(name, {}).get("stiction_above"),
+                critical_measurable=entry.get("critical_measurable", []))
+    startup_rows = [r["startup_probability"] for r in band["priors"] if r.get("startup_probability") is not None]
+    if startup_rows:
+        band["startup_band"] = [min(startup_rows), max(startup_rows)]
+    return band
+
+
+@cites("model", "spear_hornberger_1980", "berger_1994")
+def decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence, *,
+                      threshold=0.1, band_factor=BAND_FACTOR, band_samples=32, span=PRIOR_DOMINATED_SPAN,
+                      resamples=500, critical=True) -> dict:
+    """The sensitivity of the decision into ``result`` (MODEL 7h; called by the uncertainty study).
+
+    1. Regional sensitivity of the verdict (:func:`regional_sensitivity`) on the samples the study has: its own
+       (realisations x constant sets) and the rows of the Sobol' design where they ran at the study's steps (each
+       base sample's D + 2 rows one block).
+    2. For every sampled constant, the verdict at each end of its prior with the others nominal (the median margin
+       over the realisations, as the critical values take it): ``can_flip`` where its sign differs from the nominal
+       constants'. A constant that can flip and was not searched for its critical value (total index at or below
+       ``threshold``) is searched now (unless ``critical`` is False).
+    3. For every decisive constant (it can flip the verdict, or its total index exceeds ``threshold``), the
+       robust-Bayes band (:func:`robust_bayes_band`, each bound moved by ``band_factor``; wider than ``span``:
+       prior-dominated): the study's samples with that constant re-drawn under each moved prior at the same design
+       quantile (a rescaled bond energy: every sample, by rescaling; a constant that needs a contact solve: the
+       first ``band_samples``).
+
+    Returns ``result`` with ``decision_sensitivity``, ``decision_design``, ``flipping_constants``,
+    ``flipping_constants_startup``, ``robust_bayes``, ``prior_dominated``, ``prior_dominated_constants`` and
+    ``decision_sentence``.
+    """
+    names = list(sampled)
+    sensitivity = result.get("sensitivity") or {}
+    startup = "startup_margin_quantiles" in result
+    decision = _regional(result, names, points, summaries, rows, seed, confidence, resamples)
+    for name in names:  # 2. each constant alone at the ends of its prior
         ends = _end_points(runner, name, sampled[name], nominal, R, confidence, startup)
         decision[name].update(ends)
         entry = sensitivity.get(name)
@@ -541,32 +660,14 @@ def decision_analysis(result, params, runner, sampled, nominal, points, summarie
             decision[name]["critical_measurable"] = measurable(name, entry["critical_value"], params)
     flipping = [n for n in names if decision[n]["can_flip"]]
     flipping_startup = [n for n in names if decision[n].get("can_flip_startup")]
-    # 3. the robust-Bayes band of each decisive constant
-    decisive = [n for n in names if decision[n]["can_flip"]
+    decisive = [n for n in names if decision[n]["can_flip"]  # 3. the robust-Bayes band of each decisive constant
                 or (n in sensitivity and sensitivity[n]["total"] > threshold)]
-    bands = {}
-    has_startup = startup and _has_startup(summaries)
-    for name in decisive:
-        subset = list(range(len(points))) if name in runner.rescalable() else list(range(min(len(points),
-                                                                                          int(band_samples))))
-        band = robust_bayes_band(_probability_under(runner, name, sampled[name], points, summaries, subset,
-                                                    confidence, has_startup), sampled[name], band_factor, span)
-        band.update(factor=float(band_factor), samples=len(subset), distribution=sampled[name].distribution,
-                    measure=sampled[name].measure,
-                    critical_value=sensitivity.get(name, {}).get("critical_value"),
-                    stiction_above=sensitivity.get(name, {}).get("stiction_above"),
-                    critical_measurable=decision[name].get("critical_measurable", []))
-        startup_rows = [r["startup_probability"] for r in band["priors"] if r.get("startup_probability") is not None]
-        if startup_rows:
-            band["startup_band"] = [min(startup_rows), max(startup_rows)]
-        bands[name] = band
+    bands = {name: _band(runner, name, sampled[name], points, summaries, decision[name], sensitivity, result,
+                         confidence, band_factor, band_samples, span) for name in decisive}
     ranked = sorted(decision, key=lambda n: -(decision[n]["index"] if decision[n]["index"] is not None else -1))
     dominated = [n for n in bands if bands[n]["prior_dominated"]]
     result.update({
         "decision_sensitivity": {n: decision[n] for n in ranked},
-        "decision_design": {"samples": len(keep), "stuck": int(sum(stuck)), "free": len(keep) - int(sum(stuck)),
-                            "failed": len(all_summaries) - len(keep), "blocks": len(set(kept_blocks)),
-                            "sources": sources, "resamples": int(resamples), "confidence": float(confidence)},
         "flipping_constants": flipping,
         "flipping_constants_startup": flipping_startup,
         "robust_bayes": bands,

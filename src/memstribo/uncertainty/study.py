@@ -33,12 +33,13 @@ import numpy as np
 
 from memstribo.errors import InputError
 from memstribo.references import cites
+from memstribo.uncertainty.decision import (REALISATION_FACTOR, SOLVED_REALISATIONS, _margin_function, clip_unit,
+                                            critical_value, decision_analysis, decision_options)
+from memstribo.uncertainty.intervals import sample_probability as _probability
 
 __all__ = ["uncertainty_study", "critical_value", "sobol_indices", "REALISATION_FACTOR", "designer_sentence",
            "DEFAULT_REALISATIONS", "DEFAULT_BUDGET", "TARGET_HALF_WIDTH"]
 
-#: name of the roughness realisation as a factor of the sensitivity analysis (aleatory, not a constant)
-REALISATION_FACTOR = "roughness_realisation"
 #: realisations per constant set when not given
 DEFAULT_REALISATIONS = 16
 #: most samples (realisations x constant sets) that ``samples="auto"`` draws
@@ -190,35 +191,6 @@ def _client_of(client):
     return Client(client), True
 
 
-def _probability(summaries, confidence, key="stiction"):
-    """Count, estimate and interval of P(stiction) (``key``: ``stiction``, the running verdict, or
-    ``startup_stiction``); samples that share a cycle (``cycle_id``: a grouped design, fixed solve constants) widen it
-    by their design effect (:func:`memstribo.uncertainty.intervals.clustered_interval`)."""
-    from memstribo.uncertainty.intervals import binomial_interval, clustered_interval, format_probability
-
-    n = len(summaries)
-    failed = sum(1 for s in summaries if s.get("failed"))
-    k = sum(1 for s in summaries if not s.get("failed") and s[key])
-    clusters = [s.get("cycle_id") for s in summaries]
-    deff = 1.0
-    if None in clusters or len(set(clusters)) == n:
-        low = binomial_interval(k, n, confidence)[0]
-        high = binomial_interval(k + failed, n, confidence)[1]  # a failed point may stick or not: both covered
-    else:
-        low_flags = [bool(not s.get("failed") and s[key]) for s in summaries]
-        high_flags = [bool(s.get("failed") or s[key]) for s in summaries]
-        below, above = clustered_interval(low_flags, clusters, confidence), \
-            clustered_interval(high_flags, clusters, confidence)
-        low, high = below["ci"][0], above["ci"][1]
-        deff = max(below["design_effect"], above["design_effect"])
-    estimate = k / (n - failed) if n > failed else float("nan")
-    shared = f", design effect {deff:.3g} (samples share contact solves)" if deff > 1.0 else ""
-    return {"count": k, "samples": n, "failed": failed, "probability": estimate, "ci": [low, high],
-            "design_effect": deff, "effective_samples": n / deff,
-            "text": format_probability(k, n, confidence, interval=(low, high))
-            + (f", {failed} failed" if failed else "") + shared}
-
-
 def _quantiles(values):
     values = np.asarray([v for v in values if v is not None and np.isfinite(v)], dtype=float)
     if values.size == 0:
@@ -250,8 +222,6 @@ def sobol_indices(names, outputs: Mapping[str, np.ndarray], base_samples: int, s
         samples, and a share of variance cannot).
     """
     from SALib.analyze import sobol as sobol_analyze
-
-    from memstribo.uncertainty.decision import clip_unit
 
     problem = {"num_vars": len(names), "names": list(names), "bounds": [[0.0, 1.0]] * len(names)}
     result = {}
@@ -290,47 +260,6 @@ def _saltelli_design(dimensions: int, base_samples: int, seed: int):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         return sobol_sample.sample(problem, base_samples, calc_second_order=False, scramble=True, seed=seed)
-
-
-@cites("model")
-def critical_value(margin_of, prior, *, tolerance=1e-3) -> dict:
-    """Where ``margin_of(value)`` (the median margin [N]) crosses zero within ``prior`` (Brent's method).
-
-    Parameters
-    ----------
-    margin_of : callable
-        value [unit of the constant] -> median margin [N].
-    prior : Prior
-        Searched between ``low`` and ``high`` (on a log scale for a log-uniform prior).
-    tolerance : float
-        Relative tolerance on the value (of the searched interval's width) [-].
-
-    Returns
-    -------
-    dict
-        ``critical_value`` [unit of the constant] or None, ``stiction_above`` (True: stiction
-        for values above it), ``margin_at_low``, ``margin_at_high`` [N], ``note``.
-    """
-    from scipy.optimize import brentq
-
-    forward = math.log if prior.log_scale else (lambda x: x)
-    back = math.exp if prior.log_scale else (lambda t: t)
-    t_lo, t_hi = forward(prior.low), forward(prior.high)
-    m_lo, m_hi = float(margin_of(prior.low)), float(margin_of(prior.high))
-    out = {"margin_at_low": m_lo, "margin_at_high": m_hi, "critical_value": None, "stiction_above": None}
-    if not (np.isfinite(m_lo) and np.isfinite(m_hi)):
-        out["note"] = "the margin could not be computed at an end of the prior"
-        return out
-    if (m_lo < 0) == (m_hi < 0):
-        state = "stiction" if m_lo < 0 else "no stiction"
-        out["note"] = (f"no crossing within the prior: the median margin is {m_lo:+.3g} N at {prior.low:.4g} and "
-                       f"{m_hi:+.3g} N at {prior.high:.4g} ({state} over the whole range)")
-        return out
-    root = brentq(lambda t: float(margin_of(back(t))), t_lo, t_hi, xtol=tolerance * abs(t_hi - t_lo), maxiter=60)
-    out["critical_value"] = float(back(root))
-    out["stiction_above"] = bool(m_hi < 0)
-    out["note"] = f"the median margin crosses zero at {back(root):.4g} (stiction {'above' if m_hi < 0 else 'below'})"
-    return out
 
 
 def designer_sentence(name, entry, prior, nominal) -> str:
@@ -393,7 +322,14 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
         raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
 
 
-def _check_levels(confidence, threshold, band_factor, band_samples, span):
+def _check_inputs(samples, realisations, n_steps, budget, solve_sets, confidence, threshold, decision) -> dict:
+    """Refuse bad inputs of :func:`uncertainty_study` before any cycle; returns the decision's options."""
+    _check_samples(samples, realisations, n_steps, budget, solve_sets)
+    _check_levels(confidence, threshold)
+    return decision_options(decision)
+
+
+def _check_levels(confidence, threshold):
     def number(x):
         return not isinstance(x, bool) and isinstance(x, (int, float, np.integer, np.floating)) and math.isfinite(x)
 
@@ -402,21 +338,13 @@ def _check_levels(confidence, threshold, band_factor, band_samples, span):
     if not number(threshold) or not 0.0 <= threshold <= 1.0:
         raise InputError(f"threshold (the total Sobol' index above which a critical value is searched) is a fraction "
                          f"in [0, 1], got {threshold!r}.")
-    if not number(band_factor) or band_factor <= 1.0:
-        raise InputError(f"band_factor (each prior bound moved by it either way) must be a number above 1, "
-                         f"got {band_factor!r}.")
-    if isinstance(band_samples, bool) or not isinstance(band_samples, (int, np.integer)) or band_samples < 1:
-        raise InputError(f"band_samples must be a whole number >= 1, got {band_samples!r}.")
-    if not number(span) or not 0.0 < span <= 1.0:
-        raise InputError(f"prior_dominated_span is a fraction in (0, 1], got {span!r}.")
 
 
 @cites("model", "wilson_1927", "sobol_2001", "saltelli_2010")
 def uncertainty_study(params, roughness=None, *, samples="auto", realisations=None, steps=None, coating=None,
                       wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
                       sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
-                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, band_factor=2.0,
-                      band_samples=32, prior_dominated_span=0.3) -> dict:
+                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, decision=None) -> dict:
     """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
 
     Parameters
@@ -426,72 +354,59 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     roughness, steps, wear
         As for :func:`memstribo.simulations.mesh.simulate_mesh` (steps [-], wear Omega [-]).
     samples : int or "auto"
-        Realisations x constant sets [-]; ``"auto"`` doubles the constant sets (from 16 per
-        realisation set) until the interval's half-width is below 0.05 or ``budget`` samples.
-    realisations : int, optional
-        Roughness realisations per constant set [-] (default ``min(16, samples)``).
-    coating : str or Coating, optional
-        The teeth's coating (its fitted constants are sampled too).
+        Realisations x constant sets [-]; ``"auto"`` doubles the constant sets (from 16 per realisation set) until
+        the interval's half-width is below 0.05 or ``budget`` samples.
+    realisations, coating
+        Roughness realisations per constant set [-] (default ``min(16, samples)``); the teeth's coating (a str or a
+        Coating; its fitted constants are sampled too).
     client : distributed.Client or a dask cluster, optional
         Run the cycles on its workers (:func:`memstribo.simulations.study.local_cluster`).
-    seed : int
-        Seed of the designs (the roughness realisations have their own seeds).
-    fixed : iterable of str
-        Constants kept at their nominal value (each must have a prior).
+    seed, fixed
+        Seed of the designs (the roughness realisations have their own seeds); constants kept at their nominal value
+        (each must have a prior).
     sensitivity : bool
-        Compute the Sobol' indices (and the critical values of the influential constants).
+        Sobol' indices, critical values of the influential constants, the decision's sensitivity.
     sobol_samples : int, optional
-        Base samples N of Saltelli's design (a power of two; default 32): N (D + 3) cycles or
-        rescalings for D constants and the realisation.
+        Base samples N of Saltelli's design (a power of two; default 32): N (D + 3) cycles or rescalings for D
+        constants and the realisation.
     sobol_steps : int, optional
-        Steps of the cycles of the Sobol' design (default ``steps``); a coarser cycle ranks the
-        constants at lower cost (the probabilities and critical values keep ``steps``).
+        Steps of the cycles of the Sobol' design (default ``steps``); a coarser cycle ranks the constants at lower
+        cost (the probabilities and critical values keep ``steps``).
     critical : bool
-        Critical values of the constants whose total index of the margin exceeds ``threshold`` [-].
+        Critical values of the constants whose total index of the margin exceeds ``threshold`` [-] or that flip.
     confidence, curve_points
-        Level of the intervals [-]; values of the dominant constant for the curve P(stiction) against it.
+        Level of the intervals, in (0, 1) [-]; values of the dominant constant for the curve P(stiction) against it.
     priors : Mapping[str, Prior], optional
         Priors to use instead of the parameter set's.
     solve_sets : int, optional
-        Distinct values per realisation of the constants that need a new contact solve (default:
-        every constant set its own); the bond energies are rescaled and keep every set's value
-        (:func:`_design`). Fewer solves; the samples of a group share their contact solution and are
-        correlated: the interval is Wilson's at ``samples / design_effect`` samples (:func:`_probability`).
-    band_factor : float
-        With ``sensitivity``: each bound of a decisive constant's prior is moved by this factor either way for the
-        robust-Bayes band of P(stiction) (> 1; default 2, MODEL 7h; :func:`memstribo.uncertainty.decision.moved_priors`).
-    band_samples : int
-        Samples of the study re-drawn under each moved prior of a constant that needs new contact solves (its first
-        ones; a rescaled bond energy re-draws every sample) [-], >= 1.
-    prior_dominated_span : float
-        A band of P(stiction) wider than this makes the verdict "prior-dominated", in (0, 1] [-] (default 0.3).
+        Distinct values per realisation of the constants that need a new contact solve (default: every constant set
+        its own); the bond energies are rescaled and keep every set's value (:func:`_design`). Fewer solves; the
+        samples of a group share their contact solution and are correlated: the interval is Wilson's at
+        ``samples / design_effect`` samples (:func:`_probability`).
+    decision : Mapping, optional
+        ``band_factor``, ``band_samples``, ``span`` of :func:`memstribo.uncertainty.decision.decision_analysis`.
 
     Returns
     -------
     dict
-        ``stiction_probability`` [-], ``stiction_probability_ci`` ([low, high], [-]),
-        ``stiction_count``, ``samples``, ``stiction_probability_text``,
-        ``stiction_probability_nominal`` and ``_nominal_ci`` / ``_nominal_text`` (the realisations at
-        nominal constants), ``margin_quantiles`` [N] (``p05``, ``p50``, ``p95``, ``median``) and
-        ``margin_quantiles_nominal``, ``startup_margin_quantiles`` (where the cycle has it),
+        ``stiction_probability`` [-], ``stiction_probability_ci`` ([low, high], [-]), ``stiction_count``,
+        ``samples``, ``stiction_probability_text``, ``stiction_probability_nominal`` and ``_nominal_ci`` /
+        ``_nominal_text`` (the realisations at nominal constants), ``margin_quantiles`` [N] (``p05``, ``p50``,
+        ``p95``, ``median``) and ``margin_quantiles_nominal``, ``startup_margin_quantiles`` (where the cycle has it),
         ``cof_quantiles`` and ``cof_split_quantiles`` [-], ``sensitivity`` ({constant: {first, first_ci,
         total, total_ci, cof_first, cof_first_ci, cof_total, cof_total_ci, critical_value, note}}),
         ``dominant``, ``critical_curve``, ``designer_sentence``, ``priors``, ``sampled_constants``,
         ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
         ``design_effect`` and ``effective_samples`` [-] (samples that share a contact solve: :func:`_probability`),
-        ``solve_seconds`` and ``rescale_seconds`` [s] (wall time of the solves and of the rescalings; the counts
-        and times include the Sobol' rows and the critical values), ``elapsed`` [s], ``warnings``; with
-        ``sensitivity``: ``sobol_design`` (``base_samples``, ``rows``, ``steps``, ``failed_rows``), and the
-        sensitivity of the decision (:func:`memstribo.uncertainty.decision.decision_analysis`):
-        ``decision_sensitivity``, ``decision_design``, ``flipping_constants``, ``flipping_constants_startup``,
-        ``robust_bayes``, ``prior_dominated``, ``prior_dominated_constants``, ``decision_sentence``.
+        ``solve_seconds`` and ``rescale_seconds`` [s] (the solves' and rescalings' wall time, the Sobol' rows and
+        critical values included), ``elapsed`` [s], ``warnings``; with ``sensitivity``: ``sobol_design`` and
+        :func:`memstribo.uncertainty.decision.decision_analysis`'s keys.
 
     Raises
     ------
     InputError
-        Bad sample counts, a fixed constant without a prior or named twice, a sample count above
-        the memory estimate, bad priors, ``confidence`` outside (0, 1), ``threshold`` outside [0, 1],
-        ``band_factor`` not above 1, ``band_samples`` below 1, ``prior_dominated_span`` outside (0, 1].
+        Bad sample counts, a fixed constant without a prior or named twice, a sample count above the memory
+        estimate, bad priors, ``confidence`` outside (0, 1), ``threshold`` outside [0, 1], bad ``decision`` options.
     """
     from memstribo.uncertainty.priors import priors_for
     from memstribo.uncertainty.sampling import _check_fixed
@@ -504,9 +419,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     sampled = {name: p for name, p in priors.items() if name not in fixed_names}
     if realisations is None:
         realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
-    n_steps = int(params["mesh_steps"] if steps is None else steps)
-    _check_samples(samples, realisations, n_steps, budget, solve_sets)
-    _check_levels(confidence, threshold, band_factor, band_samples, prior_dominated_span)
+    decision = _check_inputs(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget,
+                             solve_sets, confidence, threshold, decision)
     client, own_client = _client_of(client)
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
@@ -515,16 +429,10 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         sets_count, points, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
         runners = [runner]
-        if sensitivity and sampled:
-            sobol_runner, rows = _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps,
-                                              coating_name, wear, client, progress, sobol_samples or 32, sobol_steps,
-                                              critical, threshold, curve_points)
-            runners.append(sobol_runner)
-            from memstribo.uncertainty.decision import decision_analysis
-
-            decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence,
-                              threshold=threshold, band_factor=band_factor, band_samples=band_samples,
-                              span=prior_dominated_span, critical=critical)
+        if sensitivity and sampled:  # the margin's (Sobol'), then the decision's (MODEL 7h)
+            runners.append(_analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence,
+                                    (roughness, steps, coating_name, wear, client, progress), sobol_samples or 32,
+                                    sobol_steps, critical, threshold, curve_points, decision))
         result["warnings"] = _warnings(result)
         _count(result, runners)
         result["elapsed"] = time.perf_counter() - start
@@ -532,6 +440,18 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     finally:
         if own_client:
             client.close()
+
+
+def _analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence, cycle, sobol_samples,
+             sobol_steps, critical, threshold, curve_points, decision):
+    """Sobol' indices of the margin (:func:`_sensitivity`), then the sensitivity of the decision
+    (:func:`memstribo.uncertainty.decision.decision_analysis`), into ``result``; returns the Sobol' rows' runner.
+    ``cycle``: (roughness, steps, coating_name, wear, client, progress)."""
+    sobol_runner, rows = _sensitivity(result, params, runner, sampled, R, seed, confidence, *cycle, sobol_samples,
+                                      sobol_steps, critical, threshold, curve_points)
+    decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence,
+                      threshold=threshold, critical=critical, **decision)
+    return sobol_runner
 
 
 def _count(result, runners):
@@ -703,26 +623,6 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         curve["ci_high"].append(p["ci"][1])
     result["critical_curve"] = curve
     return sobol_runner, rows
-
-
-#: realisations of the median margin of a constant that needs a new contact solve per value (critical values and
-#: the end-point test of the decision); a rescaled bond energy uses every realisation
-SOLVED_REALISATIONS = 8
-
-
-def _margin_function(runner, name, R, key="stiction_margin"):
-    """(value -> median of ``key`` over the realisations with ``name`` at that value and the others nominal [N], the
-    number of realisations): all ``R`` for a rescaled bond energy, :data:`SOLVED_REALISATIONS` otherwise."""
-    cache = {}
-    reals = R if name in runner.rescalable() else min(R, SOLVED_REALISATIONS)
-
-    def median_margin(x):
-        if x not in cache:
-            out = runner.summaries([(r, {name: x}) for r in range(reals)])
-            values = [s[key] for s in out if not s.get("failed") and s.get(key) is not None]
-            cache[x] = float(np.median(values)) if values else float("nan")
-        return cache[x]
-    return median_margin, reals
 
 
 def _coating_nominal(name, coating_name):
