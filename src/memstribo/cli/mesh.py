@@ -370,8 +370,9 @@ def decision_notes(values) -> list[str]:
     notes = []
     if decision:
         design = values.get("decision_design") or {}
-        notes.append(f"  what the verdict hangs on (KS distance of each constant between the {design.get('stuck', '?')} "
-                     f"stuck and {design.get('free', '?')} free samples [95 % bootstrap interval], noise level; "
+        notes.append(f"  what the verdict hangs on (KS distance of each constant between the "
+                     f"{design.get('stuck', '?')} stuck and {design.get('free', '?')} free samples [95 % bootstrap "
+                     "interval], noise level; "
                      "verdict with the constant alone at the low / high end of its prior):")
         flipping = set(values.get("flipping_constants") or [])
         shown = [n for n in decision][:6] + [n for n in list(decision)[6:] if n in flipping]

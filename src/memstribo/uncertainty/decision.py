@@ -17,6 +17,8 @@ study (:func:`memstribo.uncertainty.study.uncertainty_study`) assembles:
 - :func:`measurable`: a critical value in units one can measure (a bond energy as the interfacial shear strength
   U / D_chem^3 and the adhesion hysteresis U / D_chem^2 it implies, a Hamaker constant as a work of adhesion).
 - :func:`clip_unit`: Sobol' estimates and their bootstrap intervals kept inside [0, 1], where the indices live.
+- :func:`critical_value`: where the median margin crosses zero with one constant moved, the others nominal;
+  :func:`decision_analysis`: all of this on an uncertainty study's samples.
 """
 
 from __future__ import annotations
@@ -29,9 +31,9 @@ import numpy as np
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["critical_value", "ks_distance", "regional_sensitivity", "moved_priors", "robust_bayes_band", "measurable", "clip_unit",
-           "decision_analysis", "decision_options", "decision_sentence", "PRIOR_DOMINATED_SPAN", "BAND_FACTOR", "REALISATION_FACTOR",
-           "SOLVED_REALISATIONS"]
+__all__ = ["critical_value", "ks_distance", "regional_sensitivity", "moved_priors", "robust_bayes_band", "measurable",
+           "clip_unit", "decision_analysis", "decision_options", "decision_sentence", "PRIOR_DOMINATED_SPAN",
+           "BAND_FACTOR", "REALISATION_FACTOR", "SOLVED_REALISATIONS"]
 
 #: a robust-Bayes band of P(stiction) wider than this makes the verdict "prior-dominated" (MODEL 7h) [-]
 PRIOR_DOMINATED_SPAN = 0.3
