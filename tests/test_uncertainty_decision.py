@@ -179,6 +179,7 @@ def test_a_small_study_reports_the_decisions_sensitivity(params):
     for entry in result["sensitivity"].values():
         for key in ("first", "total", "cof_first", "cof_total"):
             assert 0.0 <= entry[key] <= 1.0 and 0.0 <= entry[f"{key}_ci"][0] <= entry[f"{key}_ci"][1] <= 1.0
+        assert isinstance(entry["clipped"], bool)
     decision = result["decision_sensitivity"]
     assert set(decision) == {"vdw_bond_energy", "roughness_realisation"}
     entry = decision["vdw_bond_energy"]

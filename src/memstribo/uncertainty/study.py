@@ -568,8 +568,8 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         m, c = indices["margin"][name], indices["cof"][name]
         sensitivity[name] = {"first": m["first"], "first_ci": m["first_ci"], "total": m["total"],
                              "total_ci": m["total_ci"], "cof_first": c["first"], "cof_first_ci": c["first_ci"],
-                             "cof_total": c["total"], "cof_total_ci": c["total_ci"], "critical_value": None,
-                             "note": ""}
+                             "cof_total": c["total"], "cof_total_ci": c["total_ci"],
+                             "clipped": bool(m["clipped"] or c["clipped"]), "critical_value": None, "note": ""}
     sensitivity[REALISATION_FACTOR]["note"] = "aleatory (part-to-part roughness): no critical value"
     ranked = sorted(factors, key=lambda n: -sensitivity[n]["total"])
     result["sensitivity"] = {name: sensitivity[name] for name in ranked}
