@@ -512,8 +512,36 @@ _ENTRIES = [
      "5/50/95 % quantiles of the chemical, vdW, elastic and capillary parts of the mean COF"),
     ("sensitivity", _TEXT, "sensitivity",
      "per constant: Sobol' first-order and total indices of the margin (first, total) and of the mean COF "
-     "(cof_first, cof_total) with their bootstrap intervals, and the critical value [unit of the constant] "
-     "where the median margin crosses zero, or null with a note"),
+     "(cof_first, cof_total) with their bootstrap intervals, clipped to [0, 1] (clipped: whether an estimate or an "
+     "interval end was outside), and the critical value [unit of the constant] where the median margin crosses "
+     "zero, or null with a note"),
+    ("sobol_design", _TEXT, "Sobol' design",
+     "the design of the Sobol' indices: base_samples N, rows N (D + 2), steps of its cycles, failed_rows"),
+    ("decision_sensitivity", _TEXT, "sensitivity of the decision",
+     "per factor: the Kolmogorov-Smirnov distance between its values in the samples that stick and in those that "
+     "do not (index, in [0, 1]; regional sensitivity, Spear and Hornberger 1980) with its bootstrap interval "
+     "(index_ci) and the distance noise reaches (noise_level), and the same for the start-up verdict; per constant "
+     "also the median margin [N] and the stuck count with the constant alone at each end of its prior, the others "
+     "nominal (margin_at_low, margin_at_high, stiction_at_low, stiction_at_high), and can_flip (MODEL 7h)"),
+    ("decision_design", _TEXT, "samples of the decision's sensitivity",
+     "the samples the regional index uses (the study's and the Sobol' rows at the same steps): samples, stuck, free, "
+     "failed, blocks, sources, resamples, confidence"),
+    ("flipping_constants", _TEXT, "constants that flip the verdict",
+     "the constants that alone flip the running verdict inside their prior: the sign of the median margin at an end "
+     "of the prior, the others nominal, differs from the nominal constants' (MODEL 7h)"),
+    ("flipping_constants_startup", _TEXT, "constants that flip the start-up verdict",
+     "as flipping_constants, for the start-up margin"),
+    ("robust_bayes", _TEXT, "robust-Bayes band",
+     "per decisive constant: P(stiction) with its interval under the prior and under the prior with each bound "
+     "moved by a factor (2) either way (priors), the band [smallest, largest], band_ci, span, prior_dominated, the "
+     "critical value and critical_measurable (in the units of the measurement that decides it: shear strength in "
+     "MPa, adhesion hysteresis or work of adhesion in mJ/m^2, widths in nm)"),
+    ("prior_dominated", _TEXT, "prior-dominated",
+     "true where a robust-Bayes band of P(stiction) spans more than 0.3: the probability is mostly the prior"),
+    ("prior_dominated_constants", _TEXT, "prior-dominating constants", "the constants whose band spans more than 0.3"),
+    ("decision_sentence", _TEXT, "what the verdict hangs on",
+     "the constants that alone flip the verdict, with their critical values in measurable units, and whether "
+     "P(stiction) is prior-dominated"),
     ("dominant_constant", _TEXT, "dominant constant", "the constant with the largest total Sobol' index of the margin"),
     ("designer_sentence", _TEXT, "what to do", "where the verdict flips and what to measure"),
     ("sampled_constants", _TEXT, "sampled constants", "the constants sampled from their priors"),

@@ -303,6 +303,18 @@ REFERENCES: dict[str, str] = {
         "J. Herman, W. Usher, 'SALib: an open-source Python library for sensitivity analysis', J. Open Source "
         "Softw. 2 (2017) 97. doi:10.21105/joss.00097"
     ),
+    "spear_hornberger_1980": (
+        "R. C. Spear, G. M. Hornberger, 'Eutrophication in Peel Inlet-II. Identification of critical uncertainties "
+        "via generalized sensitivity analysis', Water Res. 14 (1980) 43-49. doi:10.1016/0043-1354(80)90040-8"
+    ),
+    "pianosi_2016": (
+        "F. Pianosi, K. Beven, J. Freer, J. W. Hall, J. Rougier, D. B. Stephenson, T. Wagener, 'Sensitivity analysis "
+        "of environmental models: a systematic review with practical workflow', Environ. Model. Softw. 79 (2016) "
+        "214-232. doi:10.1016/j.envsoft.2016.02.008"
+    ),
+    "berger_1994": (
+        "J. O. Berger, 'An overview of robust Bayesian analysis', Test 3 (1994) 5-124. doi:10.1007/BF02562676"
+    ),
     "owen_1998": (
         "A. B. Owen, 'Scrambling Sobol' and Niederreiter-Xing points', J. Complexity 14 (1998) 466-489. "
         "doi:10.1006/jcom.1998.0487"

@@ -207,8 +207,8 @@ def run(args, params):
         notes.append(f"  {'converged' if values['converged'] else 'NOT converged'} (MODEL 7d: margin within 2 % of "
                      f"|margin|, mean COF within 2 %): {values['steps']} steps, {values['elements_across_contact']} "
                      "elements across 2a; " + "; ".join(values["refinement"] or ["no check"]))
-    if "uncertainty_samples" in values:
-        notes.extend(uncertainty_notes(values))
+    if "uncertainty_samples" in values:  # the study's keys that only the JSON carries are read in words here
+        notes.extend(uncertainty_notes({**(study or {}), **values}))
     elif "stiction_probability" in values:
         notes.append(f"  ensemble of {values['realisations']} roughness realisations: stiction probability "
                      f"{values['stiction_probability_text']}, margin {values['stiction_margin_p05'] * 1e3:+.3g} .. "
@@ -247,7 +247,9 @@ UNCERTAINTY_KEYS = ("stiction_probability", "stiction_probability_ci", "stiction
                     "margin_quantiles_nominal", "startup_margin_quantiles", "cof_quantiles", "cof_split_quantiles",
                     "sensitivity", "dominant_constant", "designer_sentence", "sampled_constants", "fixed_constants",
                     "unconverged_samples", "failed_samples", "priors", "solve_sets", "design_effect",
-                    "effective_samples",
+                    "effective_samples", "sobol_design", "decision_sensitivity", "decision_design",
+                    "flipping_constants", "flipping_constants_startup", "robust_bayes", "prior_dominated",
+                    "prior_dominated_constants", "decision_sentence",
                     # the start-up verdict over the priors (MODEL 7f, issue #35)
                     "startup_stiction_probability", "startup_stiction_probability_ci", "startup_stiction_count",
                     "startup_stiction_probability_text", "startup_stiction_probability_nominal",
@@ -256,7 +258,8 @@ UNCERTAINTY_KEYS = ("stiction_probability", "stiction_probability_ci", "stiction
 
 #: Keys only the JSON carries (the readable output gives them as notes).
 UNCERTAINTY_JSON_ONLY = ("priors", "sensitivity", "cof_split_quantiles", "sampled_constants",
-                         "margin_quantiles_nominal")
+                         "margin_quantiles_nominal", "sobol_design", "decision_sensitivity", "decision_design",
+                         "robust_bayes", "decision_sentence")
 
 
 def _uncertainty_option(args):
@@ -405,15 +408,54 @@ def uncertainty_notes(values) -> list[str]:
         notes.append(f"  margin 5/50/95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / {q['p95'] * 1e3:+.3g} mN")
     ranked = [(name, entry) for name, entry in values.get("sensitivity", {}).items()]
     if ranked:
-        notes.append("  what the margin hangs on (Sobol' total index [95 % interval]; critical value):")
+        design = values.get("sobol_design") or {}
+        base = f", {design['base_samples']} base samples" if design.get("base_samples") else ""
+        notes.append(f"  what the margin hangs on (Sobol' total index [95 % bootstrap interval]{base}, inside [0, 1]; "
+                     "critical value):")
         for name, entry in ranked[:6]:
             critical = entry.get("critical_value")
             crit = (f"critical {critical:.4g}" if critical is not None
                     else (entry.get("note") or ""))
             notes.append(f"    {name:<24} {entry['total']:.2f} [{entry['total_ci'][0]:.2f}, {entry['total_ci'][1]:.2f}]"
                          f"  {crit}")
+    notes.extend(decision_notes(values))
     if values.get("designer_sentence"):
         notes.append(f"  {values['designer_sentence']}")
+    if values.get("decision_sentence"):
+        notes.append(f"  {values['decision_sentence']}")
+    return notes
+
+
+def decision_notes(values) -> list[str]:
+    """The readable lines of the decision's sensitivity (MODEL 7h): the regional index of the verdict, the verdict at
+    each end of every prior, and the robust-Bayes bands."""
+    decision = values.get("decision_sensitivity") or {}
+    notes = []
+    if decision:
+        design = values.get("decision_design") or {}
+        notes.append(f"  what the verdict hangs on (KS distance of each constant between the "
+                     f"{design.get('stuck', '?')} stuck and {design.get('free', '?')} free samples [95 % bootstrap "
+                     "interval], noise level; "
+                     "verdict with the constant alone at the low / high end of its prior):")
+        flipping = set(values.get("flipping_constants") or [])
+        shown = [n for n in decision][:6] + [n for n in list(decision)[6:] if n in flipping]
+        for name in shown:
+            entry = decision[name]
+            index = ("   -" if entry.get("index") is None else
+                     f"{entry['index']:.2f} [{entry['index_ci'][0]:.2f}, {entry['index_ci'][1]:.2f}], noise "
+                     f"{entry['noise_level']:.2f}")
+            ends = ""
+            if "stiction_at_low" in entry:
+                ends = (f"; {entry['stiction_at_low']} / {entry['stiction_at_high']} stick"
+                        + ("  FLIPS the verdict" if entry.get("can_flip") else ""))
+            notes.append(f"    {name:<24} {index}{ends}")
+    for name, band in (values.get("robust_bayes") or {}).items():
+        if band.get("band") is None:
+            continue
+        notes.append(f"  robust-Bayes band of P(stiction) over {name}'s prior with its bounds moved by a factor "
+                     f"{band['factor']:g}: {band['band'][0]:.2f} to {band['band'][1]:.2f} (intervals "
+                     f"{band['band_ci'][0]:.2f}-{band['band_ci'][1]:.2f}, {band['samples']} samples each)"
+                     + (": PRIOR-DOMINATED" if band.get("prior_dominated") else ""))
     return notes
 
 

@@ -96,7 +96,8 @@ def uncertainty_summary(result) -> dict[str, Any]:
                     f"at the nominal constants {result['stiction_probability_nominal_text']}. "
                     + (f"P(start-up stiction) = {result['startup_stiction_probability_text']} (the torque balance of "
                        "MODEL 7f). " if result.get("startup_stiction_probability_text") else "")
-                    + result.get("designer_sentence", "")),
+                    + result.get("designer_sentence", "")
+                    + (" " + result["decision_sentence"] if result.get("decision_sentence") else "")),
         "interval": (f"stiction margin 5 / 50 / 95 %: {q['p05'] * 1e3:+.3g} / {q['p50'] * 1e3:+.3g} / "
                      f"{q['p95'] * 1e3:+.3g} mN (negative: stiction)"),
         "drivers": drivers,

@@ -14,6 +14,9 @@ Submodules (imported on use; ``import memstribo`` stays light):
   energy without a new contact solve);
 - :mod:`memstribo.uncertainty.study`: :func:`~memstribo.uncertainty.study.uncertainty_study`,
   :func:`~memstribo.uncertainty.study.critical_value`;
+- :mod:`memstribo.uncertainty.decision`: the sensitivity of the decision (MODEL 7h):
+  :func:`~memstribo.uncertainty.decision.regional_sensitivity` (stuck against free samples),
+  :func:`~memstribo.uncertainty.decision.robust_bayes_band` (P(stiction) under priors moved by a factor 2);
 - :mod:`memstribo.uncertainty.figures` and :mod:`memstribo.uncertainty.report`: the figures and the
   report section "What the verdict hangs on".
 """

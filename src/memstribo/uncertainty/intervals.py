@@ -11,7 +11,7 @@ from memstribo.errors import InputError
 from memstribo.references import cites
 
 __all__ = ["binomial_interval", "clustered_interval", "wilson_interval", "format_probability", "ensemble_interval",
-           "half_width", "METHODS"]
+           "half_width", "sample_probability", "METHODS"]
 
 #: interval methods: memstribo's name -> scipy.stats.BinomTestResult.proportion_ci's
 METHODS = {"wilson": "wilson", "clopper-pearson": "exact", "exact": "exact", "wilsoncc": "wilsoncc"}
@@ -199,3 +199,35 @@ def ensemble_interval(summary, confidence=0.95, method="wilson") -> dict:
     out["stiction_probability_ci"] = [low, high]
     out["stiction_probability_text"] = format_probability(k, n, confidence, method)
     return out
+
+
+def sample_probability(summaries, confidence=0.95, key="stiction") -> dict:
+    """Count, estimate and interval of P(stiction) over the uncertainty study's sample summaries.
+
+    ``key``: ``stiction``, the running verdict, or ``startup_stiction``. Samples that share a cycle (``cycle_id``: a
+    grouped design, fixed solve constants) widen it by their design effect (:func:`clustered_interval`); a failed
+    sample (``failed``) may stick or not, and the interval covers both. Returns ``count``, ``samples``, ``failed``,
+    ``probability``, ``ci`` ([low, high]), ``design_effect``, ``effective_samples`` [-] and ``text``.
+    """
+
+    n = len(summaries)
+    failed = sum(1 for s in summaries if s.get("failed"))
+    k = sum(1 for s in summaries if not s.get("failed") and s[key])
+    clusters = [s.get("cycle_id") for s in summaries]
+    deff = 1.0
+    if None in clusters or len(set(clusters)) == n:
+        low = binomial_interval(k, n, confidence)[0]
+        high = binomial_interval(k + failed, n, confidence)[1]  # a failed point may stick or not: both covered
+    else:
+        low_flags = [bool(not s.get("failed") and s[key]) for s in summaries]
+        high_flags = [bool(s.get("failed") or s[key]) for s in summaries]
+        below, above = clustered_interval(low_flags, clusters, confidence), \
+            clustered_interval(high_flags, clusters, confidence)
+        low, high = below["ci"][0], above["ci"][1]
+        deff = max(below["design_effect"], above["design_effect"])
+    estimate = k / (n - failed) if n > failed else float("nan")
+    shared = f", design effect {deff:.3g} (samples share contact solves)" if deff > 1.0 else ""
+    return {"count": k, "samples": n, "failed": failed, "probability": estimate, "ci": [low, high],
+            "design_effect": deff, "effective_samples": n / deff,
+            "text": format_probability(k, n, confidence, interval=(low, high))
+            + (f", {failed} failed" if failed else "") + shared}

@@ -42,6 +42,8 @@ def report_section(result, figures=None) -> str:
                      f"{q['p95'] * 1e3:+.3g} mN (negative: stiction).</p>")
     if result.get("designer_sentence"):
         parts.append(f'<p class="designer"><b>{e(result["designer_sentence"])}</b></p>')
+    if result.get("decision_sentence"):  # what can flip the verdict, and whether the probability is the prior's
+        parts.append(f'<p class="decision">{e(result["decision_sentence"])}</p>')
     sensitivity = result.get("sensitivity") or {}
     if sensitivity:
         parts.append("<table><thead><tr><th>constant</th><th>total index (margin)</th><th>first-order</th>"
@@ -53,7 +55,10 @@ def report_section(result, figures=None) -> str:
                 f"<td>{s['first']:.2f}</td><td>{s['cof_total']:.2f}</td><td>{e(critical)}</td>"
                 f"<td>{e(s.get('note') or '')}</td></tr>")
         parts.append("</tbody></table>")
-        parts.append("<p>Sobol' indices (Saltelli's design, SALib) with 95 % bootstrap intervals; the critical value "
+        base = (result.get("sobol_design") or {}).get("base_samples")
+        parts.append("<p>Sobol' indices (Saltelli's design, SALib"
+                     + (f", {int(base)} base samples" if base else "")
+                     + ") with 95 % bootstrap intervals, clipped to [0, 1]; the critical value "
                      "is where the median margin over the realisations crosses zero with the other constants at "
                      "nominal.</p>")
     for warning in result.get("warnings") or []:

@@ -33,12 +33,13 @@ import numpy as np
 
 from memstribo.errors import InputError
 from memstribo.references import cites
+from memstribo.uncertainty.decision import (REALISATION_FACTOR, SOLVED_REALISATIONS, _margin_function, clip_unit,
+                                            critical_value, decision_analysis, decision_options)
+from memstribo.uncertainty.intervals import sample_probability as _probability
 
 __all__ = ["uncertainty_study", "critical_value", "sobol_indices", "REALISATION_FACTOR", "designer_sentence",
            "DEFAULT_REALISATIONS", "DEFAULT_BUDGET", "TARGET_HALF_WIDTH"]
 
-#: name of the roughness realisation as a factor of the sensitivity analysis (aleatory, not a constant)
-REALISATION_FACTOR = "roughness_realisation"
 #: realisations per constant set when not given
 DEFAULT_REALISATIONS = 16
 #: most samples (realisations x constant sets) that ``samples="auto"`` draws
@@ -190,35 +191,6 @@ def _client_of(client):
     return Client(client), True
 
 
-def _probability(summaries, confidence, key="stiction"):
-    """Count, estimate and interval of P(stiction) (``key``: ``stiction``, the running verdict, or
-    ``startup_stiction``); samples that share a cycle (``cycle_id``: a grouped design, fixed solve constants) widen it
-    by their design effect (:func:`memstribo.uncertainty.intervals.clustered_interval`)."""
-    from memstribo.uncertainty.intervals import binomial_interval, clustered_interval, format_probability
-
-    n = len(summaries)
-    failed = sum(1 for s in summaries if s.get("failed"))
-    k = sum(1 for s in summaries if not s.get("failed") and s[key])
-    clusters = [s.get("cycle_id") for s in summaries]
-    deff = 1.0
-    if None in clusters or len(set(clusters)) == n:
-        low = binomial_interval(k, n, confidence)[0]
-        high = binomial_interval(k + failed, n, confidence)[1]  # a failed point may stick or not: both covered
-    else:
-        low_flags = [bool(not s.get("failed") and s[key]) for s in summaries]
-        high_flags = [bool(s.get("failed") or s[key]) for s in summaries]
-        below, above = clustered_interval(low_flags, clusters, confidence), \
-            clustered_interval(high_flags, clusters, confidence)
-        low, high = below["ci"][0], above["ci"][1]
-        deff = max(below["design_effect"], above["design_effect"])
-    estimate = k / (n - failed) if n > failed else float("nan")
-    shared = f", design effect {deff:.3g} (samples share contact solves)" if deff > 1.0 else ""
-    return {"count": k, "samples": n, "failed": failed, "probability": estimate, "ci": [low, high],
-            "design_effect": deff, "effective_samples": n / deff,
-            "text": format_probability(k, n, confidence, interval=(low, high))
-            + (f", {failed} failed" if failed else "") + shared}
-
-
 def _quantiles(values):
     values = np.asarray([v for v in values if v is not None and np.isfinite(v)], dtype=float)
     if values.size == 0:
@@ -244,8 +216,10 @@ def sobol_indices(names, outputs: Mapping[str, np.ndarray], base_samples: int, s
     Returns
     -------
     dict
-        ``{output: {factor: {"first", "first_ci", "total", "total_ci"}}}`` [-]; an interval is
-        [index - half-width, index + half-width] of the bootstrap at ``confidence``.
+        ``{output: {factor: {"first", "first_ci", "total", "total_ci", "clipped"}}}`` [-]; an interval is
+        [index - half-width, index + half-width] of the bootstrap at ``confidence``. Indices and interval ends are
+        clipped to [0, 1] (``clipped``: whether any was outside; Saltelli's estimators leave [0, 1] at few base
+        samples, and a share of variance cannot).
     """
     from SALib.analyze import sobol as sobol_analyze
 
@@ -254,18 +228,22 @@ def sobol_indices(names, outputs: Mapping[str, np.ndarray], base_samples: int, s
     for output, y in outputs.items():
         y = np.asarray(y, dtype=float)
         if np.ptp(y) == 0.0:  # a constant output has no variance to share
-            result[output] = {n: {"first": 0.0, "first_ci": [0.0, 0.0], "total": 0.0, "total_ci": [0.0, 0.0]}
-                              for n in names}
+            result[output] = {n: {"first": 0.0, "first_ci": [0.0, 0.0], "total": 0.0, "total_ci": [0.0, 0.0],
+                                  "clipped": False} for n in names}
             continue
         # SALib seeds its bootstrap only for a truthy seed (seed 0 would draw new intervals each run): seed + 1
         si = sobol_analyze.analyze(problem, y, calc_second_order=False, num_resamples=resamples,
                                    conf_level=confidence, seed=int(seed) + 1)
-        result[output] = {
-            n: {"first": float(si["S1"][j]), "first_ci": [float(si["S1"][j] - si["S1_conf"][j]),
-                                                          float(si["S1"][j] + si["S1_conf"][j])],
-                "total": float(si["ST"][j]), "total_ci": [float(si["ST"][j] - si["ST_conf"][j]),
-                                                          float(si["ST"][j] + si["ST_conf"][j])]}
-            for j, n in enumerate(names)}
+        result[output] = {}
+        for j, n in enumerate(names):
+            raw = {"first": float(si["S1"][j]), "first_ci": [float(si["S1"][j] - si["S1_conf"][j]),
+                                                             float(si["S1"][j] + si["S1_conf"][j])],
+                   "total": float(si["ST"][j]), "total_ci": [float(si["ST"][j] - si["ST_conf"][j]),
+                                                             float(si["ST"][j] + si["ST_conf"][j])]}
+            # an index is a share of variance: the estimator's excursions outside [0, 1] are sampling error
+            clipped = {key: clip_unit(value) for key, value in raw.items()}
+            clipped["clipped"] = clipped != raw
+            result[output][n] = clipped
     return result
 
 
@@ -282,47 +260,6 @@ def _saltelli_design(dimensions: int, base_samples: int, seed: int):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         return sobol_sample.sample(problem, base_samples, calc_second_order=False, scramble=True, seed=seed)
-
-
-@cites("model")
-def critical_value(margin_of, prior, *, tolerance=1e-3) -> dict:
-    """Where ``margin_of(value)`` (the median margin [N]) crosses zero within ``prior`` (Brent's method).
-
-    Parameters
-    ----------
-    margin_of : callable
-        value [unit of the constant] -> median margin [N].
-    prior : Prior
-        Searched between ``low`` and ``high`` (on a log scale for a log-uniform prior).
-    tolerance : float
-        Relative tolerance on the value (of the searched interval's width) [-].
-
-    Returns
-    -------
-    dict
-        ``critical_value`` [unit of the constant] or None, ``stiction_above`` (True: stiction
-        for values above it), ``margin_at_low``, ``margin_at_high`` [N], ``note``.
-    """
-    from scipy.optimize import brentq
-
-    forward = math.log if prior.log_scale else (lambda x: x)
-    back = math.exp if prior.log_scale else (lambda t: t)
-    t_lo, t_hi = forward(prior.low), forward(prior.high)
-    m_lo, m_hi = float(margin_of(prior.low)), float(margin_of(prior.high))
-    out = {"margin_at_low": m_lo, "margin_at_high": m_hi, "critical_value": None, "stiction_above": None}
-    if not (np.isfinite(m_lo) and np.isfinite(m_hi)):
-        out["note"] = "the margin could not be computed at an end of the prior"
-        return out
-    if (m_lo < 0) == (m_hi < 0):
-        state = "stiction" if m_lo < 0 else "no stiction"
-        out["note"] = (f"no crossing within the prior: the median margin is {m_lo:+.3g} N at {prior.low:.4g} and "
-                       f"{m_hi:+.3g} N at {prior.high:.4g} ({state} over the whole range)")
-        return out
-    root = brentq(lambda t: float(margin_of(back(t))), t_lo, t_hi, xtol=tolerance * abs(t_hi - t_lo), maxiter=60)
-    out["critical_value"] = float(back(root))
-    out["stiction_above"] = bool(m_hi < 0)
-    out["note"] = f"the median margin crosses zero at {back(root):.4g} (stiction {'above' if m_hi < 0 else 'below'})"
-    return out
 
 
 def designer_sentence(name, entry, prior, nominal) -> str:
@@ -407,11 +344,29 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
         raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
 
 
+def _check_inputs(samples, realisations, n_steps, budget, solve_sets, confidence, threshold, decision) -> dict:
+    """Refuse bad inputs of :func:`uncertainty_study` before any cycle; returns the decision's options."""
+    _check_samples(samples, realisations, n_steps, budget, solve_sets)
+    _check_levels(confidence, threshold)
+    return decision_options(decision)
+
+
+def _check_levels(confidence, threshold):
+    def number(x):
+        return not isinstance(x, bool) and isinstance(x, (int, float, np.integer, np.floating)) and math.isfinite(x)
+
+    if not number(confidence) or not 0.0 < confidence < 1.0:
+        raise InputError(f"confidence is a fraction strictly between 0 and 1, got {confidence!r}.")
+    if not number(threshold) or not 0.0 <= threshold <= 1.0:
+        raise InputError(f"threshold (the total Sobol' index above which a critical value is searched) is a fraction "
+                         f"in [0, 1], got {threshold!r}.")
+
+
 @cites("model", "wilson_1927", "sobol_2001", "saltelli_2010")
 def uncertainty_study(params, roughness=None, *, samples="auto", realisations=None, steps=None, coating=None,
                       wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
                       sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
-                      threshold=0.1, curve_points=9, priors=None, solve_sets=None) -> dict:
+                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, decision=None) -> dict:
     """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
 
     Parameters
@@ -421,59 +376,59 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     roughness, steps, wear
         As for :func:`memstribo.simulations.mesh.simulate_mesh` (steps [-], wear Omega [-]).
     samples : int or "auto"
-        Realisations x constant sets [-]; ``"auto"`` doubles the constant sets (from 16 per
-        realisation set) until the interval's half-width is below 0.05 or ``budget`` samples.
-    realisations : int, optional
-        Roughness realisations per constant set [-] (default ``min(16, samples)``).
-    coating : str or Coating, optional
-        The teeth's coating (its fitted constants are sampled too).
+        Realisations x constant sets [-]; ``"auto"`` doubles the constant sets (from 16 per realisation set) until
+        the interval's half-width is below 0.05 or ``budget`` samples.
+    realisations, coating
+        Roughness realisations per constant set [-] (default ``min(16, samples)``); the teeth's coating (a str or a
+        Coating; its fitted constants are sampled too).
     client : distributed.Client or a dask cluster, optional
         Run the cycles on its workers (:func:`memstribo.simulations.study.local_cluster`).
-    seed : int
-        Seed of the designs (the roughness realisations have their own seeds).
-    fixed : iterable of str
-        Constants kept at their nominal value (each must have a prior).
+    seed, fixed
+        Seed of the designs (the roughness realisations have their own seeds); constants kept at their nominal value
+        (each must have a prior).
     sensitivity : bool
-        Compute the Sobol' indices (and the critical values of the influential constants).
+        Sobol' indices, critical values of the influential constants, the decision's sensitivity.
     sobol_samples : int, optional
-        Base samples N of Saltelli's design (a power of two; default 32): N (D + 3) cycles or
-        rescalings for D constants and the realisation.
+        Base samples N of Saltelli's design (a power of two; default 32): N (D + 3) cycles or rescalings for D
+        constants and the realisation.
     sobol_steps : int, optional
-        Steps of the cycles of the Sobol' design (default ``steps``); a coarser cycle ranks the
-        constants at lower cost (the probabilities and critical values keep ``steps``).
+        Steps of the cycles of the Sobol' design (default ``steps``); a coarser cycle ranks the constants at lower
+        cost (the probabilities and critical values keep ``steps``).
     critical : bool
-        Critical values of the constants whose total index of the margin exceeds ``threshold`` [-].
+        Critical values of the constants whose total index of the margin exceeds ``threshold`` [-] or that flip.
     confidence, curve_points
-        Level of the intervals [-]; values of the dominant constant for the curve P(stiction) against it.
+        Level of the intervals, in (0, 1) [-]; values of the dominant constant for the curve P(stiction) against it.
     priors : Mapping[str, Prior], optional
         Priors to use instead of the parameter set's.
     solve_sets : int, optional
-        Distinct values per realisation of the constants that need a new contact solve (default:
-        every constant set its own); the bond energies are rescaled and keep every set's value
-        (:func:`_design`). Fewer solves; the samples of a group share their contact solution and are
-        correlated: the interval is Wilson's at ``samples / design_effect`` samples (:func:`_probability`).
+        Distinct values per realisation of the constants that need a new contact solve (default: every constant set
+        its own); the bond energies are rescaled and keep every set's value (:func:`_design`). Fewer solves; the
+        samples of a group share their contact solution and are correlated: the interval is Wilson's at
+        ``samples / design_effect`` samples (:func:`_probability`).
+    decision : Mapping, optional
+        ``band_factor``, ``band_samples``, ``span`` of :func:`memstribo.uncertainty.decision.decision_analysis`.
 
     Returns
     -------
     dict
-        ``stiction_probability`` [-], ``stiction_probability_ci`` ([low, high], [-]),
-        ``stiction_count``, ``samples``, ``stiction_probability_text``,
-        ``stiction_probability_nominal`` and ``_nominal_ci`` / ``_nominal_text`` (the realisations at
-        nominal constants), ``margin_quantiles`` [N] (``p05``, ``p50``, ``p95``, ``median``) and
-        ``margin_quantiles_nominal``, ``startup_margin_quantiles`` (where the cycle has it),
+        ``stiction_probability`` [-], ``stiction_probability_ci`` ([low, high], [-]), ``stiction_count``,
+        ``samples``, ``stiction_probability_text``, ``stiction_probability_nominal`` and ``_nominal_ci`` /
+        ``_nominal_text`` (the realisations at nominal constants), ``margin_quantiles`` [N] (``p05``, ``p50``,
+        ``p95``, ``median``) and ``margin_quantiles_nominal``, ``startup_margin_quantiles`` (where the cycle has it),
         ``cof_quantiles`` and ``cof_split_quantiles`` [-], ``sensitivity`` ({constant: {first, first_ci,
         total, total_ci, cof_first, cof_first_ci, cof_total, cof_total_ci, critical_value, note}}),
         ``dominant``, ``critical_curve``, ``designer_sentence``, ``priors``, ``sampled_constants``,
         ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
         ``design_effect`` and ``effective_samples`` [-] (samples that share a contact solve: :func:`_probability`),
-        ``solve_seconds`` and ``rescale_seconds`` [s] (wall time of the solves and of the rescalings; the counts
-        and times include the Sobol' rows and the critical values), ``elapsed`` [s], ``warnings``.
+        ``solve_seconds`` and ``rescale_seconds`` [s] (the solves' and rescalings' wall time, the Sobol' rows and
+        critical values included), ``elapsed`` [s], ``warnings``; with ``sensitivity``: ``sobol_design`` and
+        :func:`memstribo.uncertainty.decision.decision_analysis`'s keys.
 
     Raises
     ------
     InputError
-        Bad sample counts, a fixed constant without a prior or named twice, a sample count above
-        the memory estimate, bad priors.
+        Bad sample counts, a fixed constant without a prior or named twice, a sample count above the memory
+        estimate, bad priors, ``confidence`` outside (0, 1), ``threshold`` outside [0, 1], bad ``decision`` options.
     """
     from memstribo.uncertainty.priors import priors_for
     from memstribo.uncertainty.sampling import _check_fixed
@@ -486,20 +441,21 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     sampled = {name: p for name, p in priors.items() if name not in fixed_names}
     if realisations is None:
         realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
-    _check_samples(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget, solve_sets)
+    decision = _check_inputs(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget,
+                             solve_sets, confidence, threshold, decision)
     check_sobol_samples(sobol_samples)
     client, own_client = _client_of(client)
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
         R = int(realisations)
         nominal = runner.summaries([(r, {}) for r in range(R)])
-        sets_count, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
+        sets_count, points, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
         runners = [runner]
-        if sensitivity and sampled:
-            runners.append(_sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps,
-                                        coating_name, wear, client, progress, sobol_samples or 32, sobol_steps,
-                                        critical, threshold, curve_points))
+        if sensitivity and sampled:  # the margin's (Sobol'), then the decision's (MODEL 7h)
+            runners.append(_analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence,
+                                    (roughness, steps, coating_name, wear, client, progress), sobol_samples or 32,
+                                    sobol_steps, critical, threshold, curve_points, decision))
         result["warnings"] = _warnings(result)
         _count(result, runners)
         result["elapsed"] = time.perf_counter() - start
@@ -507,6 +463,18 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     finally:
         if own_client:
             client.close()
+
+
+def _analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence, cycle, sobol_samples,
+             sobol_steps, critical, threshold, curve_points, decision):
+    """Sobol' indices of the margin (:func:`_sensitivity`), then the sensitivity of the decision
+    (:func:`memstribo.uncertainty.decision.decision_analysis`), into ``result``; returns the Sobol' rows' runner.
+    ``cycle``: (roughness, steps, coating_name, wear, client, progress)."""
+    sobol_runner, rows = _sensitivity(result, params, runner, sampled, R, seed, confidence, *cycle, sobol_samples,
+                                      sobol_steps, critical, threshold, curve_points)
+    decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence,
+                      threshold=threshold, critical=critical, **decision)
+    return sobol_runner
 
 
 def _count(result, runners):
@@ -517,18 +485,20 @@ def _count(result, runners):
 
 
 def _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget):
-    """(constant sets per realisation, summaries) of the design; ``samples="auto"`` doubles the sets until the
+    """(constant sets per realisation, points, summaries) of the design; ``samples="auto"`` doubles the sets until the
     interval's half-width is below :data:`TARGET_HALF_WIDTH` or the budget is spent."""
     if samples != "auto":
         sets_count = max(1, int(samples) // R)
-        return sets_count, runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
+        points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+        return sets_count, points, runner.summaries(points)
     sets_count = 16
     while True:
-        summaries = runner.summaries(_design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed))
+        points = _design(sampled, R, sets_count, solve_sets, runner.rescalable(), seed)
+        summaries = runner.summaries(points)
         p = _probability(summaries, confidence)
         if (0.5 * (p["ci"][1] - p["ci"][0]) < TARGET_HALF_WIDTH and not p["failed"]) \
                 or 2 * R * sets_count > int(budget):
-            return sets_count, summaries
+            return sets_count, points, summaries
         sets_count *= 2
 
 
@@ -596,7 +566,9 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
 def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear, client,
                  progress, sobol_samples, sobol_steps, critical, threshold, curve_points):
     """Sobol' indices, critical values and the curve of the dominant constant into ``result``; returns the
-    runner of the Sobol' rows (``runner`` itself unless ``sobol_steps`` differs), for its counts."""
+    runner of the Sobol' rows (``runner`` itself unless ``sobol_steps`` differs), for its counts, and the rows
+    (``{"points", "summaries", "blocks"}``, a block per base sample) where they ran at the study's steps, else None
+    (they then judge the verdict at other steps and do not join the samples of the decision's sensitivity)."""
     names = list(sampled)
     factors = names + [REALISATION_FACTOR]
     design = _saltelli_design(len(factors), int(sobol_samples), seed)
@@ -619,31 +591,26 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         m, c = indices["margin"][name], indices["cof"][name]
         sensitivity[name] = {"first": m["first"], "first_ci": m["first_ci"], "total": m["total"],
                              "total_ci": m["total_ci"], "cof_first": c["first"], "cof_first_ci": c["first_ci"],
-                             "cof_total": c["total"], "cof_total_ci": c["total_ci"], "critical_value": None,
-                             "note": ""}
+                             "cof_total": c["total"], "cof_total_ci": c["total_ci"],
+                             "clipped": bool(m["clipped"] or c["clipped"]), "critical_value": None, "note": ""}
     sensitivity[REALISATION_FACTOR]["note"] = "aleatory (part-to-part roughness): no critical value"
     ranked = sorted(factors, key=lambda n: -sensitivity[n]["total"])
     result["sensitivity"] = {name: sensitivity[name] for name in ranked}
     result["sobol_design"] = {"base_samples": int(sobol_samples), "rows": int(design.shape[0]),
                               "steps": sobol_steps or steps or int(params["mesh_steps"]),
                               "failed_rows": int(sum(failed))}
+    rows = None
+    if sobol_runner is runner:
+        rows = {"points": points, "summaries": summaries,
+                "blocks": [f"sobol {i // (len(factors) + 2)}" for i in range(len(points))]}
     constants_ranked = [n for n in ranked if n != REALISATION_FACTOR]
     if not constants_ranked:
-        return sobol_runner
+        return sobol_runner, rows
     dominant = constants_ranked[0]
     result["dominant"] = dominant
 
     def margin_function(name, key="stiction_margin"):
-        cache = {}
-        reals = R if name in runner.rescalable() else min(R, 8)
-
-        def median_margin(x):
-            if x not in cache:
-                out = runner.summaries([(r, {name: x}) for r in range(reals)])
-                values = [s[key] for s in out if not s.get("failed") and s.get(key) is not None]
-                cache[x] = float(np.median(values)) if values else float("nan")
-            return cache[x]
-        return median_margin, reals
+        return _margin_function(runner, name, R, key)
 
     for name in constants_ranked:
         entry = sensitivity[name]
@@ -670,7 +637,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
     values = sorted(set([float(v) for v in prior.ppf(np.linspace(0.0, 1.0, max(2, int(curve_points))))]
                         + ([sensitivity[dominant]["critical_value"]] if sensitivity[dominant]["critical_value"]
                            else [])))
-    reals = R if dominant in runner.rescalable() else min(R, 8)
+    reals = R if dominant in runner.rescalable() else min(R, SOLVED_REALISATIONS)
     curve = {"name": dominant, "values": values, "probability": [], "ci_low": [], "ci_high": [], "realisations": reals,
              "critical_value": sensitivity[dominant]["critical_value"], "nominal": nominal_value}
     for x in values:
@@ -679,7 +646,7 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         curve["ci_low"].append(p["ci"][0])
         curve["ci_high"].append(p["ci"][1])
     result["critical_curve"] = curve
-    return sobol_runner
+    return sobol_runner, rows
 
 
 def _coating_nominal(name, coating_name):
