@@ -344,9 +344,11 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
         raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
 
 
-def _check_inputs(samples, realisations, n_steps, budget, solve_sets, confidence, threshold, decision) -> dict:
+def _check_inputs(samples, realisations, n_steps, budget, solve_sets, confidence, threshold, decision,
+                  sobol_samples=None) -> dict:
     """Refuse bad inputs of :func:`uncertainty_study` before any cycle; returns the decision's options."""
     _check_samples(samples, realisations, n_steps, budget, solve_sets)
+    check_sobol_samples(sobol_samples)
     _check_levels(confidence, threshold)
     return decision_options(decision)
 
@@ -442,8 +444,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     if realisations is None:
         realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
     decision = _check_inputs(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget,
-                             solve_sets, confidence, threshold, decision)
-    check_sobol_samples(sobol_samples)
+                             solve_sets, confidence, threshold, decision, sobol_samples)
     client, own_client = _client_of(client)
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
