@@ -98,7 +98,8 @@ def test_the_cycle_carries_the_position_along_the_line_of_action_and_plots_over_
     cycle = memstribo.mesh_cycle(steps=31)
     position = cycle.dataset["position"]
     assert position.dims == ("step",) and position.attrs["units"] == "m"
-    assert list(cycle.dataset.indexes) == ["step"]  # step stays the index
+    # step stays the index along the cycle (row: the nanoblock rows of the per-row bond counts, MODEL 7f)
+    assert list(cycle.dataset.indexes) == ["step", "row"]
     assert (position.values == cycle.dataset["c"].values).all()
     figure = cycle.plot()
     assert len(figure.axes) == 3
