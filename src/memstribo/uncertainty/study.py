@@ -564,6 +564,17 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
     return result
 
 
+def _startup_output(summaries, failed) -> dict:
+    """``{"startup": the Sobol' rows' start-up margins [N]}`` where every row has one (a failed row filled with the
+    median, as the running margin's), else {}."""
+    if not all(f or s.get("startup_margin") is not None for s, f in zip(summaries, failed)):
+        return {}
+    startup = np.array([np.nan if f else s["startup_margin"] for s, f in zip(summaries, failed)])
+    if np.isnan(startup).any():
+        startup[np.isnan(startup)] = np.nanmedian(startup)
+    return {"startup": startup}
+
+
 def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness, steps, coating_name, wear, client,
                  progress, sobol_samples, sobol_steps, critical, threshold, curve_points):
     """Sobol' indices, critical values and the curve of the dominant constant into ``result``; returns the
@@ -586,7 +597,8 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
     if any(failed):  # counted, and filled with the median so that the estimators run (reported)
         margin[np.isnan(margin)] = np.nanmedian(margin)
         cof[np.isnan(cof)] = np.nanmedian(cof)
-    indices = sobol_indices(factors, {"margin": margin, "cof": cof}, int(sobol_samples), seed, confidence)
+    outputs = {"margin": margin, "cof": cof, **_startup_output(summaries, failed)}
+    indices = sobol_indices(factors, outputs, int(sobol_samples), seed, confidence)
     sensitivity = {}
     for name in factors:
         m, c = indices["margin"][name], indices["cof"][name]
@@ -594,6 +606,10 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
                              "total_ci": m["total_ci"], "cof_first": c["first"], "cof_first_ci": c["first_ci"],
                              "cof_total": c["total"], "cof_total_ci": c["total_ci"],
                              "clipped": bool(m["clipped"] or c["clipped"]), "critical_value": None, "note": ""}
+        if "startup" in indices:  # the start-up margin's indices (MODEL 7f, issue #35)
+            u = indices["startup"][name]
+            sensitivity[name].update(startup_first=u["first"], startup_first_ci=u["first_ci"],
+                                     startup_total=u["total"], startup_total_ci=u["total_ci"])
     sensitivity[REALISATION_FACTOR]["note"] = "aleatory (part-to-part roughness): no critical value"
     ranked = sorted(factors, key=lambda n: -sensitivity[n]["total"])
     result["sensitivity"] = {name: sensitivity[name] for name in ranked}
