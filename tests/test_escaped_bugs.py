@@ -124,7 +124,7 @@ def test_the_sobol_design_assigns_each_column_to_its_factor(params):
     assert len(names) == 3, sorted(priors)
     sampled = {n: priors[n] for n in names}
     realisations = 16
-    driver = names[1]  # the middle column: a shift or a reversal of the columns moves it
+    weights = {names[0]: 4.0, names[1]: 2.0, names[2]: 0.0}  # unequal: a shift, a swap or a reversal moves them
 
     class FakeRunner:
         def rescalable(self):
@@ -133,23 +133,26 @@ def test_the_sobol_design_assigns_each_column_to_its_factor(params):
         def summaries(self, points):
             out = []
             for realisation, constants in points:
-                u = float(sampled[driver].cdf(constants.get(driver, params[driver])))
-                margin = 4.0 * u + 0.5 * realisation / realisations - 2.0
-                out.append({"stiction_margin": margin, "cof_mean": 1.0 + u, "stiction": margin < 0})
+                u = {n: float(sampled[n].cdf(constants.get(n, params[n]))) for n in names}
+                margin = sum(weights[n] * u[n] for n in names) + 0.5 * realisation / realisations - 3.0
+                out.append({"stiction_margin": margin, "cof_mean": 1.0 + u[names[1]], "stiction": margin < 0})
             return out
 
     result = {"confidence": 0.95}
     _sensitivity(result, params, FakeRunner(), sampled, realisations, 0, 0.95, None, 11, None, 0.0, None, False,
                  256, None, False, 0.05, 3)
     s = result["sensitivity"]
-    # variance shares: 16/12 of the driver against (0.5)^2 (R^2 - 1) / (12 R^2) of the realisation
-    v_driver, v_real = 16.0 / 12.0, 0.25 * (realisations ** 2 - 1) / (12.0 * realisations ** 2)
-    assert s[driver]["total"] == pytest.approx(v_driver / (v_driver + v_real), abs=0.05)
-    assert s[driver]["cof_total"] == pytest.approx(1.0, abs=0.05)
-    assert s[REALISATION_FACTOR]["total"] == pytest.approx(v_real / (v_driver + v_real), abs=0.04)
-    for other in names:
-        if other != driver:
-            assert abs(s[other]["total"]) < 0.03 and abs(s[other]["cof_total"]) < 0.03, other
+    # variance shares: w^2 / 12 of each constant (uniform in its quantile), (0.5)^2 (R^2 - 1) / (12 R^2) of the
+    # realisation (a discrete uniform index)
+    variances = {n: weights[n] ** 2 / 12.0 for n in names}
+    variances[REALISATION_FACTOR] = 0.25 * (realisations ** 2 - 1) / (12.0 * realisations ** 2)
+    total = sum(variances.values())
+    for name, variance in variances.items():
+        assert s[name]["total"] == pytest.approx(variance / total, abs=0.04), name
+        assert s[name]["first"] == pytest.approx(variance / total, abs=0.06), name
+    assert s[names[1]]["cof_total"] == pytest.approx(1.0, abs=0.05)
+    assert abs(s[names[0]]["cof_total"]) < 0.03 and abs(s[names[2]]["cof_total"]) < 0.03
+    driver = names[0]
     assert result["dominant"] == driver
 
 
