@@ -30,7 +30,7 @@ def main(path: str | Path = ROOT / "data" / "afm" / "opdx-3.opdx") -> dict:
     except memstribo.InputError as exc:  # e.g. a smooth long-wavelength profile: no atomic block fits
         geometry = None
         print(f"  (no nanoblock geometry from this profile: {exc})")
-    bare = memstribo.mesh_cycle(params, profile).summary
+    bare = memstribo.mesh_cycle(params, profile).summary     # self-refining in steps and grid, as memstribo mesh
     coated = memstribo.mesh_cycle(params, profile, coating="OTS", wear=0.0).summary
     if geometry is not None:
         print(f"  nanoblock from the profile: w_at = {geometry.atomic_width * 1e9:.1f} nm, "
@@ -38,7 +38,7 @@ def main(path: str | Path = ROOT / "data" / "afm" / "opdx-3.opdx") -> dict:
     print("  (the meshing cycles below use the parameter set's nanoblocks and this profile's heights)")
     for label, summary in (("bare silicon", bare), ("OTS, intact", coated)):
         print(f"  {label:<13} COF {summary['cof_mean']:.3f}, max friction {summary['friction_force_max'] * 1e6:.1f} uN, "
-              f"F_t {summary['tangential_force'] * 1e6:.0f} uN, stiction: {'yes' if summary['stiction'] else 'no'}")
+              f"F_t {summary['tangential_force'] * 1e6:.0f} uN, verdict: {summary['verdict']}")  # running and start-up
     return {"bare": bare, "coated": coated, "Rq": stats.Rq}
 
 

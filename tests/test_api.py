@@ -121,7 +121,8 @@ def test_mesh_cycle_defaults_are_the_command_lines(cli):
     from memstribo.cli.main import build_parser
 
     parser = build_parser()
-    mesh = next(a for a in parser._subparsers._group_actions if isinstance(a, argparse._SubParsersAction)).choices["mesh"]
+    commands = next(a for a in parser._subparsers._group_actions if isinstance(a, argparse._SubParsersAction))
+    mesh = commands.choices["mesh"]
     cli_refine = next(a for a in mesh._actions if a.dest == "refine").default
     assert inspect.signature(memstribo.mesh_cycle).parameters["refine"].default is cli_refine is True
     with warnings.catch_warnings(record=True) as caught:

@@ -298,7 +298,8 @@ def test_fracture_probability_is_weibulls_weakest_link_by_hand(params, default_r
     """README: "a 0.7 % probability that a tooth breaks on the first load": 1 - exp(-sum over the z1 + z2 teeth of
     (A_eff / A_0) (sigma / sigma_theta)^m), with A_eff integrated here along the loaded side (exponent m)."""
     ds, summary = default_run
-    m, sigma_theta, a_0 = params["weibull_modulus"], params["strength_characteristic"], params["strength_reference_area"]
+    m, sigma_theta = params["weibull_modulus"], params["strength_characteristic"]
+    a_0 = params["strength_reference_area"]
     risk = 0.0
     for gear, teeth in ((False, params["teeth_pinion"]), (True, params["teeth_gear"])):
         sigma, area = _hand_root(params, ds, gear)

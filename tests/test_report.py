@@ -123,8 +123,8 @@ window.addEventListener('load', function () { setTimeout(function () {
   var imgs = Array.prototype.slice.call(document.images), d = document.documentElement;
   document.body.setAttribute('data-probe', JSON.stringify({scrollWidth: d.scrollWidth, innerWidth: window.innerWidth,
     height: d.scrollHeight, images: imgs.length,
-    verdicts: (function () { var e = document.getElementById('verdicts');
-      return e ? {top: e.getBoundingClientRect().top, bottom: e.getBoundingClientRect().bottom, text: e.innerText} : null; })(),
+    verdicts: (function () { var e = document.getElementById('verdicts'), r = e && e.getBoundingClientRect();
+      return e ? {top: r.top, bottom: r.bottom, text: e.innerText} : null; })(),
     broken: imgs.filter(function (i) { return !(i.complete && i.naturalWidth > 0); }).length,
     errors: window.__errors}));
 }, 100); });
@@ -317,7 +317,8 @@ def test_the_verdict_box_carries_the_three_verdicts_with_their_intervals(tmp_pat
     verdict = {"tangential_force": 2.82e-3, "bare_resisting_force_max": 1e-3, "bare_stiction_margin": 1.8e-3,
                "bare_stiction": False, "bare_cof_mean": 0.4, "bare_realisations": 16,
                "bare_stiction_probability": 0.0, "bare_stiction_probability_text": "0 of 16 (95 % CI 0–19 %)",
-               "bare_stiction_margin_p05": 1e-3, "bare_stiction_margin_p95": 2e-3, "bare_stiction_margin_median": 1.5e-3,
+               "bare_stiction_margin_p05": 1e-3, "bare_stiction_margin_p95": 2e-3,
+               "bare_stiction_margin_median": 1.5e-3,
                "bare_cof_mean_p05": 0.4, "bare_cof_mean_p95": 0.5, "bare_startup_margin": -1e-4,
                "bare_startup_stiction": True, "bare_startup_stiction_probability": 0.5625,
                "bare_startup_stiction_probability_text": "9 of 16 (95 % CI 33–77 %)"}

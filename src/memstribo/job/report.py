@@ -251,7 +251,8 @@ def _headline_html(result) -> str:
     v = result.verdict
     lines = []
     if "bare_stiction_probability" in v:
-        k, n = _count(v.get("bare_stiction_probability_text"), v["bare_stiction_probability"], v.get("bare_realisations"))
+        k, n = _count(v.get("bare_stiction_probability_text"), v["bare_stiction_probability"],
+                      v.get("bare_realisations"))
         text = v.get("bare_stiction_probability_text") or f"{v['bare_stiction_probability'] * 100:.0f} %"
         lines.append(f"running, over the roughness: <span class='{_probability_class(k, n)}'>stiction in "
                      f"{_e(text)}</span>")
