@@ -19,7 +19,9 @@ from memstribo.surfaces.roughness import profile_statistics
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def main(path: str | Path = ROOT / "data" / "afm" / "opdx-3.opdx") -> dict:
+def main(path: str | Path = ROOT / "data" / "afm" / "opdx-3.opdx", refine: bool = True) -> dict:
+    """The profile's statistics and nanoblocks, and a bare and a coated meshing cycle on it (``refine``: the
+    cycles refine themselves in steps and grid, the API's default as memstribo mesh's; False: one cycle each)."""
     params = memstribo.parameter_set(mesh_steps=120)
     profile = memstribo.read_surface(path)                    # Profile (x, z in m) with provenance
     stats = profile_statistics(profile)                  # ISO 4287 parameters (levelled)
@@ -30,15 +32,15 @@ def main(path: str | Path = ROOT / "data" / "afm" / "opdx-3.opdx") -> dict:
     except memstribo.InputError as exc:  # e.g. a smooth long-wavelength profile: no atomic block fits
         geometry = None
         print(f"  (no nanoblock geometry from this profile: {exc})")
-    bare = memstribo.mesh_cycle(params, profile).summary
-    coated = memstribo.mesh_cycle(params, profile, coating="OTS", wear=0.0).summary
+    bare = memstribo.mesh_cycle(params, profile, refine=refine).summary  # self-refining, as memstribo mesh
+    coated = memstribo.mesh_cycle(params, profile, coating="OTS", wear=0.0, refine=refine).summary
     if geometry is not None:
         print(f"  nanoblock from the profile: w_at = {geometry.atomic_width * 1e9:.1f} nm, "
               f"H_at = {geometry.atomic_height * 1e9:.2f} nm, w_adh = {geometry.adhesive_width * 1e9:.1f} nm")
     print("  (the meshing cycles below use the parameter set's nanoblocks and this profile's heights)")
     for label, summary in (("bare silicon", bare), ("OTS, intact", coated)):
         print(f"  {label:<13} COF {summary['cof_mean']:.3f}, max friction {summary['friction_force_max'] * 1e6:.1f} uN, "
-              f"F_t {summary['tangential_force'] * 1e6:.0f} uN, stiction: {'yes' if summary['stiction'] else 'no'}")
+              f"F_t {summary['tangential_force'] * 1e6:.0f} uN, verdict: {summary['verdict']}")  # running and start-up
     return {"bare": bare, "coated": coated, "Rq": stats.Rq}
 
 

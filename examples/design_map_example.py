@@ -1,12 +1,19 @@
 """Worked example of a design map: drive torque x face width of the thesis pair, bare and OTS.
 
+Needs the ``parallel`` extra (Dask): ``pip install "memstribo[parallel]"`` (docs/install.md); without it the
+map stops at once and says so.
+
 Writes the map to a working folder (a temporary one) and the figures ``design_map_stiction.png``,
 ``design_map_efficiency.png`` (and SVG) into ``OUT/figures`` (default OUT: ``examples/output/design_map_example``;
 ``--out docs`` makes the copies that docs/design-maps.md shows)::
 
-    python examples/design_map_example.py            # the documented map (about 20 s on 2 cores)
+    python examples/design_map_example.py            # the documented map: 6 x 6 x 2 points, 4 realisations each
     python examples/design_map_example.py --out docs # the same, into docs/figures/
     python examples/design_map_example.py --tiny --out /tmp/x   # 2 x 2 x 2 points, seconds
+
+The documented map takes minutes, not seconds: 18 min wall on the shared 2-core machine at a load average of 6
+(2026-11-28: 72 points, 1068 s for the map, 16 min of CPU over the two workers), so about 8 min on two free cores
+(docs/design-maps.md).
 """
 
 from __future__ import annotations

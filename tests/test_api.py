@@ -43,7 +43,7 @@ def test_read_surface_takes_files_objects_and_surface_topography(afm_dir):
 
 
 def test_mesh_cycle_and_ensemble_give_labelled_results():
-    cycle = memstribo.mesh_cycle(steps=21, realisations=3)
+    cycle = memstribo.mesh_cycle(steps=21, realisations=3, refine=False)
     assert cycle.summary["stiction_margin"] == cycle.summary["tangential_force"] - cycle.summary["resisting_force_max"]
     assert cycle.ensemble["realisations"] == 3
     data = cycle.to_xarray()
@@ -95,13 +95,43 @@ def test_the_cycle_carries_the_position_along_the_line_of_action_and_plots_over_
     matplotlib.use("Agg")
     import memstribo
 
-    cycle = memstribo.mesh_cycle(steps=31)
+    cycle = memstribo.mesh_cycle(steps=31, refine=False)
     position = cycle.dataset["position"]
-    assert position.dims == ("step",) and position.attrs["units"] == "m"
-    # step stays the index along the cycle (row: the nanoblock rows of the per-row bond counts, MODEL 7f)
-    assert list(cycle.dataset.indexes) == ["step", "row"]
+    assert position.dims == ("position",) and position.attrs["units"] == "m"
+    # position is the dimension (issue 41), step a coordinate along it
+    assert "position" in cycle.dataset.indexes and "step" not in cycle.dataset.indexes
+    assert cycle.dataset["step"].dims == ("position",) and cycle.dataset["friction_force"].dims == ("position",)
     assert (position.values == cycle.dataset["c"].values).all()
+    # xarray's own plot draws over the position, not the step number
+    lines = cycle.dataset.friction_force.plot()
+    assert lines[0].axes.get_xlabel().startswith("position")
+    assert (lines[0].get_xdata() == position.values).all()
     figure = cycle.plot()
     assert len(figure.axes) == 3
     assert figure.axes[2].get_xlabel().startswith("position along the line of action")
     assert figure.axes[1].get_lines()[1].get_ydata()[0] == cycle.dataset["tangential_force"].values[0] * 1e6
+
+
+def test_mesh_cycle_defaults_are_the_command_lines(cli):
+    """Issue 41: the API refines by default as `memstribo mesh` does, and warns when asked for one short cycle."""
+    import argparse
+    import inspect
+    import warnings
+
+    from memstribo.cli.main import build_parser
+
+    parser = build_parser()
+    commands = next(a for a in parser._subparsers._group_actions if isinstance(a, argparse._SubParsersAction))
+    mesh = commands.choices["mesh"]
+    cli_refine = next(a for a in mesh._actions if a.dest == "refine").default
+    assert inspect.signature(memstribo.mesh_cycle).parameters["refine"].default is cli_refine is True
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        cycle = memstribo.mesh_cycle(steps=31, refine=False)
+    assert any("refine=False with steps=31" in str(w.message) for w in caught)
+    assert any("refine=False with steps=31" in w for w in cycle.summary["warnings"])
+    # the one-word verdict beside the running verdict
+    assert cycle.summary["verdict"] in ("no stiction", "running stiction", "start-up stiction", "undetermined")
+    assert cycle.summary["stiction"] == (cycle.summary["verdict"] == "running stiction")
+    doc = memstribo.mesh_cycle.__doc__ + memstribo.MeshCycle.__doc__
+    assert 'summary["verdict"]' in doc and "start-up stiction" in doc

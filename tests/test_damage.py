@@ -132,8 +132,9 @@ def table_params(params):
 def test_table_5_3_m1(table_params):
     result = nanoblock_damage(TABLE_5_1_LOADS, table_params.updated({"damage_exponent": 1}))
     for position, (value, location) in TABLE_5_3.items():
-        # mu = 0.1 (inferred, docs/damage.md): 3-5 % above the printed values, location within 0.15 nm
-        assert result.maximum[position] == pytest.approx(value, rel=0.06)
+        # mu = 0.1 (inferred, docs/damage.md): 3-5 % above the printed values (three digits: a rounding of 0.2 %,
+        # which the model does not meet), location within 0.15 nm
+        assert 1.02 < result.maximum[position] / value < 1.055, position
         assert result.location[position] == pytest.approx(location, abs=0.15e-9)
     # life of the corner asperity 9 % shorter than the central one (thesis); ours 9.5 %
     assert 1 - result.life_ratio_corner_to_central == pytest.approx(0.09, abs=0.01)
@@ -142,9 +143,12 @@ def test_table_5_3_m1(table_params):
 def test_table_5_4_m2(table_params):
     result = nanoblock_damage(TABLE_5_1_LOADS, table_params.updated({"damage_exponent": 2}))
     for position, (value, location) in TABLE_5_4.items():
-        # 19-23 % above the thesis; the maximum sits 0.8 nm further out than printed (docs/damage.md)
-        assert result.maximum[position] == pytest.approx(value, rel=0.25)
-        assert result.location[position] == pytest.approx(location, abs=1.0e-9)
+        # Table 5-4 prints seven digits (0.1706082e20: a rounding of 3e-7 relative), which the model does not meet:
+        # with the inferred mu = 0.1 its maxima come out 19-23 % above the thesis and 0.76-0.79 nm further out
+        # (docs/damage.md, section 4: the m = 2 excess says the thesis's peaks spread their stress amplitudes
+        # differently). The band pins that documented excess instead of hiding it under rel=0.25.
+        assert 1.18 < result.maximum[position] / value < 1.24, position
+        assert 0.70e-9 < location - result.location[position] < 0.85e-9, position
     # corner life 18.65 % shorter (thesis); ours 19.7 %
     assert 1 - result.life_ratio_corner_to_central == pytest.approx(0.1865, abs=0.015)
 
@@ -232,7 +236,7 @@ def test_cli_damage_table_loads(cli):
     assert out["life_ratio_corner_to_central"] == pytest.approx(0.91, abs=0.01)
     assert "cycles_to_failure" not in out
     m2 = cli.json("damage", "--loads", "table5-1", "--set", "damage_exponent=2")
-    assert m2["omega_over_c1_max"]["corner"] == pytest.approx(0.1706e20, rel=0.25)
+    assert 1.18 < m2["omega_over_c1_max"]["corner"] / 0.1706082e20 < 1.24  # Table 5-4, 19-23 % high (test_table_5_4_m2)
 
 
 def test_cli_damage_units_in_loads(cli):

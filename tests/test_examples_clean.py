@@ -40,3 +40,25 @@ def test_no_example_writes_into_docs_by_default():
     for path in sorted((REPO / "examples").glob("*.py")):
         text = path.read_text(encoding="utf-8")
         assert '/ "docs" / "figures"' not in text and 'ROOT / "docs"' not in text, path.name
+
+
+@pytest.mark.skipif(shutil.which("git") is None or not (REPO / ".git").exists(), reason="needs a git checkout")
+def test_the_toml_examples_write_into_ignored_folders():
+    """Issue 41: the command in each TOML example's first line writes into a folder git ignores (its --out, else the
+    command's default folder), so `git status` stays clean after it (fast: no run, `git check-ignore`)."""
+    import re
+    import shlex
+
+    for path in sorted((REPO / "examples").glob("*.toml")):
+        first = path.read_text(encoding="utf-8").splitlines()[0]
+        assert first.startswith("# memstribo "), (path.name, first)
+        words = shlex.split(first[2:])
+        if "--out" in words:
+            out = words[words.index("--out") + 1]
+        else:
+            assert words[1] == "study", (path.name, words)
+            out = f"memstribo-study-{path.stem}"  # memstribo study's default folder
+        assert not re.match(r"(/|\.\.)", out), out  # inside the checkout
+        probe = f"{out}/x.nc"
+        ignored = subprocess.run(["git", "check-ignore", "-q", probe], cwd=REPO)
+        assert ignored.returncode == 0, f"{path.name}: {out}/ is not ignored by git"

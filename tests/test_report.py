@@ -123,6 +123,8 @@ window.addEventListener('load', function () { setTimeout(function () {
   var imgs = Array.prototype.slice.call(document.images), d = document.documentElement;
   document.body.setAttribute('data-probe', JSON.stringify({scrollWidth: d.scrollWidth, innerWidth: window.innerWidth,
     height: d.scrollHeight, images: imgs.length,
+    verdicts: (function () { var e = document.getElementById('verdicts'), r = e && e.getBoundingClientRect();
+      return e ? {top: r.top, bottom: r.bottom, text: e.innerText} : null; })(),
     broken: imgs.filter(function (i) { return !(i.complete && i.naturalWidth > 0); }).length,
     errors: window.__errors}));
 }, 100); });
@@ -209,6 +211,24 @@ def test_report_reads_at_desktop_and_phone_width(run_report, tmp_path, width):
 
 
 @pytest.mark.browser
+def test_the_three_verdicts_are_on_the_first_screen_of_a_phone(run_report, tmp_path):
+    """Issue 41: at 390 x 844 CSS px (a phone) the verdict box at the top holds the running verdict over the
+    roughness, the start-up verdict and P(stiction) over the priors, each as "k of n (95 % CI ...)", above the fold."""
+    result, page = run_report
+    probe = browser_probe(page, 390, tmp_path, height=844)
+    box = probe["verdicts"]
+    assert box is not None, probe
+    assert 0 <= box["top"] < box["bottom"] <= 844, box
+    text = " ".join(box["text"].split())
+    for label in ("Running, over the roughness: stiction in", "Start-up, over the roughness: stiction in",
+                  "Over the priors of the unmeasured constants: stiction in"):
+        assert re.search(re.escape(label) + r" \d+ of \d+ \(95 % CI \d+(\.\d+)?–\d+(\.\d+)? %\)", text), (label, text)
+    # the counts are the run's: the ensemble's realisations and the uncertainty stage's samples
+    assert f"of {result.options.realisations} (95 % CI" in text
+    assert f"of {result.summaries['uncertainty']['samples']} (95 % CI" in text
+
+
+@pytest.mark.browser
 def test_browser_probe_sees_sideways_scroll_errors_and_broken_images(tmp_path):
     """The probe is not a formality: a too-wide block, a script error and a broken image are each seen."""
     page = tmp_path / "bad.html"
@@ -289,3 +309,35 @@ def test_uncertainty_hook_shows_under_the_verdict_when_the_run_has_one(tmp_path,
     assert verdict < uncertainty < figures
     assert "-1.2 to -0.8 mN &lt;90 %&gt;" in text and "hamaker_constant &mdash; 60 % of the variance" in text
     assert "roughness_rq &amp; seed" in text and "COF 0.7 to 0.9" in text
+
+
+def test_the_verdict_box_carries_the_three_verdicts_with_their_intervals(tmp_path, params):
+    """Issue 41: running (over the roughness), start-up and over the priors, each "k of n (95 % CI ...)", in one box
+    before the verdict's details; coloured by the share that sticks."""
+    verdict = {"tangential_force": 2.82e-3, "bare_resisting_force_max": 1e-3, "bare_stiction_margin": 1.8e-3,
+               "bare_stiction": False, "bare_cof_mean": 0.4, "bare_realisations": 16,
+               "bare_stiction_probability": 0.0, "bare_stiction_probability_text": "0 of 16 (95 % CI 0–19 %)",
+               "bare_stiction_margin_p05": 1e-3, "bare_stiction_margin_p95": 2e-3,
+               "bare_stiction_margin_median": 1.5e-3,
+               "bare_cof_mean_p05": 0.4, "bare_cof_mean_p95": 0.5, "bare_startup_margin": -1e-4,
+               "bare_startup_stiction": True, "bare_startup_stiction_probability": 0.5625,
+               "bare_startup_stiction_probability_text": "9 of 16 (95 % CI 33–77 %)"}
+    result = make_result(tmp_path, params, verdict=verdict)
+    result.summaries["uncertainty"] = {"summary": "s", "stiction_count": 3, "samples": 64,
+                                       "stiction_probability": 3 / 64, "stiction_probability_ci": [0.016, 0.129]}
+    text = render_report(result)
+    box = text[text.index("id='verdicts'"):text.index("</div>", text.index("id='verdicts'"))]
+    assert text.index("id='verdicts'") < text.index("class='verdict'")
+    assert "Running, over the roughness: <span class='good'>stiction in 0 of 16 (95 % CI 0–19 %)</span>" in box
+    assert "Start-up, over the roughness: <span class='bad'>stiction in 9 of 16 (95 % CI 33–77 %)</span>" in box
+    assert re.search(r"Over the priors of the unmeasured constants: <span class='warn'>stiction in 3 of 64 "
+                     r"\(95 % CI 2–13 %\)</span>", box), box
+    # without an uncertainty stage or an ensemble: the single realisation's verdicts, no invented interval
+    single = make_result(tmp_path, params, verdict={"tangential_force": 2.82e-3, "bare_resisting_force_max": 4e-3,
+                                                    "bare_stiction_margin": -1e-3, "bare_stiction": True,
+                                                    "bare_cof_mean": 0.8, "bare_startup_margin": -2e-3,
+                                                    "bare_startup_stiction": True})
+    text = render_report(single)
+    assert "Running, one roughness realisation: <span class='bad'>STICTION</span>" in text
+    assert "Start-up, one roughness realisation: <span class='bad'>STICTION</span>" in text
+    assert "over the priors" not in text.lower().split("id='verdicts'")[1].split("</div>")[0]

@@ -91,7 +91,8 @@ def test_the_bridges_add_to_f_adh_only_their_work_beyond_the_vdw_work():
     dry = simulate_mesh(air.updated({"relative_humidity": 0.0}), steps=21)
     humid = simulate_mesh(air.updated({"relative_humidity": 0.5}), steps=21)
     vdw_part = float((humid["adhesion_force"] - humid["capillary_adhesion_force"]).mean())
-    assert vdw_part == pytest.approx(float(dry["adhesion_force"].mean()), rel=0.3)
+    # (the menisci's traction in the same solve moves the contact a little: 5.3 % at 21 steps)
+    assert vdw_part == pytest.approx(float(dry["adhesion_force"].mean()), rel=0.07)
     # in vacuum the dataset has neither (and F_adh is the vdW part alone)
     vacuum = simulate_mesh(get_parameter_values(), steps=11)
     assert "capillary_adhesion_force" not in vacuum and "capillary_pull_off" not in vacuum

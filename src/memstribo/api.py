@@ -12,7 +12,7 @@ Example
 >>> import memstribo
 >>> params = memstribo.parameter_set(normal_load="50 uN", load_case="thesis")  # doctest: +SKIP
 >>> cycle = memstribo.mesh_cycle(params, "data/afm/opdx-3.opdx", steps=121)     # doctest: +SKIP
->>> cycle.summary["cof_mean"], cycle.summary["stiction"]                       # doctest: +SKIP
+>>> cycle.summary["cof_mean"], cycle.summary["verdict"]                        # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -165,20 +165,26 @@ class MeshCycle:
     Attributes
     ----------
     dataset : xarray.Dataset
-        The first realisation over the steps (``memstribo.simulations.mesh.simulate_mesh``).
+        The first realisation over the path of contact (``memstribo.simulations.mesh.simulate_mesh``), its
+        dimension ``position``: the position of the contact point along the line of action [m] (0: the pitch
+        point), so that ``cycle.dataset.friction_force.plot()`` draws over it; the step number stays a
+        coordinate (``step``) along it.
     summary : dict
-        Its summary (the keys of ``memstribo mesh --json``).
+        Its summary (the keys of ``memstribo mesh --json``). ``summary["verdict"]`` is the verdict in one word:
+        ``"no stiction"``, ``"running stiction"``, ``"start-up stiction"`` or ``"undetermined"``;
+        ``summary["stiction"]`` is the running verdict alone (False for a pair that does not start:
+        ``summary["startup_stiction"]`` says that one).
     ensemble : dict or None
         The verdict over the realisations (``memstribo.simulations.mesh.simulate_ensemble``), without the
         per-realisation summaries, or None for one realisation.
 
-    The dataset is indexed by ``step``; its coordinate ``position`` is the position of the contact point along
-    the line of action [m] (0: the pitch point), the x-axis of :meth:`plot`.
+    The dataset's dimension is ``position``, the position of the contact point along the line of action [m]
+    (0: the pitch point), the x-axis of :meth:`plot` and of xarray's own ``.plot()``.
 
     Examples
     --------
     >>> import memstribo
-    >>> cycle = memstribo.mesh_cycle(steps=31)
+    >>> cycle = memstribo.mesh_cycle(steps=31, refine=False)  # one cycle as asked (the default refines)
     >>> figure = cycle.plot()  # friction, R(c) against F_t, the COF split over the position
     >>> [ax.get_ylabel() for ax in figure.axes]
     ['force [uN]', 'force [uN]', 'COF [-]']
@@ -249,7 +255,7 @@ class MeshCycle:
 
 
 def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int | None = None, coating=None,
-               wear: float | None = None, client=None, progress: bool = False, refine: bool = False) -> MeshCycle:
+               wear: float | None = None, client=None, progress: bool = False, refine: bool = True) -> MeshCycle:
     """Friction, adhesion, COF and the stiction verdict over one meshing cycle (thesis 4.6-4.9, MODEL 7b).
 
     Parameters
@@ -273,23 +279,30 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     progress : bool
         Show a progress bar on stderr.
     refine : bool
-        The self-refining cycle of ``memstribo mesh`` (MODEL 7d): refined in steps, then in grid, until the
-        margin and the mean COF hold (:func:`memstribo.simulations.mesh.convergence.refined_cycle`); the
-        summary then has ``converged`` and the changes, and the realisations run at the settings reached.
+        The self-refining cycle of ``memstribo mesh`` (MODEL 7d), on by default as in the command line: refined in
+        steps, then in grid, until the margin and the mean COF hold
+        (:func:`memstribo.simulations.mesh.convergence.refined_cycle`); the summary then has ``converged`` and the
+        changes (and a warning where the caps stop it first), and the realisations run at the settings reached.
+        ``refine=False`` (``memstribo mesh --no-refine``): one cycle as asked, its convergence unchecked; with
+        fewer steps than the parameter ``mesh_steps`` it warns (``UserWarning`` and the summary's ``warnings``).
 
     Returns
     -------
     MeshCycle
-        ``.dataset`` over ``step`` (coordinate ``position`` [m] along the line of action): forces [N],
+        ``.dataset`` over ``position`` [m] along the line of action (``step`` a coordinate along it): forces [N],
         pressures [Pa], energies [J], COF [-], each variable with ``units``; ``.summary`` (the keys of
-        ``memstribo mesh --json``, SI); ``.ensemble`` (stiction probability, quantiles) for realisations > 1.
+        ``memstribo mesh --json``, SI: ``summary["verdict"]`` the verdict in one word, running and start-up,
+        ``summary["stiction"]`` the running one alone); ``.ensemble`` (stiction probability, quantiles) for
+        realisations > 1.
 
     Examples
     --------
     >>> import memstribo
-    >>> cycle = memstribo.mesh_cycle(steps=31)
-    >>> cycle.dataset["position"].attrs["units"], cycle.dataset.sizes["step"]
+    >>> cycle = memstribo.mesh_cycle(steps=31, refine=False)  # quick: one cycle of 31 steps, unchecked
+    >>> cycle.dataset["position"].attrs["units"], cycle.dataset.sizes["position"]
     ('m', 31)
+    >>> cycle.summary["verdict"], cycle.summary["stiction"], cycle.summary["startup_stiction"]
+    ('no stiction', False, False)
     >>> sorted(k for k in cycle.summary if k.startswith("cof_m"))
     ['cof_max', 'cof_mean', 'cof_mean_uncapped']
     """
@@ -313,12 +326,21 @@ def mesh_cycle(params=None, surface=None, *, realisations: int = 1, steps: int |
     else:
         dataset = simulate_mesh(params, roughness, steps=steps, coating=coating_object, wear=wear, progress=progress)
         summary = summarize(dataset)
+        if steps is not None and steps < int(params["mesh_steps"]):
+            import warnings
+
+            text = (f"refine=False with steps={steps}, fewer than mesh_steps = {int(params['mesh_steps'])}: the "
+                    "margin's convergence in steps and grid is not checked (the default refine=True checks it, as "
+                    "memstribo mesh does)")
+            summary["warnings"] = [*summary.get("warnings", []), text]
+            warnings.warn(text, UserWarning, stacklevel=2)
     ensemble = None
     if realisations > 1:
         ensemble = simulate_ensemble(params, roughness, realisations=realisations, steps=steps,
                                      coating=coating_object, wear=wear, client=client, progress=progress)
         ensemble = {k: v for k, v in ensemble.items() if k != "summaries"}
-    return MeshCycle(dataset, summary, ensemble)
+    # position along the line of action as the dimension, so that xarray's own plots draw over it (issue 41)
+    return MeshCycle(dataset.swap_dims({"step": "position"}), summary, ensemble)
 
 
 def sweep(params, parameter: str, values, surface=None, *, steps: int | None = None, coating=None,

@@ -629,6 +629,8 @@ def engineering_scale(values, unit: str) -> tuple[float, str]:
     largest magnitude; another unit (``Pa^2``) gets a power of ten written into the label (``1e18 Pa^2``).
 
     >>> engineering_scale([5.6e-10, 7.6e-10], "J")
+    (1e-12, 'pJ')
+    >>> engineering_scale([5.6e-9, 7.6e-9], "J")
     (1e-09, 'nJ')
     """
     finite = np.abs(np.asarray(values, dtype=float))

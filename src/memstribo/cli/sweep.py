@@ -1,12 +1,13 @@
-"""``memstribo sweep load|area``: COF and dissipated energy versus load or nominal area (thesis 4.9.3, 4.9.4)."""
+"""``memstribo sweep load|torque|area|humidity``: COF, dissipated energy and the verdict versus load, drive torque,
+nominal area (thesis 4.9.3, 4.9.4) or relative humidity."""
 
 from __future__ import annotations
 
 from memstribo.cli.common import CommandResult
 
 NAME = "sweep"
-HELP = ("meshing cycles over loads (sweep load), drive torques (sweep torque) or nominal contact areas (sweep area), "
-        "thesis 4.9.3-4.9.4")
+HELP = ("meshing cycles over loads (sweep load), drive torques (sweep torque), nominal contact areas (sweep area; "
+        "thesis 4.9.3-4.9.4) or relative humidities (sweep humidity)")
 ORDER = 55
 
 _DEFAULTS = {"load": "25uN:300uN:25uN", "torque": "0.2e-7:2e-7:0.2e-7", "area": "1:10:1", "humidity": "0:0.95:0.05"}

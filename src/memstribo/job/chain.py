@@ -21,7 +21,7 @@ A stage whose inputs failed is skipped and says why; a stage never pretends. Eac
 figure functions (``plot_*``) and :func:`cycle_summary` work on their own too::
 
     >>> from memstribo.job.chain import RunChain; from memstribo.job.options import RunOptions  # doctest: +SKIP
-    >>> result = RunChain(params, "results", RunOptions(steps=40)).run()
+    >>> result = RunChain(params, "results", RunOptions(steps=40)).run()  # doctest: +SKIP
 """
 
 from __future__ import annotations

@@ -1,6 +1,7 @@
 """report.html: one self-contained page of a ``memstribo run`` that a tribologist reads in a minute.
 
-The verdict comes first (one headline sentence, then stiction of the bare and of the coated pair,
+The verdict comes first (a box with the bare pair's three verdicts, running, start-up and over the priors, each as
+"k of n (95 % CI ...)", then stiction of the bare and of the coated pair,
 margin, coating life), then the verdict's uncertainty and what it hangs on when the run has it
 (:func:`_uncertainty_html`, fed by ``summaries["uncertainty"]``), then the figures the verdict is read
 from (the others folded), the inputs with their provenance, and, folded (``<details>``), the
@@ -48,6 +49,8 @@ td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
 .wide table{font-size:.8rem;min-width:100%}
 .verdict{border:2px solid #555;border-radius:6px;padding:.6rem 1rem;background:#fafafa}
 .verdict ul{padding-left:1.2rem;margin:.3rem 0}.headline{font-size:1.1rem;margin:.2rem 0 .5rem}
+.verdicts{border:2px solid #333;border-radius:6px;padding:.4rem .8rem;margin:.4rem 0 .8rem}
+.verdicts ul{padding-left:1.2rem;margin:.2rem 0 .4rem}.verdicts .headline{margin:.2rem 0}
 .bad{color:#a00;font-weight:bold}.good{color:#060;font-weight:bold}.warn{color:#a60;font-weight:bold}
 .note{color:#555;font-size:.85rem}
 figure{margin:1.2rem 0}img{max-width:100%;height:auto}figure img{border:1px solid #ddd;display:block}
@@ -212,29 +215,83 @@ def _verdict_html(result) -> str:
     return "<div class='verdict'><ul>" + "".join(items) + "</ul></div>"
 
 
+def _probability_class(k, n) -> str:
+    return "bad" if n and k / n >= 0.5 else ("warn" if k else "good")
+
+
+def _priors_probability(data) -> tuple[str, int, int] | None:
+    """(text "k of n (95 % CI ...)", k, n) of P(stiction) over the priors from the uncertainty stage's summary."""
+    if not isinstance(data, dict) or data.get("stiction_count") is None or not data.get("samples"):
+        return None
+    k, n = int(data["stiction_count"]), int(data["samples"])
+    text = data.get("stiction_probability_text")
+    if not text:
+        from memstribo.uncertainty.intervals import format_probability
+
+        ci = data.get("stiction_probability_ci")
+        text = format_probability(k, n, interval=tuple(ci) if ci else None)
+    return text, k, n
+
+
+def _count(text, fallback_probability, fallback_n):
+    """(k, n) from a "k of n (...)" text, else from a probability and a count."""
+    import re
+
+    match = re.match(r"\s*(\d+) of (\d+)", str(text or ""))
+    if match:
+        return int(match.group(1)), int(match.group(2))
+    n = int(fallback_n or 0)
+    return round(float(fallback_probability or 0.0) * n), n
+
+
 def _headline_html(result) -> str:
-    """One sentence above the verdict's details: will the bare teeth stick, and the coated ones."""
+    """The verdict box at the top of the page: the three verdicts of the bare pair, each as "k of n (95 % CI ...)"
+    where the run has it (running, over the roughness realisations; start-up; over the priors of the unmeasured
+    constants, from the uncertainty stage), then the coated pair and the coating life (issue 41)."""
     v = result.verdict
-    parts = []
+    lines = []
     if "bare_stiction_probability" in v:
-        p = v["bare_stiction_probability"]
-        cls = "bad" if p >= 0.5 else ("warn" if p > 0 else "good")
-        parts.append(f"bare silicon: <span class='{cls}'>stiction in {p * 100:.0f} % of the roughness "
-                     "realisations</span>")
+        k, n = _count(v.get("bare_stiction_probability_text"), v["bare_stiction_probability"],
+                      v.get("bare_realisations"))
+        text = v.get("bare_stiction_probability_text") or f"{v['bare_stiction_probability'] * 100:.0f} %"
+        lines.append(f"running, over the roughness: <span class='{_probability_class(k, n)}'>stiction in "
+                     f"{_e(text)}</span>")
     elif "bare_stiction" in v:
         cls = "bad" if v["bare_stiction"] else "good"
-        parts.append(f"bare silicon: <span class='{cls}'>{'STICTION' if v['bare_stiction'] else 'no stiction'}"
-                     "</span>")
+        lines.append(f"running, one roughness realisation: <span class='{cls}'>"
+                     f"{'STICTION' if v['bare_stiction'] else 'no stiction'}</span>")
+    if v.get("bare_startup_stiction_probability_text"):
+        k, n = _count(v["bare_startup_stiction_probability_text"], v.get("bare_startup_stiction_probability"),
+                      v.get("bare_realisations"))
+        lines.append(f"start-up, over the roughness: <span class='{_probability_class(k, n)}'>stiction in "
+                     f"{_e(v['bare_startup_stiction_probability_text'])}</span>")
+    elif "bare_startup_stiction" in v:
+        cls = "bad" if v["bare_startup_stiction"] else "good"
+        lines.append(f"start-up, one roughness realisation: <span class='{cls}'>"
+                     f"{'STICTION' if v['bare_startup_stiction'] else 'no stiction'}</span>")
+    priors = _priors_probability(result.summaries.get("uncertainty") or v.get("uncertainty"))
+    if priors is not None:
+        text, k, n = priors
+        lines.append(f"over the priors of the unmeasured constants: <span class='{_probability_class(k, n)}'>"
+                     f"stiction in {_e(text)}</span>")
+    parts = []
     if "coated_stiction" in v:
         cls = "bad" if v["coated_stiction"] else "good"
         parts.append(f"{_e(result.options.coating)}-coated: <span class='{cls}'>"
                      f"{'STICTION' if v['coated_stiction'] else 'no stiction'}</span> while the coating is intact")
     if v.get("cycles_to_stiction") is not None:
         parts.append(f"stiction returns after about {_quantity(v['cycles_to_stiction'])} meshing cycles")
-    if not parts:
+    if not lines and not parts:
         return ""
-    text = "; ".join(parts)
-    return f"<p class='headline'><b>{text[0].upper() + text[1:]}.</b></p>"
+    html = ["<div class='verdicts' id='verdicts'>"]
+    if lines:
+        html.append("<p class='headline'><b>Bare silicon</b></p><ul>"
+                    + "".join(f"<li>{line[0].upper() + line[1:]}</li>" for line in lines) + "</ul>")
+    if parts:
+        text = "; ".join(parts)
+        html.append(f"<p class='headline'><b>{text[0].upper() + text[1:]}.</b></p>")
+    html.append("</div>")
+    return "".join(html)
 
 
 def _uncertainty_html(result) -> str:

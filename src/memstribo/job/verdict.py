@@ -102,6 +102,7 @@ def uncertainty_summary(result) -> dict[str, Any]:
                      f"{q['p95'] * 1e3:+.3g} mN (negative: stiction)"),
         "drivers": drivers,
         **{key: result[key] for key in ("stiction_probability", "stiction_probability_ci", "stiction_count", "samples",
+                                        "stiction_probability_text",
                                         "stiction_probability_nominal", "stiction_probability_nominal_ci",
                                         "dominant", "designer_sentence", "solves", "rescalings", "elapsed")},
         **{key: result[key] for key in ("startup_stiction_probability", "startup_stiction_probability_ci",
