@@ -325,3 +325,16 @@ def test_the_start_up_verdict_rescales_with_the_bond_energies_exactly(params):
         assert rescaled[key] == pytest.approx(solved[key], rel=1e-9)
     assert rescaled["startup_stiction"] == solved["startup_stiction"]
     assert rescaled["stiction_mode"] == solved["stiction_mode"] and rescaled["verdict"] == solved["verdict"]
+
+
+def test_the_capped_start_up_force_is_the_ideal_shear_strength_over_the_bonds_area(params):
+    """Local limits at start-up (issue #41's escaped bug: the capped start-up margin without its peak ratio): a bond
+    population at its lateral peak transmits 1.2687 U / D^3 = 53 GPa; capped at the ideal shear strength tau, its N
+    bonds over N D^2 carry tau N D^2, whatever U, through the same moment arm as the uncapped force."""
+    n = 1000.0
+    d, tau = params["bond_length"], params["ideal_shear_strength"]
+    assert 1.2686660 * params["bond_energy"] / d ** 3 > tau  # the cap binds
+    limits, (rb1, rb2, rw1, (rho1, rho2)) = _one_block_cycle(n, params)
+    lever = rb1 * abs(rho1 / rb1 - rho2 / rb2) / rw1
+    assert limits["startup_resisting_capped"][1] == pytest.approx(n * tau * d ** 2 * lever, rel=1e-9)
+    assert limits["startup_resisting"][1] == pytest.approx(n * 1.2686660 * params["bond_energy"] / d * lever, rel=1e-6)
