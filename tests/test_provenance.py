@@ -218,7 +218,10 @@ def test_synthetic_roughness_names_its_seed():
     (("slide", "--model", "fixed-load", "--profile", str(SCAN), "--distance", "0.2 um"), f"file {SCAN}, sha256"),
 ])
 def test_other_commands_write_provenance(cli, tmp_path, argv, expected):
-    code, out, err = cli(*argv, "--set", "normal_load=30 uN", "--out", tmp_path)
+    # a parameter the command does not set itself (a load sweep refuses a --set normal_load: issue 41)
+    overridden = "hardness" if argv[:2] == ("sweep", "load") else "normal_load"
+    value = "12 GPa" if overridden == "hardness" else "30 uN"
+    code, out, err = cli(*argv, "--set", f"{overridden}={value}", "--out", tmp_path)
     assert code == 0, err
     files = sorted(tmp_path.glob("*.nc"))
     assert files
@@ -226,7 +229,7 @@ def test_other_commands_write_provenance(cli, tmp_path, argv, expected):
         with xr.open_dataset(path) as dataset:
             attrs = dataset.attrs
             assert attrs["Conventions"] == "CF-1.8" and attrs["command"].startswith(f"memstribo {argv[0]}")
-            assert json.loads(attrs["parameter_overrides"])["normal_load"]["origin"] == "--set"
+            assert json.loads(attrs["parameter_overrides"])[overridden]["origin"] == "--set"
             assert attrs["roughness_provenance"].startswith(expected), (path.name, attrs["roughness_provenance"])
             for name, variable in dataset.variables.items():
                 if variable.dtype.kind in "fiub":
