@@ -542,7 +542,8 @@ def test_a_counter_body_too_soft_for_the_half_space_model_is_refused(params, cou
 def test_a_stretched_half_space_is_warned(params):
     ds = simulate_mesh(params.updated({"counter_youngs_modulus": "20 GPa"}), steps=11)  # a/R = 0.16 ... 0.2
     soft = simulate_mesh(params.updated({"counter_youngs_modulus": "5 GPa"}), steps=11)  # a/R about 0.3
-    assert not any("half-space" in w for w in summarize(ds)["warnings"])
+    # (the flash temperature's own half-space has its warning too: docs/thermal.md)
+    assert not any("half-space contact model" in w for w in summarize(ds)["warnings"])
     assert any("half-space contact model" in w for w in summarize(soft)["warnings"])
 
 
