@@ -30,6 +30,11 @@ def test_readme_quotes_the_ensemble(params):
     assert (f"between {ensemble['stiction_margin_p05'] * 1e3:.3g} and {ensemble['stiction_margin_p95'] * 1e3:.3g} mN"
             in README)
     assert f"between {ensemble['cof_mean_p05']:.3f} and {ensemble['cof_mean_p95']:.3f}" in README
+    # the start-up verdict (MODEL 7f): its count with interval and its margin band
+    assert (f"start-up stiction in **{ensemble['startup_stiction_probability_text'].replace(' of 16', ' of 16 realisations')}**"
+            in README)
+    assert (f"between {ensemble['startup_margin_p05'] * 1e3:.3g} and {ensemble['startup_margin_p95'] * 1e3:.3g} mN"
+            in README)
 
 
 def test_readme_quotes_the_gear_and_roughness_examples(cli):

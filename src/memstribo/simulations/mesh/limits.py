@@ -71,17 +71,12 @@ def startup_resisting_force(params, pair, positions, static) -> np.ndarray:
     from memstribo.physics.static_friction import friction_lever
 
     rb1, rb2 = (float(r) for r in pair.base_radii)
-    rw1 = float(pair.pitch_radii[0])
-    c = np.asarray(positions, dtype=float)
-    total = np.zeros_like(c)
-    k_max = int(np.ceil((pair.last_contact - pair.first_contact) / pair.base_pitch)) + 1
-    for k in range(-k_max, k_max + 1):
-        other = c + k * pair.base_pitch
-        on_path = (other >= pair.first_contact - 1e-15) & (other <= pair.last_contact + 1e-15)
-        rho1, rho2 = pair.radii_of_curvature(np.clip(other, pair.first_contact, pair.last_contact))
-        lever = np.asarray(friction_lever(rho1, rho2, rb1, rb2))
-        total += np.where(on_path, np.interp(other, c, static) * lever, 0.0)
-    return (float(params["load_torque"]) / rb2 + total) * rb1 / rw1
+
+    def lever(c):  # each pair's moment arm over the pinion's base radius, at its own contact
+        return np.asarray(friction_lever(*pair.radii_of_curvature(c), rb1, rb2))
+
+    friction = resisting_force(positions, static, pair.first_contact, pair.last_contact, pair.base_pitch, lever)
+    return (float(params["load_torque"]) / rb2 + friction) * rb1 / float(pair.pitch_radii[0])
 
 
 def _capped_energies(params, energies, bond) -> list[float]:

@@ -132,12 +132,14 @@ def sliding_average(values, sliding, distance):
     return np.divide(e_hi - e_lo, covered, out=values.copy(), where=covered > 0)
 
 
-def resisting_force(positions, friction_force, first_contact, last_contact, base_pitch):
+def resisting_force(positions, friction_force, first_contact, last_contact, base_pitch, weight=None):
     """R(c): the friction forces of every tooth pair in mesh when one pair is at c [N] (MODEL 7b).
 
     The other pairs sit whole base pitches away on the path of contact, at ``c + k p_b`` for
     every integer k with ``c_f <= c + k p_b <= c_l``; each resists the drive with its friction
-    force at its own position (taken from the same cycle, interpolated in c).
+    force at its own position (taken from the same cycle, interpolated in c). ``weight``: a function
+    of the pairs' positions [m] that scales each pair's force (the start-up torque balance's moment
+    arm, :func:`memstribo.simulations.mesh.limits.startup_resisting_force`); None: 1.
     """
     c = np.asarray(positions, dtype=float)
     total = np.zeros_like(c)
@@ -145,7 +147,10 @@ def resisting_force(positions, friction_force, first_contact, last_contact, base
     for k in range(-k_max, k_max + 1):
         other = c + k * base_pitch
         on_path = (other >= first_contact - 1e-15) & (other <= last_contact + 1e-15)
-        total += np.where(on_path, np.interp(other, c, friction_force), 0.0)
+        force = np.interp(other, c, friction_force)
+        if weight is not None:
+            force = force * weight(np.clip(other, first_contact, last_contact))
+        total += np.where(on_path, force, 0.0)
     return total
 
 
