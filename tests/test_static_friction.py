@@ -101,6 +101,13 @@ def test_random_phases_give_the_mean_plus_a_fluctuation_of_order_root_n():
     assert b * math.sqrt(1024) < 0.05 * 1024 * (sf.LATERAL_PEAK_FORCE - m)
 
 
+def test_tomlinson_input_errors():
+    with pytest.raises(InputError, match="increasing order"):
+        sf.tomlinson_quasistatic([1.0, 0.0], 1.0, 1.0, 1.0)
+    with pytest.raises(InputError, match="stiffness"):
+        sf.tomlinson_quasistatic([0.0, 1.0], 1.0, -1.0, 1.0)
+
+
 def test_population_input_errors():
     with pytest.raises(InputError, match="phases must lie in"):
         sf.population_static_force([1.0], [1.0])

@@ -70,7 +70,7 @@ def lennard_jones_lateral_force(offset, bond_energy, bond_length):
     ``offset`` x along the sliding direction, r = sqrt(D^2 + x^2), and the force it exerts against the displacement is
     the lateral component of the radial force:
 
-        F_x(x) = U'(r) x / r = (12 U / D) (D / r)^2 (x / D) [(D / r)^6 - (D / r)^12] ... written with t = (D / r)^2:
+        F_x(x) = U'(r) x / r,   which with t = (D / r)^2 (so x / r = sqrt(1 - t), D / r = sqrt(t)) is
         F_x = (12 U / D) sqrt(t (1 - t)) (t^3 - t^6) sign(x).
 
     Positive where it resists a positive displacement (odd in x); zero at x = 0.
@@ -281,8 +281,12 @@ def tomlinson_quasistatic(support, corrugation, stiffness, period):
     corrugation, stiffness, period
         U0 [J], k [N/m], a [m].
     """
-    xs = np.asarray(support, dtype=float)
-    u0, k, a = float(corrugation), float(stiffness), float(period)
+    xs = np.asarray(as_array(support, "support", "m"), dtype=float).ravel()
+    if xs.size == 0 or np.any(np.diff(xs) < 0):
+        raise InputError("support must hold at least one position [m], in increasing order (a quasi-static pull).")
+    u0 = float(as_array(corrugation, "corrugation", "J", nonnegative=True))
+    k = float(as_array(stiffness, "stiffness", "N/m", positive=True))
+    a = float(as_array(period, "period", "m", positive=True))
     q = 2.0 * math.pi / a
     lipschitz = k + u0 * q * q  # the largest curvature of the energy: a gradient step of 1 / L never climbs
     tolerance = 1e-12 * max(k * a, u0 * q)
