@@ -143,6 +143,16 @@ REFERENCES: dict[str, str] = {
         "F. W. DelRio, M. L. Dunn, L. M. Phinney, C. J. Bourdon, M. P. de Boer, 'Rough surface adhesion in the "
         "presence of capillary condensation', Appl. Phys. Lett. 90 (2007) 163104. doi:10.1063/1.2723658"
     ),
+    "fisher_gamble_1981": (
+        "L. R. Fisher, R. A. Gamble, J. Middlehurst, 'The Kelvin equation and the capillary condensation of water', "
+        "Nature 290 (16 April 1981), measured at p/p0 0.945-0.996 (meniscus radii about 120 to 9 nm) (the "
+        "record seen: its first page; DOI not found in the searched records)"
+    ),
+    "yang_2020": (
+        "Q. Yang, P. Z. Sun, L. Fumagalli, Y. V. Stebunov, S. J. Haigh, Z. W. Zhou, I. V. Grigorieva, F. C. Wang, "
+        "A. K. Geim, 'Capillary condensation under atomic-scale confinement', Nature 588 (2020) 250-253. "
+        "doi:10.1038/s41586-020-2978-1 (arXiv:2009.11238)"
+    ),
     "butt_kappl_2009": (
         "H.-J. Butt, M. Kappl, 'Normal capillary forces', Adv. Colloid Interface Sci. 146 (2009) 48-60. "
         "doi:10.1016/j.cis.2008.10.002"
