@@ -115,15 +115,20 @@ def test_teeth_coated_on_both_flanks_stay_flat_in_humidity(cli):
     assert 0 < half["points"][0]["capillary_pull_off_mean"] < bare["points"][0]["capillary_pull_off_mean"]
 
 
-def test_the_bridges_work_is_the_microbeam_models_capillary_part_without_films():
-    """The laboratory's rigid microbeam integrates the meniscus pressure over the separation numerically
-    (:func:`memstribo.laboratory.predict.beam_work_of_separation`); without films the closed form agrees."""
+def test_the_microbeam_model_is_the_rough_capillary_relations():
+    """The laboratory's rigid microbeam (:func:`memstribo.laboratory.predict.beam_work_of_separation`) is
+    :mod:`memstribo.physics.rough_capillary` on its gap field: the bridges' part is the mean of the bridges' work with
+    the oxide's liquid-like films; without films it is the closed form of :func:`meniscus_work_of_separation`."""
     from memstribo.laboratory.predict import beam_work_of_separation
     from memstribo.parameters import get_parameter_values
+    from memstribo.physics.rough_capillary import capillary_adhesion_energy
 
     params = get_parameter_values()
     gap = np.random.default_rng(3).exponential(2e-9, 400)
     theta = params["water_contact_angle"]
+    total, vdw, cap = beam_work_of_separation(gap, params, 0.7)
+    assert cap == pytest.approx(np.mean(capillary_adhesion_energy(gap, 0.7, theta)), rel=1e-12)
+    assert max(vdw, cap) <= total <= vdw + cap
     r_k = kelvin_radius(0.7, params["ambient_temperature"])
     closed = np.mean(meniscus_work_of_separation(gap, r_k, condensation_height(r_k, theta)))
-    assert beam_work_of_separation(gap, params, 0.7)[2] == pytest.approx(closed, rel=5e-3)
+    assert np.mean(capillary_adhesion_energy(gap, 0.7, theta, films=0.0)) == pytest.approx(closed, rel=1e-12)

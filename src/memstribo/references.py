@@ -153,6 +153,14 @@ REFERENCES: dict[str, str] = {
         "A. K. Geim, 'Capillary condensation under atomic-scale confinement', Nature 588 (2020) 250-253. "
         "doi:10.1038/s41586-020-2978-1 (arXiv:2009.11238)"
     ),
+    "deboer_2007": (
+        "M. P. de Boer, 'Capillary adhesion between elastically hard rough surfaces', Exp. Mech. 47 (2007) 171-183. "
+        "doi:10.1007/s11340-006-0631-z"
+    ),
+    "langmuir_2009_rough_capillary": (
+        "'Effects of capillary condensation in adhesion between rough surfaces', Langmuir 25 (2009) 11727-11731. "
+        "doi:10.1021/la900455k (authors not in the record seen; PubMed 19788224)"
+    ),
     "butt_kappl_2009": (
         "H.-J. Butt, M. Kappl, 'Normal capillary forces', Adv. Colloid Interface Sci. 146 (2009) 48-60. "
         "doi:10.1016/j.cis.2008.10.002"

@@ -9,8 +9,7 @@ median and the 90 % band (5th to 95th percentile) over roughness realisations x 
 a row whose case the model cannot build is returned as "not predicted" with the reason.
 
 Speed (what the generator uses): friction cases slide the 2-block structure over 1 um in steps of
-the bond length on a 2.4 um synthetic profile (about 0.03 s each); microbeams average over a 20 um
-line.
+the bond length on a 2.4 um synthetic profile (about 0.03 s each); microbeams average over a 5.12 um square gap map.
 """
 
 from __future__ import annotations
@@ -30,8 +29,9 @@ FRICTION = ("static_cof", "kinetic_cof")
 #: sliding distance of a friction case [m] and the length of its synthetic profile [m]
 SLIDE_DISTANCE = 1.0e-6
 PROFILE_LENGTH = 2.4e-6
-#: length of a microbeam's synthetic gap line [m]
-BEAM_LENGTH = 20e-6
+#: side [m] and points per side of a microbeam's synthetic gap map (a 5.12 um square, 10 nm spacing)
+BEAM_MAP_SIZE = 5.12e-6
+BEAM_MAP_POINTS = 512
 #: the sidewall roughness when the source gives none: AFM of a polysilicon MEMS sidewall (van Spengen 2010)
 SIDEWALL_ROUGHNESS = {"rq": 10.3e-9, "correlation_length": 83e-9,
                       "reason": "not in the cited record; polysilicon sidewall AFM, Rq 10.3 nm, exponential "
@@ -229,60 +229,65 @@ def static_cof(dataset, params) -> float:
     return float(ratio.mean())
 
 
-@cites("maugis_1992", "israelachvili_2011")
+@cites("delrio_2007", "deboer_2007")
 def beam_work_of_separation(gap, params, relative_humidity):
-    """Work of separation of a rigid rough interface [J/m^2]: vdW surface law + menisci, averaged over the gap line.
+    """Adhesion energy of a rigid rough interface [J/m^2]: the asperity-level microbeam model (issue #36, MODEL 7g).
 
-    The two surfaces are pulled apart from the rough gap field ``gap`` (0 at the touching summit) to
-    infinity; the work per apparent area is the integral over the extra separation s of the mean
-    attraction: the Lennard-Jones (9-3) surface stress of :func:`memstribo.physics.adhesion.lennard_jones_surface_stress`
-    at h = z0 + g + s (its integral from z0 is w, so a fully touching interface gives w), plus the
-    meniscus pressure gamma / r_K wherever g + s <= h_c (:func:`memstribo.physics.capillary.capillary_pressure`,
-    r_K from RH, h_c = r_K (cos theta1 + cos theta2)), which integrates to 2 gamma cos(theta) on a fully wetted
-    interface.
+    :func:`memstribo.physics.rough_capillary.rough_adhesion_energy` on the gap field ``gap``: per element the larger
+    of the van der Waals energy ``A / (12 pi (g + D0)^2)`` and the water bridge's work ``(gamma / r_K) (h -
+    max(g, t))`` where the gap is below the bridging height h (the liquid-like adsorbed films t of the oxide), none
+    below a molecular Kelvin radius; Gamma is their mean. A touching interface holds ``w = A / (12 pi D0^2)`` dry and
+    ``max(w, 2 gamma cos theta)`` wet.
 
     Parameters
     ----------
     gap : array_like
-        Gaps of the interface at rest [m], >= 0.
+        Gaps of the interface at rest [m], >= 0 (a line or a map).
     params : memstribo.parameters.Parameters
-        Uses ``hamaker_constant``, ``cutoff_distance``, ``work_of_adhesion`` (unset: A / (12 pi D0^2), (3-34)),
-        ``water_contact_angle``, ``temperature``.
+        Uses ``hamaker_constant``, ``cutoff_distance``, ``work_of_adhesion`` (set: the Hamaker constant that gives
+        it, ``12 pi D0^2 w``), ``water_contact_angle``, ``ambient_temperature``.
     relative_humidity : float
         RH [-] in [0, 1); 0: no menisci.
 
     Returns
     -------
     tuple of float
-        (total, vdW part, capillary part) [J/m^2].
+        (Gamma, the van der Waals energy's mean, the bridges' work's mean) [J/m^2]; Gamma is not their sum (one work
+        per element, the larger).
     """
-    from memstribo.physics import capillary
-    from memstribo.physics.adhesion import lennard_jones_surface_stress
+    from memstribo.physics import rough_capillary
 
     g = np.asarray(gap, dtype=float)
     z0 = params["cutoff_distance"]
-    w = params["work_of_adhesion"] or params["hamaker_constant"] / (12 * math.pi * z0**2)
-    s = np.concatenate([[0.0], np.geomspace(1e-3 * z0, 2e-6, 600)])
-    stress = np.array([np.mean(-lennard_jones_surface_stress(z0 + g + si, w, z0)) for si in s])
-    vdw = float(np.trapezoid(stress, s))
-    cap = 0.0
-    if relative_humidity > 0:
-        theta = params["water_contact_angle"]
-        r_k = capillary.kelvin_radius(relative_humidity, params["ambient_temperature"])
-        h_c = capillary.condensation_height(r_k, theta, theta)
-        if h_c > 0:
-            sc = np.linspace(0.0, h_c, 801)
-            pressure = np.array([np.mean(capillary.capillary_pressure(g + si, r_k, theta, theta)) for si in sc])
-            cap = float(np.trapezoid(pressure, sc))
-    return vdw + cap, vdw, cap
+    hamaker = 12 * math.pi * z0**2 * params["work_of_adhesion"] if params["work_of_adhesion"] else \
+        params["hamaker_constant"]
+    theta = params["water_contact_angle"]
+    temperature = params["ambient_temperature"]
+    total = rough_capillary.rough_adhesion_energy(g, relative_humidity, hamaker, z0, theta, temperature=temperature)
+    vdw = float(np.mean(rough_capillary.vdw_adhesion_energy(g, hamaker, z0)))
+    cap = float(np.mean(rough_capillary.capillary_adhesion_energy(g, relative_humidity, theta,
+                                                                  temperature=temperature)))
+    return total, vdw, cap
+
+
+def _surface_map(rq, corr, seed, size=None, points=None):
+    """A Gaussian-correlated random height map (autocorrelation ``Rq^2 exp(-r^2 / l^2)``) [m], ``points`` square
+    over ``size`` (default :data:`BEAM_MAP_POINTS` over :data:`BEAM_MAP_SIZE`): white noise filtered by the square
+    root of its spectrum ``exp(-k^2 l^2 / 4)`` (FFT)."""
+    size, points = size or BEAM_MAP_SIZE, points or BEAM_MAP_POINTS
+    rng = np.random.default_rng(seed)
+    k = 2.0 * math.pi * np.fft.fftfreq(points, size / points)
+    spectrum = np.exp(-(k[:, None] ** 2 + k[None, :] ** 2) * corr**2 / 4.0)
+    z = np.real(np.fft.ifft2(np.fft.fft2(rng.standard_normal((points, points))) * np.sqrt(spectrum)))
+    return z * (rq / z.std())
 
 
 def _beam_gap(rq, corr, seed):
-    # two independent rough surfaces (beam underside, substrate); the rigid beam rests on the highest summit
-    a = _profile(rq, corr, BEAM_LENGTH, seed).z
-    b = _profile(rq, corr, BEAM_LENGTH, seed + 10_000).z
-    s = a + b
-    return s.max() - s
+    # two independent rough surfaces (beam underside, substrate) as maps: the rigid beam rests on the highest summit
+    # of their sum (a line would wet a whole cylinder-like band around its one contact and lose the plateau)
+    from memstribo.physics.rough_capillary import rigid_interface_gaps
+
+    return rigid_interface_gaps(_surface_map(rq, corr, seed), _surface_map(rq, corr, seed + 10_000))
 
 
 def _beam_values(row, samples, realisations, calibration_coating, seed):
@@ -305,8 +310,9 @@ def _beam_values(row, samples, realisations, calibration_coating, seed):
                                 / beam_work_of_separation(gaps[k], params, low)[0])
     what = ("work of separation" if row.quantity == "adhesion_energy"
             else "ratio of the work of separation at RH {1:g} and {0:g}".format(*row.condition("relative_humidity_range")))
-    case = (f"rigid microbeam on its substrate, {what} of the rough gap line (two surfaces Rq {rq * 1e9:.3g} nm each, "
-            f"correlation length {corr * 1e9:.3g} nm, {note}): Lennard-Jones surface law + menisci, {set_name}")
+    case = (f"rigid microbeam on its substrate, {what} of the rough gap map (two surfaces Rq {rq * 1e9:.3g} nm each, "
+            f"correlation length {corr * 1e9:.3g} nm, {note}): per element the larger of the van der Waals energy and the "
+            f"water bridge's work (rough_capillary, DelRio et al. 2007), {set_name}")
     return values, case
 
 

@@ -44,7 +44,7 @@ from memstribo.references import cites
 __all__ = ["GAS_CONSTANT", "WATER", "REFERENCE_TEMPERATURE", "water_surface_tension", "kelvin_radius",
            "condensation_height", "laplace_pressure",
            "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap",
-           "WATER_ISOTHERM_SIO2", "water_monolayer_thickness", "adsorbed_water_thickness", "bridging_height",
+           "WATER_ISOTHERM_SIO2", "water_monolayer_thickness", "adsorbed_water_thickness", "liquid_water_thickness", "bridging_height",
            "meniscus_work_of_separation", "molecular_kelvin_radius", "forms_meniscus", "meniscus_force_bound",
            "bounded_pull_off"]
 
@@ -275,6 +275,20 @@ def adsorbed_water_thickness(relative_humidity):
     slope = (layers[-1] - layers[-2]) / (x[-1] - x[-2])
     n = np.where(rh <= x[-1], np.interp(rh, x, layers), layers[-1] + slope * (rh - x[-1]))
     result = n * water_monolayer_thickness()
+    return float(result) if np.ndim(result) == 0 else result
+
+
+@cites("asay_kim_2005", "verdaguer_2007")
+def liquid_water_thickness(relative_humidity):
+    """The liquid-like part of the water film on silicon oxide [m]: :func:`adsorbed_water_thickness` less its
+    ice-like layers.
+
+    The first three layers, complete by RH 0.3, are ice-like (hydrogen-bonded to the silanols, Asay and Kim 2005)
+    and do not flow into a meniscus; what grows above them is liquid-like: ``max(t(RH) - t(0.3), 0)``, 0 up to
+    RH 0.3, 0.21 nm at RH 0.5, 1.09 nm at RH 0.9. ``relative_humidity`` [-] in [0, 1).
+    """
+    ice = adsorbed_water_thickness(WATER_ISOTHERM_SIO2[1][0])
+    result = np.maximum(adsorbed_water_thickness(relative_humidity) - ice, 0.0)
     return float(result) if np.ndim(result) == 0 else result
 
 
