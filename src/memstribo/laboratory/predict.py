@@ -245,9 +245,11 @@ def beam_work_of_separation(gap, params, relative_humidity):
         Gaps of the interface at rest [m], >= 0 (a line or a map).
     params : memstribo.parameters.Parameters
         Uses ``hamaker_constant``, ``cutoff_distance``, ``work_of_adhesion`` (set: the Hamaker constant that gives
-        it, ``12 pi D0^2 w``), ``water_contact_angle``, ``ambient_temperature``.
+        it, ``12 pi D0^2 w``), ``vapour`` and ``surface_termination`` (the liquid, its contact angle and its
+        liquid-like film, :mod:`memstribo.physics.vapours`; water on the oxide: ``water_contact_angle``),
+        ``ambient_temperature``.
     relative_humidity : float
-        RH [-] in [0, 1); 0: no menisci.
+        RH (p / p_sat of the vapour) [-] in [0, 1); 0: no menisci.
 
     Returns
     -------
@@ -255,18 +257,22 @@ def beam_work_of_separation(gap, params, relative_humidity):
         (Gamma, the van der Waals energy's mean, the bridges' work's mean) [J/m^2]; Gamma is not their sum (one work
         per element, the larger).
     """
-    from memstribo.physics import rough_capillary
+    from memstribo.physics import rough_capillary, vapours
 
     g = np.asarray(gap, dtype=float)
     z0 = params["cutoff_distance"]
     hamaker = 12 * math.pi * z0**2 * params["work_of_adhesion"] if params["work_of_adhesion"] else \
         params["hamaker_constant"]
-    theta = params["water_contact_angle"]
+    vapour, termination = params["vapour"], params["surface_termination"]
+    theta = vapours.vapour_contact_angle(vapour, termination, params["water_contact_angle"])
     temperature = params["ambient_temperature"]
-    total = rough_capillary.rough_adhesion_energy(g, relative_humidity, hamaker, z0, theta, temperature=temperature)
+    liquid = dict(films=2 * vapours.liquid_film_thickness(vapour, termination, relative_humidity) if theta < 0.5 *
+                  math.pi else 0.0, temperature=temperature,
+                  surface_tension=vapours.vapour_surface_tension(vapour, temperature),
+                  molar_volume=vapours.vapour_properties(vapour)["molar_volume"])
+    total = rough_capillary.rough_adhesion_energy(g, relative_humidity, hamaker, z0, theta, **liquid)
     vdw = float(np.mean(rough_capillary.vdw_adhesion_energy(g, hamaker, z0)))
-    cap = float(np.mean(rough_capillary.capillary_adhesion_energy(g, relative_humidity, theta,
-                                                                  temperature=temperature)))
+    cap = float(np.mean(rough_capillary.capillary_adhesion_energy(g, relative_humidity, theta, **liquid)))
     return total, vdw, cap
 
 

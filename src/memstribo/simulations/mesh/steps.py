@@ -147,24 +147,26 @@ def _context(setup, params, coating, wear, modulus):
     ctx.ideal_shear = float(params["ideal_shear_strength"])
     ctx.humid = params["environment"] == "air"
     if ctx.humid:
-        from memstribo.physics import capillary
+        from memstribo.physics.vapours import vapour_state
 
-        # water at the ambient temperature: its surface tension sets the Kelvin radius, the Laplace pressure
-        # and the rupture energy alike (docs/thermal.md; 0.072 N/m exactly at 298.15 K)
-        ctx.surface_tension = float(capillary.water_surface_tension(params["ambient_temperature"]))
-        ctx.r_kelvin = capillary.kelvin_radius(params["relative_humidity"], params["ambient_temperature"],
-                                               ctx.surface_tension)
-        # below one molecular diameter the condensate is an adsorbed film, not a meniscus (MODEL 7g): no Laplace
-        # traction, no bridge, no rupture; the film's attraction is the interface's own vdW law
-        if not capillary.forms_meniscus(ctx.r_kelvin):
-            ctx.r_kelvin = 0.0
-        ctx.theta_bare = float(params["water_contact_angle"])
+        # the vapour (water or pentanol) at the ambient temperature on the flanks' termination (issue #36): its
+        # surface tension sets the Kelvin radius, the Laplace pressure and the rupture energy alike (docs/thermal.md;
+        # water: 0.072 N/m exactly at 298.15 K); below one molecular diameter the condensate is an adsorbed film,
+        # not a meniscus (MODEL 7g): r_K = 0, no Laplace traction, no bridge, no rupture
+        state = vapour_state(params)
+        ctx.surface_tension = state["surface_tension"]
+        ctx.r_kelvin = state["kelvin"]
+        ctx.theta_bare = state["contact_angle"]
         ctx.theta_coat = ctx.theta_bare
-        if coating is not None and math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
-            ctx.theta_coat = math.radians(coating.water_contact_angle_deg)
+        if coating is not None:
+            if state["vapour"] != "water":
+                raise InputError(f"a coated gear in {state['vapour']} vapour: memstribo has the coatings' water "
+                                 "contact angles only; use vapour = 'water' or no coating.")
+            if math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
+                ctx.theta_coat = math.radians(coating.water_contact_angle_deg)
         ctx.renewal = params["meniscus_renewal_distance"] or params["atomic_pitch"]
-        # adsorbed water film on the hydrophilic (oxidised) flanks, from the published isotherm (issue #28)
-        ctx.film = capillary.adsorbed_water_thickness(params["relative_humidity"])
+        # the adsorbed film on the flanks, from the termination's published isotherm (issue #28, #36)
+        ctx.film = state["film"]
 
     def gear_bare(k, row):
         """Gear blocks bare (worn coating) or coated: a deterministic low-discrepancy choice."""

@@ -194,15 +194,17 @@ def _warnings(params, out, setup, shear_stress, efficiency, undetermined="") -> 
     if (efficiency <= 0).any():
         warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
                         "step(s): friction takes more power than the drive supplies there")
-    if params["environment"] == "air" and params["relative_humidity"] > 0.0:
-        from memstribo.physics.capillary import forms_meniscus, kelvin_radius, molecular_kelvin_radius
+    if params["environment"] == "air":
+        from memstribo.physics.capillary import molecular_kelvin_radius
+        from memstribo.physics.vapours import vapour_state
 
-        r_k = kelvin_radius(params["relative_humidity"], params["ambient_temperature"])
-        if not forms_meniscus(r_k):
-            warnings.append(f"relative humidity {params['relative_humidity']:g}: the Kelvin radius ({r_k * 1e9:.2g} nm) "
-                            f"is below one molecular diameter of water ({molecular_kelvin_radius() * 1e9:.3g} nm), a "
-                            "molecular size: the condensate is an adsorbed film, not a meniscus, and no meniscus force "
-                            "or rupture is counted (MODEL 7g, docs/humidity.md)")
+        state = vapour_state(params)
+        if state["ratio"] > 0.0 and state["kelvin"] == 0.0:
+            warnings.append(f"{state['vapour']} at p/p_sat {state['ratio']:g} (relative humidity for water): the Kelvin "
+                            f"radius ({state['kelvin_raw'] * 1e9:.2g} nm) is below one molecular diameter "
+                            f"({molecular_kelvin_radius(state['molar_volume']) * 1e9:.3g} nm), a molecular size: the "
+                            "condensate is an adsorbed film, not a meniscus, and no meniscus force or rupture is "
+                            "counted (MODEL 7g, docs/humidity.md)")
     return warnings
 
 
