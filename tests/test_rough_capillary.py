@@ -81,3 +81,40 @@ def test_the_relations_on_simple_gaps():
             vdw_adhesion_energy(bad, a, d0)
     with pytest.raises(InputError, match="relative_humidity"):
         capillary_adhesion_energy([0.0], 1.0, theta)
+
+
+def test_meniscus_adhesion_pressure_is_the_laplace_bound_per_area():
+    """(gamma / r_K) phi + gamma L / A on a map and on a line; never above gamma / r_K plus its contact lines."""
+    from memstribo.physics.rough_capillary import meniscus_adhesion_pressure
+
+    gamma, r_k, dx = 0.072, kelvin_radius(0.7), 10e-9
+    line = np.array([0.0, 1e-9, 5e-9, 5e-9, 0.5e-9, 5e-9])  # wet runs [0, 1] and [4]: 4 ends over 6 dx
+    assert meniscus_adhesion_pressure(line, dx, r_k, 2e-9, gamma) == pytest.approx(
+        gamma / r_k * 3 / 6 + gamma * 4 / (6 * dx), rel=1e-12)
+    square = np.full((4, 4), 5e-9)
+    square[1:3, 1:3] = 0.0  # a 2 x 2 wet patch: 8 edges of dx around it
+    assert meniscus_adhesion_pressure(square, dx, r_k, 2e-9, gamma) == pytest.approx(
+        gamma / r_k * 4 / 16 + gamma * 8 * dx / (16 * dx * dx), rel=1e-12)
+    assert meniscus_adhesion_pressure(square, dx, 0.0, 2e-9) == 0.0  # dry or an adsorbed film
+    assert meniscus_adhesion_pressure(np.zeros((3, 3)), dx, r_k, 2e-9, gamma) == pytest.approx(gamma / r_k)
+
+
+def test_the_flat_friction_case_answers_humidity():
+    """Issue #36: the laboratory's flat (and sidewall) case adds the menisci's attraction to its load: RH 0 and 0.9
+    give different COFs on the bare oxide; coated (OTS on both surfaces, 112 deg) rows form no meniscus; pentanol
+    vapour runs the flat contact."""
+    import copy
+
+    from memstribo.laboratory import data, predict
+
+    rows = {r.id: r for r in data.load_measurements()}
+
+    def at(row_id, rh, samples=None):
+        row = copy.deepcopy(rows[row_id])
+        row.conditions["relative_humidity"] = rh
+        return predict.row_values(row, samples, realisations=1)[0][0, 0]
+
+    assert at("srinivasan1998_static_oxide", 0.9) < 0.99 * at("srinivasan1998_static_oxide", 0.0)
+    assert at("srinivasan1998_kinetic_ots", 0.9) == at("srinivasan1998_kinetic_ots", 0.0)
+    pentanol = at("srinivasan1998_static_oxide", 0.9, [{"vapour": "pentanol"}])
+    assert np.isfinite(pentanol) and pentanol != at("srinivasan1998_static_oxide", 0.9)

@@ -184,14 +184,17 @@ def _friction_values(row, samples, realisations, calibration_coating, seed):
         if row.coating:
             params = _coated(params, row.coating)
         area = int(params["slider_blocks"]) * params["adhesive_width"] ** 2
-        load = pressure * area
+        if rough is None:
+            rq, corr = params["roughness_rq"], math.sqrt(2.0) * params["roughness_rq"] / params["roughness_rms_slope"]
+        else:
+            rq, corr = rough[0], rough[1]
         for k in range(realisations):
             if k not in profiles:
-                if rough is None:
-                    rq, corr = params["roughness_rq"], math.sqrt(2.0) * params["roughness_rq"] / params["roughness_rms_slope"]
-                else:
-                    rq, corr = rough[0], rough[1]
                 profiles[k] = _profile(rq, corr, PROFILE_LENGTH, seed + k)
+            # humidity (issue #36): the menisci's attraction adds to the load the contact carries (no shear of the
+            # meniscus or the film is added: none is cited)
+            capillary_pressure = _flat_capillary_pressure(row, params, rq, corr, seed + k)
+            load = (pressure + capillary_pressure) * area
             slid = sliding.slide_fixed_load(params, profiles[k], load=load, distance=SLIDE_DISTANCE)
             values[i, k] = (static_cof(slid, params) if row.quantity == "static_cof"
                             else sliding.summarize(slid).cof_mean)
@@ -200,12 +203,39 @@ def _friction_values(row, samples, realisations, calibration_coating, seed):
                 else f"roughness Rq {rough[0] * 1e9:.3g} nm, correlation length {rough[1] * 1e9:.3g} nm ({rough[2]})"
             case = (f"fixed-load sliding structure ({int(params['slider_blocks'])} nanoblocks) over a synthetic profile, "
                     f"{set_name}{' + ' + row.coating + ' (U_chem off)' if row.coating else ''}, nominal pressure "
-                    f"{pressure:.3g} Pa -> load {load:.3g} N on the structure; {note}; "
+                    f"{pressure:.3g} Pa -> load {load:.3g} N on the structure (with the menisci's "
+                    f"{capillary_pressure:.3g} Pa at RH {row.number('relative_humidity') or 0:g}); {note}; "
                     + ("static COF: the start-up force of the structure's bonds at rest (one crystal registry: "
                        "their lateral peak, 1.27 U / D, MODEL 7f) plus its elastic friction, over F_N + F_adh, "
                        "averaged over the rest positions of the slide"
                        if row.quantity == "static_cof" else "kinetic COF = cof_mean"))
     return values, case
+
+
+def _flat_capillary_pressure(row, params, rq, corr, seed):
+    """The menisci's attraction per apparent area of a flat or sidewall contact in air [Pa] (issue #36, MODEL 7g).
+
+    :func:`memstribo.physics.rough_capillary.meniscus_adhesion_pressure` on the gap map of the two rough surfaces
+    held rigidly on their highest summit (the microbeam's map, :func:`_beam_gap`), at the row's RH (p / p_sat of the
+    parameter set's vapour) and bridging height ``h_c`` plus the liquid-like films; a coated row takes its coating's
+    water contact angle on both surfaces (OTS, 112 deg: no meniscus); 0 in vacuum or dry gas."""
+    rh = row.number("relative_humidity")
+    if row.environment != "air" or not rh:
+        return 0.0
+    from memstribo.physics import capillary, rough_capillary, vapours
+
+    state = vapours.vapour_state(params.updated({"relative_humidity": rh, "vapour_pressure_ratio": None}))
+    theta = state["contact_angle"]
+    if row.coating:  # both surfaces coated (a SAM on the released structure): the coating's water angle
+        from memstribo.physics.coating import get_coating
+
+        theta = math.radians(float(getattr(get_coating(row.coating, params), "water_contact_angle_deg", math.nan)))
+        if not math.isfinite(theta):
+            return 0.0
+    film = vapours.liquid_film_thickness(state["vapour"], state["termination"], rh) if theta < 0.5 * math.pi else 0.0
+    height = capillary.bridging_height(state["kelvin"], film, film, theta)
+    return rough_capillary.meniscus_adhesion_pressure(_beam_gap(rq, corr, seed), BEAM_MAP_SIZE / BEAM_MAP_POINTS,
+                                                      state["kelvin"], height, state["surface_tension"])
 
 
 @cites("model")

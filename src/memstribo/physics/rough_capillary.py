@@ -43,7 +43,7 @@ from memstribo.physics import capillary
 from memstribo.references import cites
 
 __all__ = ["rigid_interface_gaps", "vdw_adhesion_energy", "capillary_adhesion_energy", "rough_adhesion_energy",
-           "capillary_threshold_humidity"]
+           "capillary_threshold_humidity", "meniscus_adhesion_pressure"]
 
 
 def _gaps(gaps):
@@ -173,3 +173,43 @@ def capillary_threshold_humidity(gaps, hamaker_constant, cutoff_distance, contac
         mid = 0.5 * (low + high)
         low, high = (mid, high) if excess(mid) < 0 else (low, mid)
     return high
+
+
+@cites("israelachvili_2011", "butt_kappl_2009")
+def meniscus_adhesion_pressure(gaps, spacing, kelvin, height, surface_tension=capillary.WATER["surface_tension"]):
+    """Mean attraction of the menisci of a rough interface per apparent area [Pa]: the meniscus bound per area.
+
+    ``(gamma / r_K) phi + gamma L / A``: the Laplace pressure over the wetted fraction phi of the gap map (elements
+    with ``g <= height``, the bridging height) plus the surface tension on the contact lines, L / A their length per
+    apparent area (:func:`memstribo.physics.capillary.meniscus_force_bound` per area; the edges between wetted and
+    dry elements of the map, each ``spacing`` long; a line map counts its wetted runs' ends per length). The force a
+    flat pad of apparent area A needs beyond its load to come apart, and the adhesion that adds to the load it
+    carries (MODEL 7g). 0 when r_K = 0 (dry, or an adsorbed film below a molecular Kelvin radius).
+
+    Parameters
+    ----------
+    gaps : array_like
+        Gap map (2D) or line (1D) [m], >= 0.
+    spacing : float
+        Grid spacing of the map [m].
+    kelvin : float
+        r_K [m].
+    height : float
+        Bridging height [m] (:func:`memstribo.physics.capillary.bridging_height`).
+    surface_tension : float
+        gamma [N/m].
+    """
+    g = _gaps(gaps)
+    dx = float(as_array(spacing, "spacing", "m", positive=True))
+    h = float(as_array(height, "height", "m", nonnegative=True))
+    k = float(as_array(kelvin, "kelvin", "m", nonnegative=True))
+    if k == 0.0 or h == 0.0:
+        return 0.0
+    wet = g <= h
+    edges = sum(int(np.count_nonzero(np.diff(wet, axis=axis))) for axis in range(wet.ndim))
+    if wet.ndim == 1:  # a line: the wetted runs' ends (one more at each end of the line that is wet) per length
+        edges += int(wet[0]) + int(wet[-1])
+        per_area = edges / (wet.size * dx)
+    else:
+        per_area = edges * dx / (wet.size * dx * dx)
+    return float(capillary.meniscus_force_bound(float(np.mean(wet)), per_area, k, surface_tension))
