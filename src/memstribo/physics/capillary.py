@@ -12,8 +12,12 @@ The model: the circular-meniscus (Laplace-Kelvin) approximation with the meniscu
 equilibrium with the vapour (Fisher and Israelachvili 1981; Butt and Kappl 2009), the
 condensation height ``h_c = r_K (cos theta_1 + cos theta_2)``, the Laplace pressure
 ``gamma / r_K`` acting over the wetted area, and no meniscus on a hydrophobic pair
-(``cos theta_1 + cos theta_2 <= 0``). Valid when r_K is well above a molecular size (RH above
-about 0.1); the adsorbed-film regime below is not modelled as a force (say so where it matters). The
+(``cos theta_1 + cos theta_2 <= 0``). A meniscus needs a Kelvin radius of at least one molecular diameter
+(:func:`molecular_kelvin_radius`, 0.311 nm for water: RH 0.185 at 25 degC); below it the condensate is an adsorbed
+film, whose attraction is the interface's own, and no meniscus force is counted (:func:`forms_meniscus`, issue #36).
+No meniscus pulls with more than its Laplace pressure over its wetted area plus gamma on its contact lines
+(:func:`meniscus_force_bound`); an elastic pull-off law of a bridged interface is capped by it
+(:func:`bounded_pull_off`, MODEL 7g). The
 adsorbed water film's thickness (a published isotherm on silicon oxide, [4]_ [5]_) sets how far a water bridge
 reaches: :func:`bridging_height`, :func:`meniscus_work_of_separation` (issue #28).
 
