@@ -157,8 +157,8 @@ def vapour_state(params):
     """The condensate of a parameter set's environment: a dict of ``vapour``, ``termination``, ``ratio`` (p / p_sat:
     ``vapour_pressure_ratio``, unset: ``relative_humidity``), ``surface_tension`` [N/m], ``molar_volume``
     [m^3/mol], ``kelvin`` r_K [m] (0 below a molecular Kelvin radius: an adsorbed film, no meniscus),
-    ``kelvin_raw`` (the Kelvin equation's value), ``contact_angle`` on the bare termination [rad] and ``film`` (the
-    adsorbed film [m])."""
+    ``kelvin_raw`` (the Kelvin equation's value), ``contact_angle`` on the bare termination [rad], ``film`` (the
+    adsorbed film [m]) and ``liquid_film`` (its part that flows into a meniscus, :func:`liquid_film_thickness` [m])."""
     vapour, termination = params["vapour"], params["surface_termination"]
     data = vapour_properties(vapour)
     ratio = params["vapour_pressure_ratio"]
@@ -170,4 +170,5 @@ def vapour_state(params):
             "molar_volume": data["molar_volume"], "kelvin_raw": kelvin,
             "kelvin": kelvin if capillary.forms_meniscus(kelvin, data["molar_volume"]) else 0.0,
             "contact_angle": vapour_contact_angle(vapour, termination, params["water_contact_angle"]),
-            "film": adsorbed_film_thickness(vapour, termination, ratio)}
+            "film": adsorbed_film_thickness(vapour, termination, ratio),
+            "liquid_film": liquid_film_thickness(vapour, termination, ratio)}

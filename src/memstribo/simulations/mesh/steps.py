@@ -165,8 +165,9 @@ def _context(setup, params, coating, wear, modulus):
             if math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
                 ctx.theta_coat = math.radians(coating.water_contact_angle_deg)
         ctx.renewal = params["meniscus_renewal_distance"] or params["atomic_pitch"]
-        # the adsorbed film on the flanks, from the termination's published isotherm (issue #28, #36)
-        ctx.film = state["film"]
+        # the liquid-like part of the adsorbed film on the flanks, from the termination's published isotherm (issues
+        # #28, #36): the bound (ice-like) layers do not flow into a bridge, as in the microbeam and the flat case
+        ctx.film = state["liquid_film"]
 
     def gear_bare(k, row):
         """Gear blocks bare (worn coating) or coated: a deterministic low-discrepancy choice."""
