@@ -104,3 +104,8 @@ def test_bad_vapour_input_is_refused_with_what_is_allowed():
                       steps=5, coating=get_coating("OTS"), wear=0.0)
     assert set(VAPOURS) == {"water", "pentanol"}
     assert np.all(np.diff(adsorbed_film_thickness("water", "hydrogen", np.array([0.0, 0.3, 0.6, 0.9]))) > 0)
+
+
+def test_a_vapour_in_vacuum_is_refused(cli):
+    code, out, err = cli("mesh", "--set", "vapour=pentanol", "--steps", "5")
+    assert code == 2 and "only in air" in err and "vapour" in err
