@@ -329,3 +329,66 @@ def test_the_meshing_cycle_takes_the_ambient_temperature_in_air():
     assert hot["adhesion_force_mean"] != pytest.approx(default["adhesion_force_mean"], rel=1e-3)
     with pytest.raises(InputError, match="liquid range of water"):
         simulate_mesh(air.updated({"ambient_temperature": 700.0}), steps=21)
+
+
+def test_a_meniscus_force_is_bounded_by_its_laplace_pressure_and_perimeter_closed_forms():
+    """Issue #36 (MODEL 7g): (gamma / r_K) A + gamma L; its area term is the sphere's and the cylinder's closed
+    form; a pull-off law enters only below the bound (the criterion: its mean tension below gamma / r_K)."""
+    from memstribo.physics.capillary import bounded_pull_off, meniscus_force_bound
+
+    gamma, theta, radius = 0.072, math.radians(30), 1e-6
+    r_k = kelvin_radius(0.6)
+    h_c = condensation_height(r_k, theta)
+    # sphere on a flat: wetted disc x^2 / (2R) <= h_c, area 2 pi R h_c, perimeter 2 pi sqrt(2 R h_c)
+    sphere = meniscus_force_bound(2 * math.pi * radius * h_c, 0.0, r_k, gamma)
+    assert sphere == pytest.approx(capillary_force_sphere(radius, theta), rel=1e-12)
+    with_line = meniscus_force_bound(2 * math.pi * radius * h_c, 2 * math.pi * math.sqrt(2 * radius * h_c), r_k, gamma)
+    assert with_line - sphere == pytest.approx(gamma * 2 * math.pi * math.sqrt(2 * radius * h_c), rel=1e-12)
+    # cylinder on a flat, per unit length: width 2 sqrt(2 R h_c), two contact lines
+    cylinder = meniscus_force_bound(2 * math.sqrt(2 * 10e-6 * h_c), 2.0, r_k, gamma)
+    assert cylinder == pytest.approx(capillary_force_cylinder(10e-6, r_k, theta) + 2 * gamma, rel=1e-12)
+    assert meniscus_force_bound(1e-12, 1e-6, 0.0) == 0.0  # dry
+    bound = meniscus_force_bound(1e-14, 1e-7, r_k, gamma)
+    assert bounded_pull_off(10 * bound, 1e-14, 1e-7, r_k, gamma) == bound  # a crack law that needs more: the bound
+    assert bounded_pull_off(0.5 * bound, 1e-14, 1e-7, r_k, gamma) == 0.5 * bound  # a weaker one holds
+    with pytest.raises(InputError, match="area"):
+        meniscus_force_bound(-1.0, 0.0, r_k)
+
+
+def test_below_a_molecular_kelvin_radius_there_is_no_meniscus():
+    """One molecular diameter of water, (V_m / N_A)^(1/3) = 0.311 nm (r_K at RH 0.185): below it an adsorbed film."""
+    from memstribo.physics.capillary import forms_meniscus, molecular_kelvin_radius
+
+    assert molecular_kelvin_radius() == pytest.approx(0.3106e-9, rel=1e-3)
+    assert not forms_meniscus(kelvin_radius(0.1)) and not forms_meniscus(0.0)
+    assert forms_meniscus(kelvin_radius(0.2)) and forms_meniscus(kelvin_radius(0.9))
+
+
+def test_no_meniscus_element_pulls_beyond_its_laplace_pressure():
+    """Issue #36, done when: every block's bridge force is at most gamma / r_K over its wetted area plus gamma on
+    its contact lines (a block-by-block check on a synthetic row), and the gear's capillary pull-off and its part of
+    F_adh at every step stay within (gamma / r_K) bridged_area + gamma bridged_perimeter."""
+    from types import SimpleNamespace
+
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh
+    from memstribo.simulations.mesh.steps import _block_pull_off, _meniscus_ends
+
+    gamma = 0.072
+    r_k = kelvin_radius(0.9)
+    ctx = SimpleNamespace(dx=2e-9, w_adh=100e-9, modulus=85e9, c_ns=1.044, r_kelvin=r_k, surface_tension=gamma)
+    rng = np.random.default_rng(1)
+    wet = rng.random((3, 400)) < 0.4
+    k1_at_x = np.broadcast_to(np.arange(400) // 50, (3, 400))
+    ends = _meniscus_ends(wet)
+    work = np.where(wet, 0.125, 1.0)
+    total = _block_pull_off(ctx, wet.astype(float), work, k1_at_x, (wet, ends))
+    unbounded = _block_pull_off(ctx, wet.astype(float), work, k1_at_x)
+    bound = laplace_pressure(r_k, gamma) * wet.sum(axis=1) * ctx.dx * ctx.w_adh + gamma * ends.sum(axis=1) * ctx.w_adh
+    assert np.all(total <= bound * (1 + 1e-12)) and np.all(unbounded > 3 * bound)  # the crack law alone: 3x and more
+    for rh in (0.5, 0.9):
+        ds = simulate_mesh(get_parameter_values().updated({"environment": "air", "relative_humidity": rh}), steps=21)
+        limit = (laplace_pressure(kelvin_radius(rh), gamma) * np.asarray(ds["bridged_area"])
+                 + gamma * np.asarray(ds["bridged_perimeter"]))
+        pull, part = np.asarray(ds["capillary_pull_off"]), np.asarray(ds["capillary_adhesion_force"])
+        assert pull.max() > 0 and np.all(pull <= limit * (1 + 1e-12)) and np.all(part <= pull * (1 + 1e-12))

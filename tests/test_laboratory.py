@@ -116,14 +116,15 @@ def test_constant_samples_reach_the_coated_case():
     assert values[0, 0] == values[1, 0]  # the sampled coating constants stand for OTS only
 
 
-def test_work_of_separation_of_a_touching_interface_is_w_plus_the_meniscus():
+def test_work_of_separation_of_a_touching_interface_is_the_larger_of_w_and_the_meniscus():
     params = get_parameter_values("silicon_oxide_air")
     z0 = params["cutoff_distance"]
     w = params["hamaker_constant"] / (12 * math.pi * z0**2)
     total, vdw, cap = predict.beam_work_of_separation(np.zeros(50), params, 0.0)
     assert vdw == pytest.approx(w, rel=0.01) and cap == 0.0
-    _, _, cap = predict.beam_work_of_separation(np.zeros(50), params, 0.9)
+    total, _, cap = predict.beam_work_of_separation(np.zeros(50), params, 0.9)
     assert cap == pytest.approx(2 * WATER["surface_tension"] * math.cos(params["water_contact_angle"]), rel=0.01)
+    assert total == pytest.approx(max(w, cap), rel=1e-12)  # one work per element (issue #36)
     assert kelvin_radius(0.9) > 0
 
 

@@ -223,12 +223,13 @@ def user_set(params, name: str) -> bool:
 def check_unused_values(params) -> None:
     """Refuse values the user set that the model would ignore without a word.
 
-    ``relative_humidity`` acts only in air (``environment = 'air'``); as ``--wear`` without ``--coating``
-    is refused, a humidity in vacuum is too. (``ambient_temperature`` acts in vacuum as well: the tooth's
+    ``relative_humidity`` (and the vapour, its pressure ratio and the surface termination, which set the menisci)
+    act only in air (``environment = 'air'``); as ``--wear`` without ``--coating`` is refused, a humidity in
+    vacuum is too. (``ambient_temperature`` acts in vacuum as well: the tooth's
     temperature and the coating's stability, docs/thermal.md.)
     """
     if params["environment"] == "vacuum":
-        for name in ("relative_humidity",):
+        for name in ("relative_humidity", "vapour", "vapour_pressure_ratio", "surface_termination"):
             if user_set(params, name):
                 raise InputError(f"{name} is used only in air, but environment is 'vacuum' (the default): add "
                                  f"--set environment=air, or leave {name} out.")

@@ -79,14 +79,20 @@ _ENTRIES = [
      "solve (it loads the contact; not part of F_adh since issue #28)"),
     ("wetted_area", "m^2", "wetted area", "area under capillary menisci"),
     ("capillary_pull_off", "N", "capillary pull-off force", "force to pull the flanks apart against the water "
-     "bridges of the rough rows: every gap below h_c plus the adsorbed films (isotherm on SiO2), each pinion block's "
-     "pull-off (3-32) with the bridges' work of separation, summed (3-31); issue #28, docs/humidity.md"),
+     "bridges of the rough rows: every gap below h_c plus the liquid-like adsorbed films (the termination's "
+     "isotherm less its bound layers), each pinion block's "
+     "pull-off the smaller of (3-32) with the bridges' work and the meniscus bound (gamma / r_K) A + gamma L of its "
+     "bridged area and contact lines, summed (3-31); none below a molecular Kelvin radius (adsorbed film); "
+     "issues #28, #36, docs/humidity.md"),
     ("capillary_adhesion_force", "N", "capillary part of F_adh", "the water bridges' part of the adhesion force "
-     "F_adh in humid air: each pinion block's pull-off (3-32) with, per element, the bridge's work of separation "
-     "beyond the vdW work w12 there (one work per element, the larger of the two), summed (3-31); issue #28, "
-     "docs/humidity.md"),
-    ("bridged_area", "m^2", "bridged area", "area of the rough rows where the gap is below h_c plus the adsorbed "
-     "water films (water bridges, issue #28)"),
+     "F_adh in humid air: each pinion block's pull-off, bounded as capillary_pull_off's, over the elements where the "
+     "bridge's work of separation exceeds the vdW work w12 (one work per element, the larger of the two), summed "
+     "(3-31); issues #28, #36, docs/humidity.md"),
+    ("bridged_area", "m^2", "bridged area", "area of the rough rows where the gap is below h_c plus the liquid-like "
+     "adsorbed films (water or vapour bridges, issues #28, #36)"),
+    ("bridged_perimeter", "m", "bridged perimeter", "length of the water bridges' contact lines on the rough rows: "
+     "two lines across the block width per wetted run (issue #36); the meniscus bound is (gamma / r_K) "
+     "bridged_area + gamma bridged_perimeter"),
     ("adsorbed_water_thickness", "m", "adsorbed water film thickness", "thickness t(RH) of the water film on "
      "hydrophilic silicon oxide from the published isotherm (Asay and Kim 2005; Verdaguer et al. 2007)"),
     ("normal_force", "N", "normal force", "normal force on the tooth pair (mesh) or on the structure (slide)"),

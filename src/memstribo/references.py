@@ -143,6 +143,41 @@ REFERENCES: dict[str, str] = {
         "F. W. DelRio, M. L. Dunn, L. M. Phinney, C. J. Bourdon, M. P. de Boer, 'Rough surface adhesion in the "
         "presence of capillary condensation', Appl. Phys. Lett. 90 (2007) 163104. doi:10.1063/1.2723658"
     ),
+    "fisher_gamble_1981": (
+        "L. R. Fisher, R. A. Gamble, J. Middlehurst, 'The Kelvin equation and the capillary condensation of water', "
+        "Nature 290 (16 April 1981), measured at p/p0 0.945-0.996 (meniscus radii about 120 to 9 nm) (the "
+        "record seen: its first page; DOI not found in the searched records)"
+    ),
+    "yang_2020": (
+        "Q. Yang, P. Z. Sun, L. Fumagalli, Y. V. Stebunov, S. J. Haigh, Z. W. Zhou, I. V. Grigorieva, F. C. Wang, "
+        "A. K. Geim, 'Capillary condensation under atomic-scale confinement', Nature 588 (2020) 250-253. "
+        "doi:10.1038/s41586-020-2978-1 (arXiv:2009.11238)"
+    ),
+    "deboer_2007": (
+        "M. P. de Boer, 'Capillary adhesion between elastically hard rough surfaces', Exp. Mech. 47 (2007) 171-183. "
+        "doi:10.1007/s11340-006-0631-z"
+    ),
+    "langmuir_2009_rough_capillary": (
+        "'Effects of capillary condensation in adhesion between rough surfaces', Langmuir 25 (2009) 11727-11731. "
+        "doi:10.1021/la900455k (authors not in the record seen; PubMed 19788224)"
+    ),
+    "jasper_1972": (
+        "J. J. Jasper, 'The surface tension of pure liquid compounds: a compilation of data', J. Phys. Chem. Ref. Data "
+        "1 (1972) (National Standard Reference Data System, DTIC ADD095026); linear coefficients as tabulated in the "
+        "Jasper-Lange table of the 'chemicals' library (CalebBell/chemicals, chemicals/Interface/Jasper-Lange.tsv)"
+    ),
+    "chen_2018_water_si": (
+        "L. Chen, X. He, H. Liu, L. Qian, S. H. Kim, 'Water adsorption on hydrophilic and hydrophobic surfaces of "
+        "silicon', J. Phys. Chem. C 122 (2018) 11385-11391 (ATR-IR isotherms on Si-OH and HF-etched Si-H)"
+    ),
+    "si_h_contact_angle": (
+        "Water contact angle of freshly etched Si-H, 111 +- 1 deg, Table 1 of the article PMC2784167 (Biomaterials; "
+        "https://pmc.ncbi.nlm.nih.gov/articles/PMC2784167/)"
+    ),
+    "vpl_humidity_2014": (
+        "'Humidity effects on in situ vapor phase lubrication with n-pentanol', Tribol. Lett. (2014). "
+        "doi:10.1007/s11249-014-0345-9 (p/p_sat 0.5 keeps a monolayer of n-pentanol on SiO2)"
+    ),
     "butt_kappl_2009": (
         "H.-J. Butt, M. Kappl, 'Normal capillary forces', Adv. Colloid Interface Sci. 146 (2009) 48-60. "
         "doi:10.1016/j.cis.2008.10.002"

@@ -9,8 +9,7 @@ median and the 90 % band (5th to 95th percentile) over roughness realisations x 
 a row whose case the model cannot build is returned as "not predicted" with the reason.
 
 Speed (what the generator uses): friction cases slide the 2-block structure over 1 um in steps of
-the bond length on a 2.4 um synthetic profile (about 0.03 s each); microbeams average over a 20 um
-line.
+the bond length on a 2.4 um synthetic profile (about 0.03 s each); microbeams average over a 5.12 um square gap map.
 """
 
 from __future__ import annotations
@@ -30,8 +29,9 @@ FRICTION = ("static_cof", "kinetic_cof")
 #: sliding distance of a friction case [m] and the length of its synthetic profile [m]
 SLIDE_DISTANCE = 1.0e-6
 PROFILE_LENGTH = 2.4e-6
-#: length of a microbeam's synthetic gap line [m]
-BEAM_LENGTH = 20e-6
+#: side [m] and points per side of a microbeam's synthetic gap map (a 5.12 um square, 10 nm spacing)
+BEAM_MAP_SIZE = 5.12e-6
+BEAM_MAP_POINTS = 512
 #: the sidewall roughness when the source gives none: AFM of a polysilicon MEMS sidewall (van Spengen 2010)
 SIDEWALL_ROUGHNESS = {"rq": 10.3e-9, "correlation_length": 83e-9,
                       "reason": "not in the cited record; polysilicon sidewall AFM, Rq 10.3 nm, exponential "
@@ -184,14 +184,17 @@ def _friction_values(row, samples, realisations, calibration_coating, seed):
         if row.coating:
             params = _coated(params, row.coating)
         area = int(params["slider_blocks"]) * params["adhesive_width"] ** 2
-        load = pressure * area
+        if rough is None:
+            rq, corr = params["roughness_rq"], math.sqrt(2.0) * params["roughness_rq"] / params["roughness_rms_slope"]
+        else:
+            rq, corr = rough[0], rough[1]
         for k in range(realisations):
             if k not in profiles:
-                if rough is None:
-                    rq, corr = params["roughness_rq"], math.sqrt(2.0) * params["roughness_rq"] / params["roughness_rms_slope"]
-                else:
-                    rq, corr = rough[0], rough[1]
                 profiles[k] = _profile(rq, corr, PROFILE_LENGTH, seed + k)
+            # humidity (issue #36): the menisci's attraction adds to the load the contact carries (no shear of the
+            # meniscus or the film is added: none is cited)
+            capillary_pressure = _flat_capillary_pressure(row, params, rq, corr, seed + k)
+            load = (pressure + capillary_pressure) * area
             slid = sliding.slide_fixed_load(params, profiles[k], load=load, distance=SLIDE_DISTANCE)
             values[i, k] = (static_cof(slid, params) if row.quantity == "static_cof"
                             else sliding.summarize(slid).cof_mean)
@@ -200,12 +203,39 @@ def _friction_values(row, samples, realisations, calibration_coating, seed):
                 else f"roughness Rq {rough[0] * 1e9:.3g} nm, correlation length {rough[1] * 1e9:.3g} nm ({rough[2]})"
             case = (f"fixed-load sliding structure ({int(params['slider_blocks'])} nanoblocks) over a synthetic profile, "
                     f"{set_name}{' + ' + row.coating + ' (U_chem off)' if row.coating else ''}, nominal pressure "
-                    f"{pressure:.3g} Pa -> load {load:.3g} N on the structure; {note}; "
+                    f"{pressure:.3g} Pa -> load {load:.3g} N on the structure (with the menisci's "
+                    f"{capillary_pressure:.3g} Pa at RH {row.number('relative_humidity') or 0:g}); {note}; "
                     + ("static COF: the start-up force of the structure's bonds at rest (one crystal registry: "
                        "their lateral peak, 1.27 U / D, MODEL 7f) plus its elastic friction, over F_N + F_adh, "
                        "averaged over the rest positions of the slide"
                        if row.quantity == "static_cof" else "kinetic COF = cof_mean"))
     return values, case
+
+
+def _flat_capillary_pressure(row, params, rq, corr, seed):
+    """The menisci's attraction per apparent area of a flat or sidewall contact in air [Pa] (issue #36, MODEL 7g).
+
+    :func:`memstribo.physics.rough_capillary.meniscus_adhesion_pressure` on the gap map of the two rough surfaces
+    held rigidly on their highest summit (the microbeam's map, :func:`_beam_gap`), at the row's RH (p / p_sat of the
+    parameter set's vapour) and bridging height ``h_c`` plus the liquid-like films; a coated row takes its coating's
+    water contact angle on both surfaces (OTS, 112 deg: no meniscus); 0 in vacuum or dry gas."""
+    rh = row.number("relative_humidity")
+    if row.environment != "air" or not rh:
+        return 0.0
+    from memstribo.physics import capillary, rough_capillary, vapours
+
+    state = vapours.vapour_state(params.updated({"relative_humidity": rh, "vapour_pressure_ratio": None}))
+    theta = state["contact_angle"]
+    if row.coating:  # both surfaces coated (a SAM on the released structure): the coating's water angle
+        from memstribo.physics.coating import get_coating
+
+        theta = math.radians(float(getattr(get_coating(row.coating, params), "water_contact_angle_deg", math.nan)))
+        if not math.isfinite(theta):
+            return 0.0
+    film = vapours.liquid_film_thickness(state["vapour"], state["termination"], rh) if theta < 0.5 * math.pi else 0.0
+    height = capillary.bridging_height(state["kelvin"], film, film, theta)
+    return rough_capillary.meniscus_adhesion_pressure(_beam_gap(rq, corr, seed), BEAM_MAP_SIZE / BEAM_MAP_POINTS,
+                                                      state["kelvin"], height, state["surface_tension"])
 
 
 @cites("model")
@@ -229,60 +259,71 @@ def static_cof(dataset, params) -> float:
     return float(ratio.mean())
 
 
-@cites("maugis_1992", "israelachvili_2011")
+@cites("delrio_2007", "deboer_2007")
 def beam_work_of_separation(gap, params, relative_humidity):
-    """Work of separation of a rigid rough interface [J/m^2]: vdW surface law + menisci, averaged over the gap line.
+    """Adhesion energy of a rigid rough interface [J/m^2]: the asperity-level microbeam model (issue #36, MODEL 7g).
 
-    The two surfaces are pulled apart from the rough gap field ``gap`` (0 at the touching summit) to
-    infinity; the work per apparent area is the integral over the extra separation s of the mean
-    attraction: the Lennard-Jones (9-3) surface stress of :func:`memstribo.physics.adhesion.lennard_jones_surface_stress`
-    at h = z0 + g + s (its integral from z0 is w, so a fully touching interface gives w), plus the
-    meniscus pressure gamma / r_K wherever g + s <= h_c (:func:`memstribo.physics.capillary.capillary_pressure`,
-    r_K from RH, h_c = r_K (cos theta1 + cos theta2)), which integrates to 2 gamma cos(theta) on a fully wetted
-    interface.
+    :func:`memstribo.physics.rough_capillary.rough_adhesion_energy` on the gap field ``gap``: per element the larger
+    of the van der Waals energy ``A / (12 pi (g + D0)^2)`` and the water bridge's work ``(gamma / r_K) (h -
+    max(g, t))`` where the gap is below the bridging height h (the liquid-like adsorbed films t of the oxide), none
+    below a molecular Kelvin radius; Gamma is their mean. A touching interface holds ``w = A / (12 pi D0^2)`` dry and
+    ``max(w, 2 gamma cos theta)`` wet.
 
     Parameters
     ----------
     gap : array_like
-        Gaps of the interface at rest [m], >= 0.
+        Gaps of the interface at rest [m], >= 0 (a line or a map).
     params : memstribo.parameters.Parameters
-        Uses ``hamaker_constant``, ``cutoff_distance``, ``work_of_adhesion`` (unset: A / (12 pi D0^2), (3-34)),
-        ``water_contact_angle``, ``temperature``.
+        Uses ``hamaker_constant``, ``cutoff_distance``, ``work_of_adhesion`` (set: the Hamaker constant that gives
+        it, ``12 pi D0^2 w``), ``vapour`` and ``surface_termination`` (the liquid, its contact angle and its
+        liquid-like film, :mod:`memstribo.physics.vapours`; water on the oxide: ``water_contact_angle``),
+        ``ambient_temperature``.
     relative_humidity : float
-        RH [-] in [0, 1); 0: no menisci.
+        RH (p / p_sat of the vapour) [-] in [0, 1); 0: no menisci.
 
     Returns
     -------
     tuple of float
-        (total, vdW part, capillary part) [J/m^2].
+        (Gamma, the van der Waals energy's mean, the bridges' work's mean) [J/m^2]; Gamma is not their sum (one work
+        per element, the larger).
     """
-    from memstribo.physics import capillary
-    from memstribo.physics.adhesion import lennard_jones_surface_stress
+    from memstribo.physics import rough_capillary, vapours
 
     g = np.asarray(gap, dtype=float)
     z0 = params["cutoff_distance"]
-    w = params["work_of_adhesion"] or params["hamaker_constant"] / (12 * math.pi * z0**2)
-    s = np.concatenate([[0.0], np.geomspace(1e-3 * z0, 2e-6, 600)])
-    stress = np.array([np.mean(-lennard_jones_surface_stress(z0 + g + si, w, z0)) for si in s])
-    vdw = float(np.trapezoid(stress, s))
-    cap = 0.0
-    if relative_humidity > 0:
-        theta = params["water_contact_angle"]
-        r_k = capillary.kelvin_radius(relative_humidity, params["ambient_temperature"])
-        h_c = capillary.condensation_height(r_k, theta, theta)
-        if h_c > 0:
-            sc = np.linspace(0.0, h_c, 801)
-            pressure = np.array([np.mean(capillary.capillary_pressure(g + si, r_k, theta, theta)) for si in sc])
-            cap = float(np.trapezoid(pressure, sc))
-    return vdw + cap, vdw, cap
+    hamaker = 12 * math.pi * z0**2 * params["work_of_adhesion"] if params["work_of_adhesion"] else \
+        params["hamaker_constant"]
+    vapour, termination = params["vapour"], params["surface_termination"]
+    theta = vapours.vapour_contact_angle(vapour, termination, params["water_contact_angle"])
+    temperature = params["ambient_temperature"]
+    liquid = dict(films=2 * vapours.liquid_film_thickness(vapour, termination, relative_humidity) if theta < 0.5 *
+                  math.pi else 0.0, temperature=temperature,
+                  surface_tension=vapours.vapour_surface_tension(vapour, temperature),
+                  molar_volume=vapours.vapour_properties(vapour)["molar_volume"])
+    total = rough_capillary.rough_adhesion_energy(g, relative_humidity, hamaker, z0, theta, **liquid)
+    vdw = float(np.mean(rough_capillary.vdw_adhesion_energy(g, hamaker, z0)))
+    cap = float(np.mean(rough_capillary.capillary_adhesion_energy(g, relative_humidity, theta, **liquid)))
+    return total, vdw, cap
+
+
+def _surface_map(rq, corr, seed, size=None, points=None):
+    """A Gaussian-correlated random height map (autocorrelation ``Rq^2 exp(-r^2 / l^2)``) [m], ``points`` square
+    over ``size`` (default :data:`BEAM_MAP_POINTS` over :data:`BEAM_MAP_SIZE`): white noise filtered by the square
+    root of its spectrum ``exp(-k^2 l^2 / 4)`` (FFT)."""
+    size, points = size or BEAM_MAP_SIZE, points or BEAM_MAP_POINTS
+    rng = np.random.default_rng(seed)
+    k = 2.0 * math.pi * np.fft.fftfreq(points, size / points)
+    spectrum = np.exp(-(k[:, None] ** 2 + k[None, :] ** 2) * corr**2 / 4.0)
+    z = np.real(np.fft.ifft2(np.fft.fft2(rng.standard_normal((points, points))) * np.sqrt(spectrum)))
+    return z * (rq / z.std())
 
 
 def _beam_gap(rq, corr, seed):
-    # two independent rough surfaces (beam underside, substrate); the rigid beam rests on the highest summit
-    a = _profile(rq, corr, BEAM_LENGTH, seed).z
-    b = _profile(rq, corr, BEAM_LENGTH, seed + 10_000).z
-    s = a + b
-    return s.max() - s
+    # two independent rough surfaces (beam underside, substrate) as maps: the rigid beam rests on the highest summit
+    # of their sum (a line would wet a whole cylinder-like band around its one contact and lose the plateau)
+    from memstribo.physics.rough_capillary import rigid_interface_gaps
+
+    return rigid_interface_gaps(_surface_map(rq, corr, seed), _surface_map(rq, corr, seed + 10_000))
 
 
 def _beam_values(row, samples, realisations, calibration_coating, seed):
@@ -305,8 +346,9 @@ def _beam_values(row, samples, realisations, calibration_coating, seed):
                                 / beam_work_of_separation(gaps[k], params, low)[0])
     what = ("work of separation" if row.quantity == "adhesion_energy"
             else "ratio of the work of separation at RH {1:g} and {0:g}".format(*row.condition("relative_humidity_range")))
-    case = (f"rigid microbeam on its substrate, {what} of the rough gap line (two surfaces Rq {rq * 1e9:.3g} nm each, "
-            f"correlation length {corr * 1e9:.3g} nm, {note}): Lennard-Jones surface law + menisci, {set_name}")
+    case = (f"rigid microbeam on its substrate, {what} of the rough gap map (two surfaces Rq {rq * 1e9:.3g} nm each, "
+            f"correlation length {corr * 1e9:.3g} nm, {note}): per element the larger of the van der Waals energy and the "
+            f"water bridge's work (rough_capillary, DelRio et al. 2007), {set_name}")
     return values, case
 
 

@@ -252,6 +252,17 @@ _SPECS = [
            "0 (dry) to 0.99 (the Kelvin radius diverges at saturation)", exclusive_minimum=False),
     _range("water_contact_angle", "rad", "Water contact angle of the bare (oxidised) silicon surface; a coating's "
            "own angle replaces it on coated blocks", 0.0, math.pi, "0 to 180 deg", exclusive_minimum=False),
+    ParameterSpec("vapour", "", "Condensable vapour of the environment 'air' (issue #36): 'water' or 'pentanol' (the "
+                  "alcohol vapour lubricant of MEMS); its surface tension, molar volume, contact angle and isotherm "
+                  "are data (memstribo.physics.vapours); one vapour at a time", kind="str",
+                  choices=("water", "pentanol")),
+    ParameterSpec("surface_termination", "", "Chemistry of the bare silicon flanks (issue #36): 'oxide' (native "
+                  "oxide, silanols: hydrophilic) or 'hydrogen' (HF-etched Si-H: hydrophobic to water); sets the "
+                  "vapour's contact angle and adsorbed film (memstribo.physics.vapours)", kind="str",
+                  choices=("oxide", "hydrogen")),
+    _range("vapour_pressure_ratio", "", "p / p_sat of the vapour (environment 'air'); unset: relative_humidity (for "
+           "water they are the same)", 0.0, 0.99, "0 (none) to 0.99 (the Kelvin radius diverges at saturation)",
+           exclusive_minimum=False, optional=True),
     _range("meniscus_renewal_distance", "m", "Sliding distance after which a meniscus has broken and re-formed "
            "(its rupture energy is dissipated once per distance); unset: atomic_pitch", 1e-10, 1e-5,
            "from an atomic distance to 10 um", optional=True),

@@ -12,8 +12,12 @@ The model: the circular-meniscus (Laplace-Kelvin) approximation with the meniscu
 equilibrium with the vapour (Fisher and Israelachvili 1981; Butt and Kappl 2009), the
 condensation height ``h_c = r_K (cos theta_1 + cos theta_2)``, the Laplace pressure
 ``gamma / r_K`` acting over the wetted area, and no meniscus on a hydrophobic pair
-(``cos theta_1 + cos theta_2 <= 0``). Valid when r_K is well above a molecular size (RH above
-about 0.1); the adsorbed-film regime below is not modelled as a force (say so where it matters). The
+(``cos theta_1 + cos theta_2 <= 0``). A meniscus needs a Kelvin radius of at least one molecular diameter
+(:func:`molecular_kelvin_radius`, 0.311 nm for water: RH 0.185 at 25 degC); below it the condensate is an adsorbed
+film, whose attraction is the interface's own, and no meniscus force is counted (:func:`forms_meniscus`, issue #36).
+No meniscus pulls with more than its Laplace pressure over its wetted area plus gamma on its contact lines
+(:func:`meniscus_force_bound`); an elastic pull-off law of a bridged interface is capped by it
+(:func:`bounded_pull_off`, MODEL 7g). The
 adsorbed water film's thickness (a published isotherm on silicon oxide, [4]_ [5]_) sets how far a water bridge
 reaches: :func:`bridging_height`, :func:`meniscus_work_of_separation` (issue #28).
 
@@ -44,8 +48,9 @@ from memstribo.references import cites
 __all__ = ["GAS_CONSTANT", "WATER", "REFERENCE_TEMPERATURE", "water_surface_tension", "kelvin_radius",
            "condensation_height", "laplace_pressure",
            "capillary_force_sphere", "capillary_force_cylinder", "capillary_pressure", "capillary_force_from_gap",
-           "WATER_ISOTHERM_SIO2", "water_monolayer_thickness", "adsorbed_water_thickness", "bridging_height",
-           "meniscus_work_of_separation"]
+           "WATER_ISOTHERM_SIO2", "water_monolayer_thickness", "adsorbed_water_thickness", "liquid_water_thickness", "bridging_height",
+           "meniscus_work_of_separation", "molecular_kelvin_radius", "forms_meniscus", "meniscus_force_bound",
+           "bounded_pull_off"]
 
 #: Molar gas constant R [J/(mol K)] (CODATA 2018, exact).
 GAS_CONSTANT = 8.314462618
@@ -277,6 +282,20 @@ def adsorbed_water_thickness(relative_humidity):
     return float(result) if np.ndim(result) == 0 else result
 
 
+@cites("asay_kim_2005", "verdaguer_2007")
+def liquid_water_thickness(relative_humidity):
+    """The liquid-like part of the water film on silicon oxide [m]: :func:`adsorbed_water_thickness` less its
+    ice-like layers.
+
+    The first three layers, complete by RH 0.3, are ice-like (hydrogen-bonded to the silanols, Asay and Kim 2005)
+    and do not flow into a meniscus; what grows above them is liquid-like: ``max(t(RH) - t(0.3), 0)``, 0 up to
+    RH 0.3, 0.21 nm at RH 0.5, 1.09 nm at RH 0.9. ``relative_humidity`` [-] in [0, 1).
+    """
+    ice = adsorbed_water_thickness(WATER_ISOTHERM_SIO2[1][0])
+    result = np.maximum(adsorbed_water_thickness(relative_humidity) - ice, 0.0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
 @cites("butt_kappl_2009")
 def bridging_height(kelvin, film_1, film_2, contact_angle_1, contact_angle_2=None):
     """Largest gap that a water bridge spans, ``h_c + t_1 + t_2`` [m] (Butt and Kappl 2009, [2]_).
@@ -334,3 +353,76 @@ def meniscus_work_of_separation(gap, kelvin, height, films=0.0, surface_tension=
     if k == 0.0:
         return np.zeros(np.broadcast(g, h, t).shape)
     return laplace_pressure(k, surface_tension) * np.maximum(h - np.maximum(g, np.minimum(t, h)), 0.0)
+
+
+@cites("fisher_gamble_1981", "yang_2020")
+def molecular_kelvin_radius(molar_volume=WATER["molar_volume"]):
+    """The smallest Kelvin radius of a meniscus [m]: one molecular diameter of the liquid, ``(V_m / N_A)^(1/3)``.
+
+    0.311 nm for water (:func:`water_monolayer_thickness`; r_K reaches it at RH 0.185, 25 degC). Below it the
+    condensate cannot be a continuum meniscus: it is an adsorbed film, one molecular layer or less, whose attraction
+    is the interface's own (van der Waals, counted by the interface law), not a Laplace pressure. The Kelvin equation
+    with bulk water's constants has been checked down to meniscus radii of about 9 nm for water (Fisher, Gamble and
+    Middlehurst 1981; menisci of diameter >= 8 nm by the consensus Yang et al. 2020 review) and, in slits under
+    0.4 nm that hold one monolayer, found to describe the condensation transition of strongly hydrophilic walls
+    (Yang et al. 2020, "fortuitous", by the walls' elastic deformation): one molecular diameter is where a meniscus
+    ends, since a smaller radius of curvature has no molecule to make it of. ``molar_volume`` [m^3/mol].
+    """
+    return water_monolayer_thickness(molar_volume)
+
+
+def forms_meniscus(kelvin, molar_volume=WATER["molar_volume"]):
+    """Whether a condensate of Kelvin radius ``kelvin`` [m] is a meniscus (True) or an adsorbed film (False).
+
+    A meniscus needs ``r_K >= ``:func:`molecular_kelvin_radius` (0.311 nm for water); dry air (r_K = 0) forms none.
+    """
+    k = float(as_array(kelvin, "kelvin", "m", nonnegative=True))
+    return k >= molecular_kelvin_radius(molar_volume)
+
+
+@cites("israelachvili_2011", "butt_kappl_2009")
+def meniscus_force_bound(area, perimeter, kelvin, surface_tension=WATER["surface_tension"]):
+    """The largest force a meniscus can pull with [N]: ``(gamma / r_K) A + gamma L``, Eqs. (17.3), (17.10) in [3]_.
+
+    The Laplace pressure ``gamma / r_K`` (:func:`laplace_pressure`) over the wetted area ``A`` plus the surface
+    tension on its perimeter ``L`` (the liquid-vapour interface pulls each solid with at most ``gamma`` per length of
+    contact line: ``gamma sin`` of its angle to the surface, [2]_). No water bridge holds more: any pull-off law of a
+    bridged interface is capped by it (:func:`bounded_pull_off`). For a sphere on a flat (``A = 2 pi R h_c``) the
+    area term is the closed form :func:`capillary_force_sphere`; for a cylinder (per length, ``A = 2 sqrt(2 R h_c)``)
+    it is :func:`capillary_force_cylinder`.
+
+    Parameters
+    ----------
+    area : numeric
+        Wetted area A [m^2] (the gap map's elements narrower than the condensation height), >= 0.
+    perimeter : numeric
+        Length L [m] of the meniscus's contact line, >= 0.
+    kelvin : numeric
+        r_K [m] (0: no meniscus, no force).
+    surface_tension : numeric
+        gamma [N/m].
+    """
+    a = as_array(area, "area", "m^2", nonnegative=True)
+    length = as_array(perimeter, "perimeter", "m", nonnegative=True)
+    gamma = as_array(surface_tension, "surface_tension", "N/m", positive=True)
+    k = as_array(kelvin, "kelvin", "m", nonnegative=True)
+    result = np.where(k > 0, laplace_pressure(k, gamma) * a + gamma * length, 0.0)
+    return float(result) if np.ndim(result) == 0 else result
+
+
+@cites("maugis_1992", "israelachvili_2011")
+def bounded_pull_off(crack_force, area, perimeter, kelvin, surface_tension=WATER["surface_tension"]):
+    """Pull-off force of a bridged interface [N]: the smaller of its elastic crack law and the meniscus bound.
+
+    ``F = min(F_crack, (gamma / r_K) A + gamma L)`` (:func:`meniscus_force_bound`). The criterion: an elastic
+    pull-off law (the thesis's block pull-off (3-32), a Griffith/Kendall crack with the bridge's work) holds only
+    where the mean tension it needs over the bridged area, ``F_crack / A``, stays below the Laplace pressure
+    ``gamma / r_K`` that the water can hold; past it the bridge fails by its strength, not by a crack (Maugis 1992:
+    the Dugdale zone's strength-limited branch). At the gear's block size the crack law needs about 540 MPa, above
+    gamma / r_K at every RH below 0.995, so the bound decides there.
+
+    ``crack_force`` [N] (>= 0), ``area`` [m^2], ``perimeter`` [m], ``kelvin`` r_K [m], ``surface_tension`` [N/m].
+    """
+    crack = as_array(crack_force, "crack_force", "N", nonnegative=True)
+    result = np.minimum(crack, meniscus_force_bound(area, perimeter, kelvin, surface_tension))
+    return float(result) if np.ndim(result) == 0 else result

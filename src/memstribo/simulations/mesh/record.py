@@ -122,6 +122,7 @@ def _variables(params, setup, cycle, verdict, step) -> dict:
         **_limit_variables(cycle, verdict, denominator),
         # in air only (a vacuum dataset stays as it was): the water bridges of the rough rows (issue #28)
         **({"capillary_pull_off": out["f_cap_pull"], "bridged_area": out["bridged"],
+            "bridged_perimeter": out["bridged_perimeter"],
             "capillary_adhesion_force": out["f_cap_bridge"]}
            if params["environment"] == "air" else {}),
     }

@@ -87,7 +87,7 @@ _ROW_BOND_KEYS = {False: ("chem_bonds", "vdw_bonds", "_none"), True: ("chem_bond
 _TOTALS = ("chem_bonds", "vdw_bonds", "f_chem", "f_vdw", "e_el", "f_adh", "contact_width", "max_pressure",
            "unconverged", "residual", "iterations", "window_exceeded", "approach", "rigid_atomic_blocks", "vdw_edge",
            "f_cap", "f_cap_adh", "wetted", "f_chem_rigid", "f_vdw_capped", "f_vdw_over",
-           "plastic_elements", "contact_elements", "f_cap_pull", "bridged", "f_cap_bridge",
+           "plastic_elements", "contact_elements", "f_cap_pull", "bridged", "f_cap_bridge", "bridged_perimeter",
            "vdw_bonds_bare", "vdw_bonds_coated",  # vdW bonds over bare / coated gear blocks (rescaling, issue 27)
            "_none")  # stays zero: an uncoated gear's coated-vdW bonds per row
 
@@ -147,20 +147,27 @@ def _context(setup, params, coating, wear, modulus):
     ctx.ideal_shear = float(params["ideal_shear_strength"])
     ctx.humid = params["environment"] == "air"
     if ctx.humid:
-        from memstribo.physics import capillary
+        from memstribo.physics.vapours import vapour_state
 
-        # water at the ambient temperature: its surface tension sets the Kelvin radius, the Laplace pressure
-        # and the rupture energy alike (docs/thermal.md; 0.072 N/m exactly at 298.15 K)
-        ctx.surface_tension = float(capillary.water_surface_tension(params["ambient_temperature"]))
-        ctx.r_kelvin = capillary.kelvin_radius(params["relative_humidity"], params["ambient_temperature"],
-                                               ctx.surface_tension)
-        ctx.theta_bare = float(params["water_contact_angle"])
+        # the vapour (water or pentanol) at the ambient temperature on the flanks' termination (issue #36): its
+        # surface tension sets the Kelvin radius, the Laplace pressure and the rupture energy alike (docs/thermal.md;
+        # water: 0.072 N/m exactly at 298.15 K); below one molecular diameter the condensate is an adsorbed film,
+        # not a meniscus (MODEL 7g): r_K = 0, no Laplace traction, no bridge, no rupture
+        state = vapour_state(params)
+        ctx.surface_tension = state["surface_tension"]
+        ctx.r_kelvin = state["kelvin"]
+        ctx.theta_bare = state["contact_angle"]
         ctx.theta_coat = ctx.theta_bare
-        if coating is not None and math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
-            ctx.theta_coat = math.radians(coating.water_contact_angle_deg)
+        if coating is not None:
+            if state["vapour"] != "water":
+                raise InputError(f"a coated gear in {state['vapour']} vapour: memstribo has the coatings' water "
+                                 "contact angles only; use vapour = 'water' or no coating.")
+            if math.isfinite(getattr(coating, "water_contact_angle_deg", math.nan)):
+                ctx.theta_coat = math.radians(coating.water_contact_angle_deg)
         ctx.renewal = params["meniscus_renewal_distance"] or params["atomic_pitch"]
-        # adsorbed water film on the hydrophilic (oxidised) flanks, from the published isotherm (issue #28)
-        ctx.film = capillary.adsorbed_water_thickness(params["relative_humidity"])
+        # the liquid-like part of the adsorbed film on the flanks, from the termination's published isotherm (issues
+        # #28, #36): the bound (ice-like) layers do not flow into a bridge, as in the microbeam and the flat case
+        ctx.film = state["liquid_film"]
 
     def gear_bare(k, row):
         """Gear blocks bare (worn coating) or coated: a deterministic low-discrepancy choice."""
@@ -464,9 +471,7 @@ def _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x, w_vdw):
     # attraction: the contact solve's meniscus line load over the row (line contact), else the wetted area's
     out["f_cap_adh"] += (info[:, 5] * ctx.w_adh if zone is not None
                          else capillary.laplace_pressure(ctx.r_kelvin, ctx.surface_tension) * area.sum(axis=1))
-    # the force to pull the flanks apart against the water bridges (issue #28): the pull-off of each pinion block
-    # (3-32) with the work of separation of the bridges in every gap of the rough row narrower than h_c + the
-    # adsorbed films, summed over the blocks (3-31)
+    # the water bridges span every gap of the rough row narrower than h_c + the adsorbed films (issue #28)
     # (the isotherm is the hydrophilic oxide's: a hydrophobic coating, theta >= 90 deg, carries no film)
     films = (np.where(theta_bare < 0.5 * np.pi, ctx.film, 0.0)
              + np.where(np.asarray(theta_gear) < 0.5 * np.pi, ctx.film, 0.0))
@@ -474,14 +479,21 @@ def _menisci(out, ctx, gap, info, zone, bare_x, k1_at_x, w_vdw):
     work = capillary.meniscus_work_of_separation(gap, ctx.r_kelvin, bridge, films, ctx.surface_tension)
     bridged = work > 0
     out["bridged"] += bridged.sum(axis=1) * (ctx.w_adh * ctx.dx)
-    out["f_cap_pull"] += _block_pull_off(ctx, bridged.astype(float), np.where(bridged, work, 1.0), k1_at_x)
-    # the bridges' part of F_adh (issue #28): one work of adhesion per element, the larger of the vdW's and the
-    # bridge's where F_adh's vdW part acts (a wetted contact's work of separation is the solids' own, 2 gamma_SV =
-    # W_SLS + 2 gamma cos theta by Young's equation, Israelachvili 2011 ch. 17: not the dry work plus the bridge's);
-    # the vdW part carries w_vdw, the bridges add the pull-off (3-32, summed 3-31) of their work beyond it
+    # the force to pull the flanks apart against the water bridges (issue #36, MODEL 7g): each pinion block pulls
+    # with the smaller of its elastic pull-off (3-32, the bridges' work) and the meniscus bound, the Laplace
+    # pressure over its bridged area plus gamma on its contact lines (capillary.bounded_pull_off), summed (3-31)
+    ends = _meniscus_ends(bridged)
+    out["bridged_perimeter"] += ends.sum(axis=1) * ctx.w_adh
+    out["f_cap_pull"] += _block_pull_off(ctx, bridged.astype(float), np.where(bridged, work, 1.0), k1_at_x,
+                                         (bridged, ends))
+    # the bridges' part of F_adh: one adhesive traction per element, the larger of the vdW's and the bridge's
+    # (a wetted contact's work of separation is the solids' own, 2 gamma_SV = W_SLS + 2 gamma cos theta by Young's
+    # equation, Israelachvili 2011 ch. 17: not the dry work plus the bridge's); where F_adh's vdW part acts with the
+    # larger work the bridge adds nothing, elsewhere its pull-off, bounded as above
     excess = np.maximum(work - w_vdw, 0.0)
     adds = excess > 0
-    out["f_cap_bridge"] += _block_pull_off(ctx, adds.astype(float), np.where(adds, excess, 1.0), k1_at_x)
+    out["f_cap_bridge"] += _block_pull_off(ctx, adds.astype(float), np.where(adds, excess, 1.0), k1_at_x,
+                                           (adds, np.where(adds, ends, 0)))
     # the meniscus's rupture energy gamma (cos theta_1 + cos theta_2) per wetted area, once per renewal
     rupture = ctx.surface_tension * (np.cos(theta_bare) + np.cos(theta_gear))
     out["f_cap"] += (area * rupture).sum(axis=1) / ctx.renewal
@@ -497,10 +509,15 @@ def _interlocking_energy(out, ctx, lattices, flank_states, sliding_fraction):
     out["e_el"] += e_el * sliding_fraction
 
 
-def _block_pull_off(ctx, inside, w_x, k1_at_x):
+def _block_pull_off(ctx, inside, w_x, k1_at_x, meniscus=None):
     """Adhesion force (3-31) of a row from the pull-off (3-32) of each pinion block: a = half its engaged length,
-    w12 averaged over it."""
-    from memstribo.physics import adhesion, friction
+    w12 averaged over it.
+
+    ``meniscus`` (water bridges, MODEL 7g): (wetted elements, contact-line ends per element) of the bridges; each
+    block's pull-off is then :func:`memstribo.physics.capillary.bounded_pull_off`, the smaller of (3-32) and the
+    Laplace pressure over the block's wetted area plus gamma w_adh per contact-line end in it (the row's wetted runs
+    end in lines across the block width)."""
+    from memstribo.physics import adhesion, capillary, friction
 
     n_steps = inside.shape[0]
     dx, w_adh = ctx.dx, ctx.w_adh
@@ -516,4 +533,18 @@ def _block_pull_off(ctx, inside, w_x, k1_at_x):
     pull_off = np.zeros_like(a)
     if engaged.any():
         pull_off[engaged] = adhesion.pull_off_force(work[engaged], ctx.modulus, ctx.c_ns, a[engaged])  # (3-32)
+    if meniscus is not None:
+        wet, ends = meniscus
+        area = np.bincount(flat, weights=(wet * (dx * w_adh)).ravel(), minlength=n_steps * n_keys)
+        perimeter = np.bincount(flat, weights=(ends * w_adh).ravel(), minlength=n_steps * n_keys)
+        pull_off = capillary.bounded_pull_off(pull_off, area.reshape(n_steps, n_keys),
+                                              perimeter.reshape(n_steps, n_keys), ctx.r_kelvin, ctx.surface_tension)
     return friction.adhesion_force(pull_off, axis=1)  # (3-31)
+
+
+def _meniscus_ends(wet):
+    """Contact-line ends of the wetted runs of a row (steps, n) [-]: per element, 1 where a run starts, 1 where it
+    ends (2 for a run of one element). A run reaching the window's end is closed there (an upper bound)."""
+    before = np.concatenate([np.zeros((wet.shape[0], 1), dtype=bool), wet[:, :-1]], axis=1)
+    after = np.concatenate([wet[:, 1:], np.zeros((wet.shape[0], 1), dtype=bool)], axis=1)
+    return (wet & ~before).astype(int) + (wet & ~after).astype(int)

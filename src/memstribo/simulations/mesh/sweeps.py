@@ -138,7 +138,7 @@ def critical_humidity(points) -> dict:
         with realisations also ``critical_humidity_realisations`` (one value or None each),
         ``critical_humidity_p05``/``_median``/``_p95`` over the realisations that cross and
         ``critical_humidity_crossing_fraction`` and ``critical_humidity_stuck_at_lowest`` (realisations
-        that already stick at the lowest RH, counted there). A crossing below RH 0.1 is flagged in the note.
+        that already stick at the lowest RH, counted there). A crossing below RH 0.185 (no meniscus: MODEL 7g) is flagged in the note.
     """
     if not points or any("relative_humidity" not in p or "stiction_margin" not in p for p in points):
         raise InputError("critical_humidity needs the points of a humidity sweep (relative_humidity, "
@@ -149,8 +149,9 @@ def critical_humidity(points) -> dict:
     low, high = float(humidity[0]), float(humidity[-1])
     value = _first_crossing(humidity, margin)
     if value is not None and 0.0 < value < _LOWEST_MENISCUS_HUMIDITY:
-        low_note = (f"; RH {value:.3f} is below {_LOWEST_MENISCUS_HUMIDITY:g}, where the Kelvin radius is about a "
-                    "molecular size and the meniscus model does not hold: read it as 'as soon as menisci form'")
+        low_note = (f"; RH {value:.3f} is below {_LOWEST_MENISCUS_HUMIDITY:g}, where the Kelvin radius is below a "
+                    "molecular size and the meniscus model does not hold (an adsorbed film, no meniscus force: MODEL "
+                    "7g): the crossing lies between the swept points, read it as 'as soon as menisci form'")
     else:
         low_note = ""
     if value is None:

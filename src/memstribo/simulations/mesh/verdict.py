@@ -89,9 +89,10 @@ SUMMARY_KEYS = ("cof_mean", "cof_max", "cof_chemical", "cof_vdw", "cof_elastic",
 SUMMARY_UNITS = {key: quantity_unit(key) for key in SUMMARY_KEYS}
 
 
-#: Below this relative humidity the Kelvin radius is about a molecular size (0.23 nm at RH 0.1, 25 degC):
-#: the meniscus model's lower limit (docs/humidity.md).
-_LOWEST_MENISCUS_HUMIDITY = 0.1
+#: Below this relative humidity the Kelvin radius of water at 25 degC is below one molecular diameter (0.311 nm,
+#: :func:`memstribo.physics.capillary.molecular_kelvin_radius`): an adsorbed film, not a meniscus (RH 0.185;
+#: MODEL 7g, docs/humidity.md).
+_LOWEST_MENISCUS_HUMIDITY = 0.185
 
 
 def sliding_average(values, sliding, distance):
@@ -193,13 +194,17 @@ def _warnings(params, out, setup, shear_stress, efficiency, undetermined="") -> 
     if (efficiency <= 0).any():
         warnings.append(f"the instantaneous mesh efficiency is zero or below in {int((efficiency <= 0).sum())} "
                         "step(s): friction takes more power than the drive supplies there")
-    if params["environment"] == "air" and 0.0 < params["relative_humidity"] < _LOWEST_MENISCUS_HUMIDITY:
-        from memstribo.physics.capillary import kelvin_radius
+    if params["environment"] == "air":
+        from memstribo.physics.capillary import molecular_kelvin_radius
+        from memstribo.physics.vapours import vapour_state
 
-        warnings.append(f"relative humidity {params['relative_humidity']:g} is below {_LOWEST_MENISCUS_HUMIDITY:g}: the "
-                        f"Kelvin radius ({kelvin_radius(params['relative_humidity'], params['ambient_temperature']) * 1e9:.2g} "
-                        "nm) is about a molecular size, where adsorbed water films, not menisci, dominate; the capillary "
-                        "terms are outside their validity (docs/humidity.md)")
+        state = vapour_state(params)
+        if state["ratio"] > 0.0 and state["kelvin"] == 0.0:
+            warnings.append(f"{state['vapour']} at p/p_sat {state['ratio']:g} (relative humidity for water): the Kelvin "
+                            f"radius ({state['kelvin_raw'] * 1e9:.2g} nm) is below one molecular diameter "
+                            f"({molecular_kelvin_radius(state['molar_volume']) * 1e9:.3g} nm), a molecular size: the "
+                            "condensate is an adsorbed film, not a meniscus, and no meniscus force or rupture is "
+                            "counted (MODEL 7g, docs/humidity.md)")
     return warnings
 
 
