@@ -90,7 +90,7 @@ def check_conditions(row, hardness=None) -> None:
         if name == "contact_pressure" and hardness is not None:
             high = hardness
         if value < low or (high is not None and value > high) or not math.isfinite(value):
-            raise InputError(f"{where}: field {name} = {value:g} {unit} is outside the model's range ({allowed}"
+            raise InputError(f"{where}: field {name} = {value:g}{' ' + unit if unit else ''} is outside the model's range ({allowed}"
                              f"{f', here {high:g} {unit}' if name == 'contact_pressure' and high else ''}).")
     material = row.condition("material", "polysilicon"), row.condition("counter_material", "polysilicon")
     from memstribo.laboratory.materials import MATERIALS
