@@ -200,3 +200,12 @@ def test_conditions_outside_the_range_are_refused_by_field():
         check_conditions(row(material="diamond"))
     with pytest.raises(InputError, match="contact_pressure"):
         check_conditions(row(contact_pressure=2e10), hardness=12e9)
+
+
+def test_cantilever_crack_length_is_the_beam_relation_of_the_predicted_energy(vacuum):
+    common = {"geometry": "cantilever_array", "roughness": {"rq": 2e-9, "correlation_length": 80e-9}}
+    energy = case_values(row(quantity="adhesion_energy", value=0.02, **common), [{}], 1)[0][0, 0]
+    crack = case_values(row(quantity="crack_length", value=5e-4, beam_thickness=2.6e-6, beam_gap=2e-6, **common),
+                        [{}], 1)[0][0, 0]
+    assert crack == pytest.approx(cantilever.beam_crack_length(vacuum["youngs_modulus"], 2.6e-6, 2e-6, energy))
+    assert 0 < energy < work_of_adhesion(vacuum)

@@ -54,7 +54,7 @@ NEEDS = {
     ("sphere_on_flat", None): (("sphere_radius",), ("normal_force",)),
     ("nanocontact", None): (("sphere_radius",), ("normal_force",)),
     ("cantilever_array", None): (("beam_thickness",), ("beam_gap",)),
-    ("cantilever_array", "adhesion_energy"): (("beam_thickness",), ("beam_gap",)),
+    ("cantilever_array", "adhesion_energy"): (),  # the work of separation needs no beam dimensions
     ("pull_off", None): (("sphere_radius", "pad_area"),),
     ("flat_pad", "pull_off_force"): (("pad_area",),),
     ("flat", "pull_off_force"): (("pad_area",),),
@@ -121,6 +121,16 @@ def row_roughness(row, params):
     return rq, math.sqrt(2.0) * rq / float(params["roughness_rms_slope"]), "the parameter set's roughness (none stated)"
 
 
+def _said(out):
+    """The case's notes: the real area's resolution, an unconverged solve, a capped shear stress."""
+    notes = [out["note"]] if out.get("note") else []
+    if out.get("converged") is False:
+        notes.append("the contact solve or its adhesion fixed point did not converge")
+    if out.get("capped"):
+        notes.append("the bonds' shear stress capped at the ideal shear strength")
+    return "".join(f"; {n}" for n in notes)
+
+
 def _one(row, params, rough, seed):
     """One predicted value of ``row`` and the words of its case."""
     from memstribo.laboratory.cases import cantilever, flat_pad, nanocontact, pull_off, sidewall, sphere
@@ -143,21 +153,20 @@ def _one(row, params, rough, seed):
         return s, f"crack length of the beam's adhesion energy {energy:.3g} J/m^2 (de Boer and Michalske 1999)"
     if quantity == "interfacial_shear_strength":
         out = nanocontact.interfacial_shear_strength(params, force, radius, rq, corr, seed, rh)
-        return out["shear_strength"], f"friction over real area of a tip R {radius:.3g} m at {force:.3g} N"
+        return out["shear_strength"], f"friction over real area of a tip R {radius:.3g} m at {force:.3g} N" + _said(out)
     key = "static_cof" if quantity == "static_cof" else "kinetic_cof"
     if geometry == "sidewall":
         out = sidewall.sidewall_friction(params, rq, corr, seed, rh, contact_pressure=pressure, normal_force=force,
                                          pad_area=area, sphere_radius=radius,
                                          sliding_amplitude=_number(row, "sliding_amplitude"))
-        return out[key], out["load_text"] + (f"; {out['note']}" if out.get("note") else "")
+        return out[key], out["load_text"] + _said(out)
     if geometry in ("sphere_on_flat", "nanocontact"):
         out = sphere.sphere_friction(params, force, radius, rq, corr, seed, rh)
-        return out[key], f"sphere R {radius:.3g} m at {force:.3g} N" + (f"; {out['note']}" if out.get("note") else "")
+        return out[key], f"sphere R {radius:.3g} m at {force:.3g} N" + _said(out)
     if pressure is None:
         pressure = force / area
     out = flat_pad.flat_pad_friction(params, pressure, rq, corr, seed, rh)
-    return out[key], f"flat pad at {pressure:.3g} Pa, A_r/A {out['real_area_fraction']:.3g}" + (
-        f"; {out['note']}" if out.get("note") else "")
+    return out[key], f"flat pad at {pressure:.3g} Pa, A_r/A {out['real_area_fraction']:.3g}" + _said(out)
 
 
 def case_values(row, samples, realisations, base=None, calibration_coating="OTS", seed=20260528):
