@@ -200,6 +200,14 @@ def test_conditions_outside_the_range_are_refused_by_field():
         check_conditions(row(material="diamond"))
     with pytest.raises(InputError, match="contact_pressure"):
         check_conditions(row(contact_pressure=2e10), hardness=12e9)
+    with pytest.raises(InputError, match="field temperature = 1000 K"):
+        check_conditions(row(temperature=1000.0))
+
+
+def test_conditions_the_cases_do_not_model_are_not_predicted_with_the_reason():
+    assert "pentanol" in case_values(row(vapour="pentanol"), [{}], 1)[1]
+    assert "hydrogen" in case_values(row(surface_termination="hydrogen"), [{}], 1)[1]
+    assert case_values(row(surface_termination="hydrogen"), [{}], 1)[0] is None
 
 
 def test_cantilever_crack_length_is_the_beam_relation_of_the_predicted_energy(vacuum):

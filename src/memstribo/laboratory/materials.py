@@ -130,6 +130,9 @@ def row_parameters(row, base=None, sample=None, calibration_coating="OTS"):
         overrides["environment"] = environment
     rh = row.number("relative_humidity")
     overrides["relative_humidity"] = rh if environment == "air" and rh is not None else 0.0
+    temperature = row.number("temperature")
+    if temperature is not None:
+        overrides["ambient_temperature"] = temperature  # the Kelvin radius and water's surface tension at it
     coated = {}
     for key, value in (sample or {}).items():
         if key.startswith("coating_"):
