@@ -75,6 +75,15 @@ def test_bad_rows_are_refused_naming_row_and_field(tmp_path, old, new, words):
         load_user_measurements(write(tmp_path, edit(ROW.format(id="bad"), old, new)))
 
 
+def test_a_missing_or_broken_file_is_a_clear_error(cli, tmp_path):
+    code, _, err = cli("validate-lab", tmp_path / "missing.toml")
+    assert code == 2 and "does not exist" in err
+    code, _, err = cli("calibrate", write(tmp_path, "[[measurement]\n"))
+    assert code == 2 and "not valid TOML" in err
+    code, _, err = cli("validate-lab", write(tmp_path, "[other]\nx = 1\n"))
+    assert code == 2 and "no [[measurement]] rows" in err
+
+
 def test_a_duplicated_id_is_refused_naming_both_rows(tmp_path):
     with pytest.raises(InputError, match=r"row #2 \('same'\): field id is used twice \(also row #1\)"):
         load_user_measurements(write(tmp_path, ROW.format(id="same") * 2))

@@ -112,9 +112,17 @@ def load_user_measurements(path, base=None):
         Naming the row and the field: a missing field or citation, a unit that does not fit the quantity, a
         condition outside the model's range, a duplicated id.
     """
+    from pathlib import Path
+
     from memstribo.laboratory.data import _read
 
-    data = _read(path)
+    if not Path(path).is_file():
+        raise InputError(f"measurement file {path} does not exist (a TOML file of [[measurement]] tables, see "
+                         "examples/own_measurement.toml).")
+    try:
+        data = _read(path)
+    except UnicodeDecodeError:
+        raise InputError(f"measurement file {path}: not a text (UTF-8 TOML) file.") from None
     rows = data.get("measurement", [])
     if not isinstance(rows, list) or not rows:
         raise InputError(f"measurement file {path}: no [[measurement]] rows.")
