@@ -223,6 +223,8 @@ def _cached_contact(key, h, params):
     real, note, resolved = n_contact * dx * dx, "", n_contact >= MIN_CONTACT_ELEMENTS
     if not resolved and periodic:
         real, note = _scaled_area(h, dx, modulus, hardness, total, area)
+    elif not resolved:
+        note = f"only {n_contact} elements touch: the real contact area is under-resolved"
     state = ContactState(gap=np.where(sol.contact, 0.0, sol.gap), contact=np.asarray(sol.contact), element_area=dx * dx,
                          load=float(load), adhesion=f_adh, real_area=real, resolved=resolved,
                          plastic_fraction=float(sol.plastic_fraction), converged=converged, note=note)
