@@ -461,6 +461,12 @@ _ENTRIES = [
      "roughness x posterior (issue 28)"),
     ("held_out_predicted", "1", "held-out rows predicted", "held-out measurements the model could predict (issue 28)"),
     ("effective_sample_size", "1", "effective sample size", "(sum w)^2 / sum w^2 of the calibration's importance weights"),
+    ("calibration_rows", _TEXT, "calibration rows", "ids of the measurements a 'memstribo calibrate' fit used "
+     "(never held out; issue 37)"),
+    ("calibrated_constants", _TEXT, "calibrated constants", "per calibrated constant: name, prior and posterior median "
+     "and 5-95 % interval (SI, the parameter's unit; issue 37)"),
+    ("calibrated_set_file", _TEXT, "calibrated parameter set", "the parameter set file written by 'memstribo calibrate', "
+     "for --parameter-set FILE (issue 37)"),
     ("fitted_constants", _TEXT, "fitted constants", "fitted or calibrated constants the run uses, with their value, "
      "unit and fit conditions (issue 28)"),
     # --- what the verdict hangs on (MODEL 7d, issue 27; memstribo.uncertainty) -----------------------------

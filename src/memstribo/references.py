@@ -394,8 +394,19 @@ REFERENCES: dict[str, str] = {
         "D. Roundy, M. L. Cohen, 'Ideal strength of diamond, Si, and Ge', Phys. Rev. B 64 (2001) 212103. "
         "doi:10.1103/PhysRevB.64.212103"
     ),
+    "de_boer_michalske_1999": (
+        "M. P. de Boer, T. A. Michalske, 'Accurate method for determining adhesion of cantilever beams', "
+        "J. Appl. Phys. 86 (1999) 817-827. doi:10.1063/1.370809"
+    ),
+    "vlassak_nix_1992": (
+        "J. J. Vlassak, W. D. Nix, 'A new bulge test technique for the determination of Young's modulus and "
+        "Poisson's ratio of thin films', J. Mater. Res. 7 (1992) 3242-3249. doi:10.1557/JMR.1992.3242"
+    ),
+    "bergstrom_1997": (
+        "L. Bergstrom, 'Hamaker constants of inorganic materials', Adv. Colloid Interface Sci. 70 (1997) 125-169 "
+        "(Lifshitz values of 31 inorganic materials, amorphous silicon nitride among them)."
+    ),
 }
-
 _used: dict[str, None] = {}
 class _Collectors(threading.local):
     """Per thread, ``collectors``: the dicts of the open collect_references() blocks of this thread (None: none yet;

@@ -80,7 +80,8 @@ def common_options() -> argparse.ArgumentParser:
                        help="override a model parameter; VALUE may carry a unit ('195.5 nm'); repeatable")
     group.add_argument("--config", metavar="FILE", help="TOML file of parameter overrides")
     group.add_argument("--parameter-set", default="silicon_thesis", metavar="NAME",
-                       help="parameter set to start from (default: silicon_thesis)")
+                       help="parameter set to start from (default: silicon_thesis), or a set file (.toml) such as 'memstribo "
+                            "calibrate' writes")
     return parent
 
 

@@ -27,6 +27,8 @@ QUANTITY_UNITS = {
     "adhesion_trend_with_rh": "1",
     "cycles_to_failure": "1",
     "cycles_without_failure": "1",
+    "interfacial_shear_strength": "Pa",
+    "crack_length": "m",
 }
 
 #: conditions every row must state (a value, or the words "not stated" where the source gives none)
@@ -37,7 +39,8 @@ REQUIRED = ("id", "quantity", "value", "unit", "scatter", "geometry", "contact",
 LOAD_KEYS = ("contact_pressure", "normal_force")
 
 ENVIRONMENTS = ("vacuum", "dry_nitrogen", "air")
-GEOMETRIES = ("flat", "sidewall", "microbeam", "gear", "rotor_hub", "micromotor", "sphere_on_flat")
+GEOMETRIES = ("flat", "sidewall", "microbeam", "gear", "rotor_hub", "micromotor", "sphere_on_flat", "flat_pad",
+              "cantilever_array", "pull_off", "nanocontact")
 SCATTER_KINDS = ("sd", "range", "not stated", "upper limit", "lower bound", "sign")
 
 

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from memstribo.errors import InputError
+from memstribo.laboratory.cases._roughness import SIDEWALL_ROUGHNESS, stated_roughness as _roughness  # noqa: F401
 from memstribo.references import cites
 
 __all__ = ["Prediction", "predict_row", "predict_all", "band", "row_values", "static_cof", "FRICTION",
@@ -32,10 +33,8 @@ PROFILE_LENGTH = 2.4e-6
 #: side [m] and points per side of a microbeam's synthetic gap map (a 5.12 um square, 10 nm spacing)
 BEAM_MAP_SIZE = 5.12e-6
 BEAM_MAP_POINTS = 512
-#: the sidewall roughness when the source gives none: AFM of a polysilicon MEMS sidewall (van Spengen 2010)
-SIDEWALL_ROUGHNESS = {"rq": 10.3e-9, "correlation_length": 83e-9,
-                      "reason": "not in the cited record; polysilicon sidewall AFM, Rq 10.3 nm, exponential "
-                                "correlation length 83 nm (van Spengen et al. 2010, doi:10.3762/bjnano.1.20)"}
+#: length of a microbeam's synthetic gap line [m]
+BEAM_LENGTH = 20e-6
 #: chemical bond energy of a coated surface [J]: no chemical bonds (thesis 5.4), the spec's floor 1e-21 J
 COATED_BOND_ENERGY = 1e-21
 
@@ -120,25 +119,12 @@ def _not_predicted(row, reason):
     return Prediction(id=row.id, quantity=row.quantity, measured=row.value, status="not predicted", reason=reason)
 
 
-def _roughness(row):
-    """(rq, correlation_length, note) of the row's surfaces, or None for the parameter set's default."""
-    for key in ("roughness", "roughness_assumed"):
-        value = row.condition(key)
-        if isinstance(value, dict) and "rq" in value:
-            note = "stated" if key == "roughness" else f"assumed: {value.get('reason', '')}"
-            return float(value["rq"]), float(value["correlation_length"]), note
-    if row.condition("geometry") == "sidewall":
-        r = SIDEWALL_ROUGHNESS
-        return r["rq"], r["correlation_length"], "assumed: " + r["reason"]
-    return None
-
-
-def _base_parameters(row, sample, calibration_coating):
+def _base_parameters(row, sample, calibration_coating, base=None):
     from memstribo.parameters import get_parameter_values
     from memstribo.parameters.definitions import SPECS
 
-    name = "silicon_oxide_air" if row.environment == "air" else "silicon_thesis"
-    params = get_parameter_values(name)
+    name = base.name if base is not None else "silicon_oxide_air" if row.environment == "air" else "silicon_thesis"
+    params = base if base is not None else get_parameter_values(name)
     overrides = {}
     for key, value in sample.items():
         if key.startswith("coating_") and row.coating != calibration_coating:
@@ -326,7 +312,7 @@ def _beam_gap(rq, corr, seed):
     return rigid_interface_gaps(_surface_map(rq, corr, seed), _surface_map(rq, corr, seed + 10_000))
 
 
-def _beam_values(row, samples, realisations, calibration_coating, seed):
+def _beam_values(row, samples, realisations, calibration_coating, seed, base=None):
     rough = _roughness(row)
     if rough is None:
         return None, "no roughness stated or assumed for the microbeam"
@@ -334,7 +320,7 @@ def _beam_values(row, samples, realisations, calibration_coating, seed):
     gaps = [_beam_gap(rq, corr, seed + k) for k in range(realisations)]
     values = np.zeros((len(samples), realisations))
     for i, sample in enumerate(samples):
-        params, set_name = _base_parameters(row, sample, calibration_coating)
+        params, set_name = _base_parameters(row, sample, calibration_coating, base)
         if row.coating:
             params = _coated(params, row.coating)
         for k in range(realisations):
@@ -352,8 +338,12 @@ def _beam_values(row, samples, realisations, calibration_coating, seed):
     return values, case
 
 
-def row_values(row, constant_samples=None, realisations=8, calibration_coating="OTS", seed=20260528):
+def row_values(row, constant_samples=None, realisations=8, calibration_coating="OTS", seed=20260528, base=None):
     """The predicted values of one row over constant samples x roughness realisations.
+
+    ``base``: the parameter set (with the user's ``--set`` values) every row starts from; default the lab's rule
+    (silicon_oxide_air in air, silicon_thesis otherwise). The test structures of
+    :mod:`memstribo.laboratory.cases` are dispatched by the row's geometry.
 
     Returns
     -------
@@ -367,14 +357,19 @@ def row_values(row, constant_samples=None, realisations=8, calibration_coating="
     if realisations < 1:
         raise InputError(f"realisations must be at least 1, got {realisations}.")
     geometry = row.condition("geometry")
-    surface = str(row.condition("surface")).lower()
-    if "nitride" in surface:
-        return None, "silicon nitride against polysilicon: memstribo has no silicon nitride pair (parameter sets are silicon and its oxide)"
-    if row.coating and row.coating.upper() not in ("OTS", "FDTS"):
-        return None, f"coating {row.coating} is not among memstribo's coatings (OTS, FDTS)"
+    from memstribo.physics.coating import available_coatings
+
+    shipped = {c.upper() for c in available_coatings()}
+    if row.coating and row.coating.upper() not in shipped:
+        return None, f"coating {row.coating} is not among memstribo's coatings ({', '.join(sorted(shipped))})"
     if row.quantity in ("cycles_to_failure", "cycles_without_failure"):
         return None, ("memstribo's damage law (thesis 5.5) is the wear of a SAM coating on gear teeth; the start-stop life "
                       "of a bare polysilicon micromotor (hub wear and sticking) has no damage law in the model")
+    from memstribo.laboratory.cases import case_values
+
+    found = case_values(row, samples, realisations, base, calibration_coating, seed)
+    if found is not NotImplemented:
+        return found
     if row.quantity in FRICTION:
         if geometry not in ("flat", "sidewall"):
             return None, (f"geometry {geometry}: the rotating rotor-on-hub contact is not a case memstribo builds "
@@ -388,7 +383,7 @@ def row_values(row, constant_samples=None, realisations=8, calibration_coating="
     if row.quantity in ("adhesion_energy", "adhesion_trend_with_rh"):
         if geometry != "microbeam":
             return None, f"geometry {geometry}: adhesion is predicted for microbeams only"
-        return _beam_values(row, samples, realisations, calibration_coating, seed)
+        return _beam_values(row, samples, realisations, calibration_coating, seed, base)
     return None, f"no case for the quantity {row.quantity}"
 
 
@@ -404,7 +399,7 @@ def judge(row, values, weights=None, case=""):
 
 
 def predict_row(row, constant_samples=None, realisations=8, weights=None, calibration_coating="OTS",
-                seed=20260528) -> Prediction:
+                seed=20260528, base=None) -> Prediction:
     """Predict one measurement at its conditions: median and 90 % band over realisations x constant samples.
 
     Parameters
@@ -426,12 +421,12 @@ def predict_row(row, constant_samples=None, realisations=8, weights=None, calibr
     Prediction
         "not predicted" with the reason where the model cannot build the case (never dropped).
     """
-    values, case = row_values(row, constant_samples, realisations, calibration_coating, seed)
+    values, case = row_values(row, constant_samples, realisations, calibration_coating, seed, base)
     if values is None:
         return _not_predicted(row, case)
     return judge(row, values, weights, case)
 
 
-def predict_all(rows, constant_samples=None, realisations=8, weights=None, calibration_coating="OTS"):
-    """:func:`predict_row` for every row, in order."""
-    return [predict_row(r, constant_samples, realisations, weights, calibration_coating) for r in rows]
+def predict_all(rows, constant_samples=None, realisations=8, weights=None, calibration_coating="OTS", base=None):
+    """:func:`predict_row` for every row, in order (``base``: the parameter set every row starts from)."""
+    return [predict_row(r, constant_samples, realisations, weights, calibration_coating, base=base) for r in rows]

@@ -31,6 +31,7 @@ __all__ = [
     "Parameters",
     "available_parameter_sets",
     "get_parameter_values",
+    "parameter_set_file",
     "parse_assignment",
     "read_config",
     "coerce_value",
@@ -315,6 +316,8 @@ def get_parameter_values(name: str = DEFAULT_SET) -> Parameters:
         If ``name`` is not a known set; the message lists the available ones.
     """
     available = available_parameter_sets()
+    if name not in available and str(name).lower().endswith(".toml"):  # a set file ('memstribo calibrate' writes one)
+        return parameter_set_file(name)
     if name not in available:
         raise InputError(f"unknown parameter set '{name}'.{did_you_mean(name, available)} "
                          f"Available: {', '.join(available)}.")
@@ -335,6 +338,48 @@ def get_parameter_values(name: str = DEFAULT_SET) -> Parameters:
     if missing:
         raise InputError(f"parameter set '{name}' lacks {', '.join(missing)}")
     return Parameters(values, sources, name)
+
+
+
+def _set_file_table(path):
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(f"parameter set file '{path}' does not exist; give a shipped set's name or a set file "
+                         "written by 'memstribo calibrate'.")
+    try:
+        return tomllib.loads(path.read_text(encoding="utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
+        raise InputError(f"parameter set file '{path}': not valid TOML ({error}).") from None
+
+
+def parameter_set_file(path, _seen=()) -> "Parameters":
+    """The :class:`Parameters` of a set file (``--parameter-set FILE.toml``, issue 37: the set 'memstribo calibrate'
+    writes): its ``[meta] base`` (a shipped set or another set file) with its ``[parameters.NAME]`` values applied;
+    other tables (``[posterior.NAME]``) are ignored here.
+
+    The set keeps its base's name (so that the base's priors apply to every constant the file does not change);
+    each value the file gives names the file in its source.
+    """
+    path = str(path)
+    if path in _seen:
+        raise InputError(f"parameter set file '{path}' names itself as its base (through {', '.join(_seen)}).")
+    data = _set_file_table(path)
+    base = data.get("meta", {}).get("base")
+    if not base:
+        raise InputError(f"parameter set file '{path}': [meta] base is missing (the shipped set it changes, e.g. "
+                         "'silicon_oxide_air').")
+    nested = str(base).lower().endswith(".toml")
+    parent = parameter_set_file(base, (*_seen, path)) if nested else get_parameter_values(base)
+    values = {k: parent[k] for k in parent}
+    sources = {k: parent.source(k) for k in parent}
+    for key, entry in data.get("parameters", {}).items():
+        if key not in SPECS:
+            raise InputError(f"parameter set file '{path}': unknown parameter '{key}'.{did_you_mean(key, SPECS)}")
+        if not isinstance(entry, dict) or "value" not in entry:
+            raise InputError(f"parameter set file '{path}': [parameters.{key}] needs a value (with unit and source).")
+        values[key] = coerce_value(key, entry["value"])
+        sources[key] = f"{entry.get('source', '')} (set file {path})".strip()
+    return Parameters(values, sources, parent.name)
 
 
 #: tables a config file may hold besides [parameters] and [meta], and who reads them
