@@ -33,8 +33,6 @@ PROFILE_LENGTH = 2.4e-6
 #: side [m] and points per side of a microbeam's synthetic gap map (a 5.12 um square, 10 nm spacing)
 BEAM_MAP_SIZE = 5.12e-6
 BEAM_MAP_POINTS = 512
-#: length of a microbeam's synthetic gap line [m]
-BEAM_LENGTH = 20e-6
 #: chemical bond energy of a coated surface [J]: no chemical bonds (thesis 5.4), the spec's floor 1e-21 J
 COATED_BOND_ENERGY = 1e-21
 
