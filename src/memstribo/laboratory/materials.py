@@ -133,6 +133,9 @@ def row_parameters(row, base=None, sample=None, calibration_coating="OTS"):
     temperature = row.number("temperature")
     if temperature is not None:
         overrides["ambient_temperature"] = temperature  # the Kelvin radius and water's surface tension at it
+    for key in ("vapour", "surface_termination", "vapour_pressure_ratio"):  # the condensate of MODEL 7g
+        if row.condition(key) is not None and environment == "air":
+            overrides[key] = row.condition(key)
     coated = {}
     for key, value in (sample or {}).items():
         if key.startswith("coating_"):

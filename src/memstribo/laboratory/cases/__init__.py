@@ -109,12 +109,8 @@ def check_conditions(row, hardness=None) -> None:
 def _not_modelled(row):
     """Why the cases cannot predict a row whose stated conditions they do not model (None: they can)."""
     vapour = row.condition("vapour", "water")
-    if vapour != "water":
-        return (f"vapour {vapour!r}: the cases' menisci are water's (the vapours of MODEL 7g are not yet wired into "
-                "the laboratory cases)")
-    if row.condition("surface_termination", "oxide") == "hydrogen":
-        return ("surface_termination 'hydrogen': the cases model oxide-terminated (hydrophilic) surfaces; the "
-                "termination's contact angle and adsorbed film (MODEL 7g) are not yet wired into them")
+    if vapour != "water" and row.environment != "air":
+        return f"vapour {vapour!r} in {row.environment}: a condensable vapour acts only in air (MODEL 7g)"
     return None
 
 

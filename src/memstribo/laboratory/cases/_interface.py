@@ -186,7 +186,8 @@ def adhesive_contact(h, dx, params, load, relative_humidity, *, periodic, adhesi
     """
     key = (np.asarray(h, dtype=float).tobytes(), h.shape, float(dx), contact_modulus(params), float(params["hardness"]),
            float(load), relative_humidity, periodic, adhesion, contact_angles, work_of_adhesion(params),
-           float(params["cutoff_distance"]), float(params["water_contact_angle"]), float(params["ambient_temperature"]))
+           float(params["cutoff_distance"]), float(params["water_contact_angle"]), float(params["ambient_temperature"]),
+           params["vapour"], params["surface_termination"], params["vapour_pressure_ratio"])
     return _cached_contact(key, np.asarray(h, dtype=float), params)
 
 

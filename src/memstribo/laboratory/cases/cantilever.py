@@ -87,16 +87,12 @@ def work_of_separation(gap, params, relative_humidity):
     interface, the menisci to 2 gamma cos theta over the wetted share.
     """
     from memstribo.laboratory.cases._interface import adhesive_stress
-    from memstribo.laboratory.cases._menisci import meniscus_pressure
+    from memstribo.laboratory.cases._menisci import meniscus_pressure, meniscus_state
 
     g = np.asarray(gap, dtype=float).ravel()
     s = np.concatenate([[0.0], np.geomspace(1e-13, 2e-6, 900)])
-    if relative_humidity:  # the menisci's edge (a step of the Laplace pressure at h_c) as grid points
-        from memstribo.physics import capillary
-
-        theta = params["water_contact_angle"]
-        h_c = capillary.condensation_height(capillary.kelvin_radius(relative_humidity, params["ambient_temperature"]),
-                                            theta, theta)
+    _, h_c = meniscus_state(params, relative_humidity)
+    if h_c > 0:  # the menisci's edge (a step of the Laplace pressure at the bridging height) as grid points
         edges = h_c - np.unique(g)[:200]
         s = np.unique(np.concatenate([s, edges[edges > 0] * (1 - 1e-9), edges[edges > 0] * (1 + 1e-9)]))
     total = np.array([np.mean(adhesive_stress(g + si, params, relative_humidity)) for si in s])
