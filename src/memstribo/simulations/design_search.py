@@ -408,6 +408,8 @@ def _search(spec, base, evaluations, algorithm_class) -> dict:
     generation = 0
     while algorithm.has_next():
         population = algorithm.ask()
+        if population is None or len(population) == 0:  # no new design left (a small grid, all visited)
+            break
         designs = [decode(spec, x, base) for x in population.get("X")]
         generation += 1
         records = evaluations.get(designs, f"generation {generation}/{spec.generations}")

@@ -109,7 +109,7 @@ class DesignVariable:
             return int(round(x))
         if self.step:
             k = round((x - self.low) / self.step)
-            return float(min(self.low + k * self.step, self.high))
+            return float(f"{min(self.low + k * self.step, self.high):.12g}")  # 5e-06, not 4.9999999999999996e-06
         return float(x)
 
     def coordinate(self, value) -> float:
@@ -477,7 +477,7 @@ def _check_feasible(spec: DesignSpec, base, where: str) -> None:
     never = [CONSTRAINT_NAMES[i] for i in np.flatnonzero(~met)]
     if never:
         raise InputError(f"{where}: no design within the bounds meets {never} ({len(samples)} designs sampled "
-                         "from the box): widen the bounds or relax that constraint.")
+                         "from the box): widen the bounds or relax that constraint (or those).")
     shares = ", ".join(f"{CONSTRAINT_NAMES[i]}: {fails[i] / len(samples):.0%}" for i in np.flatnonzero(fails))
     raise InputError(f"{where}: no design within the bounds meets all constraints together ({len(samples)} "
                      f"sampled; share refused by each: {shares}): widen the bounds or relax a constraint.")
