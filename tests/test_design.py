@@ -28,7 +28,7 @@ CHEAP = {"mesh_elements_across_contact": 8, "mesh_step_refinements": 0, "mesh_gr
 
 def _table(**changes):
     table = {"name": "tiny", "objectives": ["window"], "population": 4, "generations": 3, "seed": 1,
-             "realisations": 2, "stiction_probability": 0.7, "steps": 5, "cycles": 1e3, "fracture_probability": 0.1,
+             "realisations": 1, "stiction_probability": 0.8, "steps": 5, "cycles": 1e3, "fracture_probability": 0.1,
              "torque": {"min": "30 nN*m", "max": "600 nN*m", "num": 3},
              "variables": {"module": {"min": "3 um", "max": "5 um", "step": "1 um"},
                            "face_width": {"min": "1 um", "max": "3 um", "step": "2 um"}}}
@@ -48,7 +48,7 @@ def _table(**changes):
     ({"variables": {"teeth_pinion": {"min": 8, "max": 12}}}, "meets \\['undercut of the pinion'"),
     ({"constraints": {"contact_ratio_min": 2.5}}, "contact ratio >= contact_ratio_min"),
     ({"constraints": {"tooth_thickness_min": "10 um"}}, "tip tooth thickness"),
-    ({"max_cycles": 10}, "cannot finish one generation"),
+    ({"max_cycles": 5}, "cannot finish one generation"),
     ({"stiction_probability": 0.5}, "no design can meet stiction_probability = 0.5.*realisations >= 4"),
     ({"objectives": ["coating_life"]}, "coating_life needs a coating"),
     ({"constraints": {"centre_distance": "200 um"}}, "remove module"),

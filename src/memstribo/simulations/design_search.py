@@ -40,6 +40,7 @@ import numpy as np
 from memstribo.errors import InputError, MemstriboError
 from memstribo.output import ensure_directory
 from memstribo.quantities import attrs as quantity_attrs
+from memstribo.references import cites
 from memstribo.simulations.design_spec import (CONSTRAINT_NAMES, DesignSpec, complete, decode, design_key,
                                                design_parameters, geometry_constraints)
 
@@ -341,6 +342,7 @@ def _objectives(spec: DesignSpec, records: list[dict]) -> tuple[np.ndarray, np.n
     return np.array(rows, dtype=float), g
 
 
+@cites("deb_2002", "blank_2020")
 def run_design(spec: DesignSpec, out: str | Path, params=None, *, client=None, scheduler: str | None = None,
                workers: int | None = None, resume: bool = False, progress: bool = False,
                figures: bool = True) -> DesignResult:
