@@ -252,3 +252,15 @@ def test_cli_search_and_explain(tmp_path, capsys, monkeypatch):
     assert "designs 0 to" in capsys.readouterr().err
     assert math.isfinite(values["cycles_total"])
     shutil.rmtree(out)
+
+
+def test_api_design_takes_a_table(tmp_path, monkeypatch):
+    import memstribo
+
+    monkeypatch.setattr(design_search, "evaluate_design", _fake)
+    result = memstribo.design({**_table(population=4, generations=2), "parameters": CHEAP}, tmp_path, workers=1,
+                              figures=False)
+    assert "design" in memstribo.__all__
+    assert result.best["values"]["torque_window"] == pytest.approx(float(result.dataset["torque_window"][0]))
+    with pytest.raises(InputError, match="design spec"):
+        memstribo.design(42, tmp_path / "x")
