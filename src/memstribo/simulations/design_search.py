@@ -254,6 +254,8 @@ class _Evaluations:
             if key in todo:
                 continue
             record = self._read(key)
+            if record is not None and record.get("error"):  # failed in an earlier run: run it again (as a map does)
+                record = None
             if record is not None:
                 if key not in self.computed:
                     self.reused.add(key)

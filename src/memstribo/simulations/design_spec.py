@@ -46,6 +46,7 @@ Spec file::
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -76,7 +77,8 @@ _CONSTRAINT_KEYS = {"contact_ratio_min", "tooth_thickness_min", "centre_distance
 #: the geometric constraints, in the order of :func:`geometry_constraints` (each <= 0 where met)
 CONSTRAINT_NAMES = ("undercut of the pinion", "undercut of the gear", "interference", "pointed tip",
                     "contact ratio >= contact_ratio_min", "tip tooth thickness >= tooth_thickness_min",
-                    "module within its allowed range (fixed centre distance)")
+                    "module within its allowed range (fixed centre distance)",
+                    "root fillet fits the tooth space (the root stress's tooth form)")
 #: designs sampled from the box to find a constraint that no design can meet
 FEASIBILITY_SAMPLES = 2000
 
@@ -419,11 +421,25 @@ def design_parameters(base, design: Mapping[str, Any]):
     return base.updated({k: v for k, v in design.items() if k != "coating"}, origin="design")
 
 
-def geometry_constraints(spec: DesignSpec, base, design: Mapping[str, Any]) -> np.ndarray:
+@functools.lru_cache(maxsize=4096)
+def _fillet_fits(teeth: int, pressure_angle: float, addendum: float, dedendum: float, fillet: float) -> bool:
+    """Whether the ISO 53 root fillet fits the tooth space (:func:`memstribo.physics.tooth_stress.tooth_shape`,
+    whose form does not depend on the module: it is drawn at 1 m)."""
+    from memstribo.physics.tooth_stress import tooth_shape
+
+    try:
+        tooth_shape(teeth, 1.0, pressure_angle, addendum, dedendum, fillet)
+    except InputError:
+        return False
+    return True
+
+
+def geometry_constraints(spec: DesignSpec, base, design: Mapping[str, Any], fillet: bool = True) -> np.ndarray:
     """The geometric constraints of :data:`CONSTRAINT_NAMES` of one design, each <= 0 where met (normalised).
 
     Undercut (z >= 2 h_a / sin^2 phi), interference (the path of contact within the base-circle tangency
-    points), pointed tip (s_a > 0, ISO 21771), contact ratio and minimum tip thickness, the module's range.
+    points), pointed tip (s_a > 0, ISO 21771), contact ratio and minimum tip thickness, the module's range, and
+    (``fillet``, for designs that meet the others) the root fillet that the fracture edge's tooth form needs.
     Computed from :mod:`memstribo.physics.gear`'s relations, without a meshing cycle.
     """
     from memstribo.parameters import SPECS
@@ -454,6 +470,10 @@ def geometry_constraints(spec: DesignSpec, base, design: Mapping[str, Any]) -> n
     g[6] = max((low or 0.0) - m, m - (high if high is not None else math.inf)) / m
     if z1 > z2:
         g[0] = max(g[0], 1.0)  # the pinion is the smaller gear
+    if fillet and np.all(g[:7] <= 0):  # ~10 ms a tooth count: only for designs that pass the rest
+        fits = all(_fillet_fits(z, round(phi, 12), ha, float(base["dedendum_coefficient"]),
+                                float(base["root_fillet_coefficient"])) for z in (z1, z2))
+        g[7] = -1.0 if fits else 1.0
     return g
 
 
@@ -469,7 +489,7 @@ def _check_feasible(spec: DesignSpec, base, where: str) -> None:
     met = np.zeros(len(CONSTRAINT_NAMES), dtype=bool)
     fails = np.zeros(len(CONSTRAINT_NAMES), dtype=int)
     for x in samples:
-        g = geometry_constraints(spec, base, decode(spec, x, base))
+        g = geometry_constraints(spec, base, decode(spec, x, base), fillet=False)  # the fillet: ~10 ms a design
         if np.all(g <= 0):
             return
         met |= g <= 0
