@@ -216,6 +216,10 @@ def default_design(spec: DesignSpec, base) -> dict:
             design["teeth_gear"] = int(base["teeth_gear"])
         else:
             design[v.name] = base[v.name]
+    if spec.ratio is not None:
+        design["teeth_gear"] = int(base["teeth_gear"])
+    if spec.centre_distance is not None:
+        design["module"] = float(base["module"])
     return design
 
 
