@@ -93,7 +93,10 @@ def run(args, params):
     notes = [f"  {n}" for n in result.notes]
     notes.append(f"  meshing cycles: {result.cycles_spent} by this run, {result.cycles_total} in the search "
                  f"({spec.realisations} realisations x verdicts; convergence spot checks not counted)")
-    return CommandResult(values=values, title=f"design search '{spec.name}'", notes=notes,
+    units = {f"{who}_{key}": "N*m" for who in ("default", "best") for key in
+             ("torque_window", "torque_window_high", "stiction_torque", "fracture_torque")}
+    units.update(elapsed="s", best_converged="")
+    return CommandResult(values=values, units=units, title=f"design search '{spec.name}'", notes=notes,
                          exit_status=1 if result.n_failed else 0)
 
 

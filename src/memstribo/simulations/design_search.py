@@ -329,8 +329,9 @@ class _Evaluations:
                 self.cluster.close()
 
 
-def _objectives(spec: DesignSpec, records: list[dict]) -> tuple[np.ndarray, np.ndarray]:
-    """(F, G) of the records for pymoo: objectives to minimise, constraints (<= 0 met)."""
+def _objectives(spec: DesignSpec, base, records: list[dict]) -> tuple[np.ndarray, np.ndarray]:
+    """(F, G) of the records for pymoo: objectives to minimise, constraints (<= 0 met; computed again from each
+    design, cheap, so that a record written by another version of the checks still fits)."""
     from memstribo.simulations.design_spec import OBJECTIVES
 
     rows = []
@@ -344,7 +345,7 @@ def _objectives(spec: DesignSpec, records: list[dict]) -> tuple[np.ndarray, np.n
                 value = math.log10(max(value, 1.0))
             row.append(OBJECTIVES[name][0] * value if math.isfinite(value) else 0.0)
         rows.append(row)
-    g = np.array([r["constraints"] for r in records], dtype=float)
+    g = np.array([geometry_constraints(spec, base, r["design"]) for r in records], dtype=float)
     return np.array(rows, dtype=float), g
 
 
@@ -423,7 +424,7 @@ def _search(spec, base, evaluations, algorithm_class) -> dict:
         records = evaluations.get(designs, f"generation {generation}/{spec.generations}")
         for record in records:
             archive.setdefault(record["id"], {**record, "generation": generation})
-        f, g = _objectives(spec, records)
+        f, g = _objectives(spec, base, records)
         Evaluator().eval(StaticProblem(problem, F=f, G=g), population)
         algorithm.tell(infills=population)
     return archive
@@ -446,7 +447,7 @@ def _finish(spec, base, folder, records, default, evaluations, start, figures) -
     feasible = [r for r in records[1:] if r.get("feasible") and not r.get("error")]
     notes = []
     if feasible:
-        f, _ = _objectives(spec, feasible)
+        f, _ = _objectives(spec, base, feasible)
         front = [r for r, keep in zip(feasible, pareto_mask(f)) if keep]
         front.sort(key=lambda r: -float(r["values"].get("torque_window", 0.0)))
     else:
