@@ -264,3 +264,14 @@ def test_api_design_takes_a_table(tmp_path, monkeypatch):
     assert result.best["values"]["torque_window"] == pytest.approx(float(result.dataset["torque_window"][0]))
     with pytest.raises(InputError, match="design spec"):
         memstribo.design(42, tmp_path / "x")
+
+
+@pytest.mark.slow
+def test_search_on_dask_equals_the_search_in_process(tmp_path):
+    """The designs of a generation as Dask tasks (2 workers) give the same Pareto set as in this process."""
+    pytest.importorskip("distributed")
+    spec = design_spec(_table(generations=2), CHEAP)
+    serial = run_design(spec, tmp_path / "serial", workers=1, figures=False)
+    parallel = run_design(spec, tmp_path / "dask", workers=2, figures=False)
+    for key in ("torque_window", "fracture_torque", "module", "face_width"):
+        np.testing.assert_array_equal(serial.dataset[key].values, parallel.dataset[key].values)

@@ -523,9 +523,9 @@ def design_dataset(records: list[dict], spec: DesignSpec):
 
 
 def front_figure(everything, pareto, spec: DesignSpec, folder) -> list:
-    """The front: every feasible design evaluated (grey), the Pareto set (coloured by mesh efficiency), the
-    default design (star) and the widest window (red ring), on the first two objectives (one objective: window
-    against footprint)."""
+    """The front: every feasible design evaluated (grey), the Pareto set (coloured by mesh efficiency; hollow where
+    not converged), the default design (star) and the widest window (red ring), on the first two objectives (one
+    objective: window against footprint)."""
     from memstribo.output import new_figure, save_figure
 
     axes_keys = [OBJECTIVE_KEYS[o] for o in spec.objectives][:2]
@@ -544,6 +544,10 @@ def front_figure(everything, pareto, spec: DesignSpec, folder) -> list:
     fig.colorbar(points, ax=ax).set_label("mesh efficiency (median)")
     ax.plot(everything[axes_keys[0]].values[0] * fx, everything[axes_keys[1]].values[0] * fy, "*", color="C3",
             markersize=14, markeredgecolor="k", label="default design", zorder=4)
+    loose = pareto["converged"].values == 0  # MODEL 7d: not converged at the search's steps, drawn hollow
+    if loose.any():
+        ax.plot(pareto[axes_keys[0]].values[loose] * fx, pareto[axes_keys[1]].values[loose] * fy, "o", color="w",
+                markeredgecolor="k", markersize=7, zorder=3.5, label="Pareto, not converged")
     ax.plot(pareto[axes_keys[0]].values[0] * fx, pareto[axes_keys[1]].values[0] * fy, "o", markersize=14,
             markerfacecolor="none", markeredgecolor="C3", label="widest window (Pareto design 0)", zorder=4)
     for i in range(pareto.sizes["design"]):
