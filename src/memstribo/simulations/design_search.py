@@ -380,7 +380,8 @@ def run_design(spec: DesignSpec, out: str | Path, params=None, *, client=None, s
     base = params.updated(spec.parameters, origin=f"design spec {spec.source}")
     folder = ensure_directory(out)
     spec_dict = json.loads(json.dumps(asdict(spec), default=str))
-    run_hash = _hash({"spec": spec_dict, "parameters": params.to_dict()})
+    # the spec's file name is not part of the search: a spec moved or named otherwise resumes the same folder
+    run_hash = _hash({"spec": {k: v for k, v in spec_dict.items() if k != "source"}, "parameters": params.to_dict()})
     check_or_write_manifest(folder / MANIFEST, folder, resume, run_hash, {
         "format": 1, "name": spec.name, "source": spec.source, "hash": run_hash, "spec": spec_dict,
         "parameter_set": params.name}, what="design search", differs="another spec or parameters")
