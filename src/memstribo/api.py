@@ -470,6 +470,17 @@ def design(spec, out: str | Path = "memstribo-design", params=None, *, workers: 
     -------
     memstribo.simulations.design_search.DesignResult
         ``.dataset`` (the Pareto set, xarray), ``.default`` and ``.best`` (records), counts and cycles spent.
+
+    Examples
+    --------
+    >>> import memstribo
+    >>> result = memstribo.design("examples/design_thesis_pair.toml", out="design-out", workers=2)  # doctest: +SKIP
+    >>> result.best["values"]["torque_window"]  # the widest safe window [N m]  # doctest: +SKIP
+    >>> memstribo.design({"torque": {"min": "30 nN*m", "max": "1 uN*m"},
+    ...                   "variables": {"face_width": {"min": "3 um", "max": "1 um"}}})  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    memstribo.errors.InputError: design spec python [design.variables]: face_width: the bounds are in the wrong order...
     """
     from memstribo.simulations.design_search import run_design
     from memstribo.simulations.design_spec import DesignSpec, design_spec, load_design_spec
