@@ -18,6 +18,7 @@ mesh_cycle(params, surface)      one meshing cycle (or an ensemble): a MeshCycle
 MeshCycle                        .dataset (xarray), .summary (dict), .ensemble, .plot(), .to_xarray()
 sweep(params, parameter, values) meshing cycles over loads, torques or areas, as one dataset
 run(config, out)                 the whole chain, roughness to damage, with report.html
+design(spec, out)                the design search: the widest safe torque window (NSGA-II, resumable)
 """
 
 #: the version: the top entry of CHANGELOG.md (pyproject.toml reads it; a test checks they agree)
@@ -27,7 +28,7 @@ from memstribo.errors import ConvergenceError, DataFileError, InputError, Memstr
 from memstribo.parameters import get_parameter_values  # noqa: E402
 
 #: The public API (memstribo.api), imported on first use so that ``import memstribo`` stays quick.
-_API = ("read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run")
+_API = ("read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run", "design")
 
 __all__ = [
     "__version__",

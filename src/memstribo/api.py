@@ -23,7 +23,7 @@ from typing import Any
 
 from memstribo.errors import InputError
 
-__all__ = ["read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run"]
+__all__ = ["read_surface", "parameter_set", "mesh_cycle", "MeshCycle", "sweep", "run", "design"]
 
 
 def _plain(value: Any) -> Any:
@@ -447,3 +447,52 @@ def run(config: str | Path | None = None, out: str | Path = "memstribo-results",
         base = Path(config).parent
     table.update({k: _plain(v) for k, v in options.items()})
     return RunChain(parameter_set() if params is None else params, out, RunOptions.from_table(table, base)).run()
+
+
+def design(spec, out: str | Path = "memstribo-design", params=None, *, workers: int | None = None,
+           scheduler: str | None = None, client=None, resume: bool = False, progress: bool = False,
+           figures: bool = True):
+    """The design search (``memstribo design``): NSGA-II for the widest safe torque window (issue #39).
+
+    Parameters
+    ----------
+    spec : str, Path, dict or memstribo.simulations.design_spec.DesignSpec
+        A design spec TOML file, its ``[design]`` table as a dict (base overrides under the key
+        ``"parameters"``), or a spec already built. Validated whole before any cycle runs.
+    out : str or Path
+        Results folder (``pareto.nc``/``.csv``, ``evaluations/``, ``figures/``).
+    params : Parameters, optional
+        Base parameters (default: the thesis set).
+    workers, scheduler, client, resume, progress, figures
+        As :func:`memstribo.simulations.design_search.run_design` (``workers=1``: in this process).
+
+    Returns
+    -------
+    memstribo.simulations.design_search.DesignResult
+        ``.dataset`` (the Pareto set, xarray), ``.default`` and ``.best`` (records), counts and cycles spent.
+
+    Examples
+    --------
+    >>> import memstribo
+    >>> result = memstribo.design("examples/design_thesis_pair.toml", out="design-out", workers=2)  # doctest: +SKIP
+    >>> result.best["values"]["torque_window"]  # the widest safe window [N m]  # doctest: +SKIP
+    >>> memstribo.design({"torque": {"min": "30 nN*m", "max": "1 uN*m"},
+    ...                   "variables": {"face_width": {"min": "3 um", "max": "1 um"}}})  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    memstribo.errors.InputError: design spec python [design.variables]: face_width: the bounds are in the wrong order...
+    """
+    from memstribo.simulations.design_search import run_design
+    from memstribo.simulations.design_spec import DesignSpec, design_spec, load_design_spec
+
+    if isinstance(spec, (str, Path)):
+        spec = load_design_spec(spec, params)
+    elif isinstance(spec, dict):
+        table = dict(spec)
+        spec = design_spec(table, table.pop("parameters", None), params) if "parameters" in table else \
+            design_spec(table, None, params)
+    elif not isinstance(spec, DesignSpec):
+        raise InputError(f"spec: give a design spec file, a [design] table (dict) or a DesignSpec, not "
+                         f"{type(spec).__name__}.")
+    return run_design(spec, out, params, client=client, scheduler=scheduler, workers=workers, resume=resume,
+                      progress=progress, figures=figures)

@@ -561,6 +561,23 @@ _ENTRIES = [
     ("unconverged_samples", "1", "unconverged samples", "sampled cycles with unconverged contact steps (kept)"),
     ("failed_samples", "1", "failed samples", "sampled points the model refused (counted in the interval)"),
     ("priors", _TEXT, "priors", "the prior of each uncertain constant: distribution, bounds [SI], source, reason"),
+    # --- the design search (memstribo design, issue #39) -------------------------------------------------------
+    ("torque_window", "N*m", "safe drive-torque window", "fracture edge (capped at the range's top) minus stiction "
+     "edge, 0 where they cross: the design's safe window (docs/design.md)"),
+    ("torque_window_high", "N*m", "safe drive-torque window, optimistic end", "the window with its stiction edge at "
+     "the torque below it on the search's torque grid (the edge lies between the two)"),
+    ("stiction_torque", "N*m", "stiction edge", "lowest torque of the search's grid whose running and start-up "
+     "P(stiction) are below p_s by the upper end of their 95 % interval (NaN: none)"),
+    ("stiction_torque_bracket", "N*m", "stiction edge, torque below", "the grid torque below the stiction edge"),
+    ("fracture_torque", "N*m", "fracture edge", "drive torque at which the probability that a tooth breaks within "
+     "the required cycles reaches p_f (tooth_life, fracture_probability_within)"),
+    ("footprint", "m2", "footprint", "area of the pair's bounding rectangle (r_a1 + a + r_a2) x 2 max(r_a1, r_a2)"),
+    ("cycles_spent", "1", "meshing cycles spent", "meshing cycles of a design's verdicts (realisations x verdicts; "
+     "convergence spot checks not counted)"),
+    ("verdicts", "1", "ensemble verdicts", "ensemble verdicts (map points) a design's evaluation ran"),
+    ("feasible", "1", "feasible", "1 where the design meets every geometric constraint, else 0 (no cycle ran)"),
+    ("generation", "1", "generation", "the search generation that first proposed the design (0: the default design)"),
+    ("design_id", _TEXT, "design id", "hash of the design's values: its file in OUT/evaluations/"),
 ]
 
 QUANTITIES: dict[str, Quantity] = {name: Quantity(name, unit, long, text) for name, unit, long, text in _ENTRIES}

@@ -229,6 +229,14 @@ REFERENCES: dict[str, str] = {
         "(dedendum 1.25 m, root fillet radius 0.38 m)."
     ),
     "buckingham_1949": "E. Buckingham, Analytical Mechanics of Gears, McGraw-Hill, 1949 (Dover reprint 1988).",
+    "deb_2002": (
+        "K. Deb, A. Pratap, S. Agarwal, T. Meyarivan, 'A fast and elitist multiobjective genetic algorithm: NSGA-II', "
+        "IEEE Trans. Evol. Comput. 6 (2002) 182-197. doi:10.1109/4235.996017"
+    ),
+    "blank_2020": (
+        "J. Blank, K. Deb, 'pymoo: Multi-Objective Optimization in Python', IEEE Access 8 (2020) 89497-89509. "
+        "doi:10.1109/ACCESS.2020.2990567"
+    ),
     "weibull_1951": (
         "W. Weibull, 'A statistical distribution function of wide applicability', J. Appl. Mech. 18 (1951) "
         "293-297. doi:10.1115/1.4010337"

@@ -389,6 +389,7 @@ CONFIG_TABLES = {
     "run": "options of 'memstribo run'",
     "study": "a study for 'memstribo study'",
     "map": "a design map for 'memstribo map'",
+    "design": "a design search for 'memstribo design'",
 }
 
 #: keys of a table-form parameter (``[parameters.normal_load]``), as written by Parameters.to_toml
