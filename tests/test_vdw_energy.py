@@ -103,3 +103,13 @@ def test_the_mesh_uses_the_rule(params):
     half = simulate_mesh(fast.updated({"vdw_dissipated_fraction": 0.5}))
     assert float(half["friction_force_vdw"].sum()) == pytest.approx(0.5 * float(full["friction_force_vdw"].sum()),
                                                                      rel=1e-9)
+
+
+def test_the_measurable_units_of_the_dissipated_fraction(params):
+    """phi in the units of its measurement (MODEL 7h): the adhesion hysteresis phi w12 [mJ/m^2] and phi w12 / D_chem."""
+    from memstribo.uncertainty.decision import measurable
+
+    w = params["hamaker_constant"] / (12 * math.pi * params["cutoff_distance"] ** 2)
+    hysteresis, tau = measurable("vdw_dissipated_fraction", 0.5, params)
+    assert hysteresis["unit"] == "mJ/m^2" and hysteresis["value"] == pytest.approx(0.5 * w * 1e3, rel=1e-12)
+    assert tau["unit"] == "MPa" and tau["value"] == pytest.approx(0.5 * w / params["bond_length"] / 1e6, rel=1e-12)
