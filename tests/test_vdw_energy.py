@@ -113,3 +113,13 @@ def test_the_measurable_units_of_the_dissipated_fraction(params):
     hysteresis, tau = measurable("vdw_dissipated_fraction", 0.5, params)
     assert hysteresis["unit"] == "mJ/m^2" and hysteresis["value"] == pytest.approx(0.5 * w * 1e3, rel=1e-12)
     assert tau["unit"] == "MPa" and tau["value"] == pytest.approx(0.5 * w / params["bond_length"] / 1e6, rel=1e-12)
+
+
+def test_a_vdw_constant_the_rule_does_not_use_is_refused(cli):
+    """A value the model would ignore without a word: U_vdW under 'hysteresis', phi under 'thesis'."""
+    code, out, err = cli("constants", "--set", "vdw_bond_energy=9e-21")
+    assert code == 2 and "vdw_energy_rule" in err
+    code, out, err = cli("constants", "--set", "vdw_energy_rule=thesis", "--set", "vdw_dissipated_fraction=0.5")
+    assert code == 2 and "vdw_dissipated_fraction" in err
+    assert cli.json("constants", "--set", "vdw_energy_rule=thesis", "--set", "vdw_bond_energy=9e-21")[
+        "bond_energy_vdw"] == 9e-21
