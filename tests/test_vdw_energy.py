@@ -65,7 +65,7 @@ def test_the_rules_of_the_default_set(params):
 
 
 def test_the_hamaker_constant_is_lifshitz_with_the_thesis_inside_its_prior(params):
-    from memstribo.uncertainty.priors import priors_for, set_priors
+    from memstribo.uncertainty.priors import set_priors
 
     assert params["hamaker_constant"] == pytest.approx(2.0e-19)
     prior = set_priors("silicon_thesis")["hamaker_constant"]
