@@ -166,7 +166,12 @@ def test_total_adhesion_force_counts_blocks_in_layer():
 # --- constants of a parameter set --------------------------------------------------------------------------
 
 def test_nanoscale_constants_default_set(params):
-    c = ad.nanoscale_constants(params)
+    from memstribo.parameters import THESIS_VDW
+
+    default = ad.nanoscale_constants(params)  # MODEL 7h: the Lifshitz A = 2e-19 J, w12 = A / (12 pi D0^2) = 0.081 J/m^2
+    assert default.work_of_adhesion == pytest.approx(2.0e-19 / (12 * np.pi * 2.56e-10 ** 2), rel=1e-12)
+    assert default.bond_energy_vdw == pytest.approx(default.work_of_adhesion * 2.35e-10 ** 2, rel=1e-12)  # phi = 1
+    c = ad.nanoscale_constants(params.updated(THESIS_VDW))  # the thesis's vdW constants (3.5)
     assert c.contact_modulus == pytest.approx(85.0e9, abs=0.05e9)
     assert c.work_of_adhesion == pytest.approx(0.445, abs=5e-4)
     assert c.half_width == pytest.approx(97.75e-9)  # the default set's w_adh = 195.5 nm (thesis chapter 4)

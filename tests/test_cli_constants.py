@@ -9,7 +9,9 @@ KEYS = {"sigma", "epsilon", "contact_modulus", "work_of_adhesion", "no_slip_coef
 
 
 def test_constants_json_keys_and_thesis_values(cli):
-    values = cli.json("constants")
+    from memstribo.parameters import THESIS_VDW_FLAGS
+
+    values = cli.json("constants", *THESIS_VDW_FLAGS.split())
     assert KEYS <= set(values)
     assert values["sigma"] == pytest.approx(2.0936e-10, rel=1e-4)
     assert values["epsilon"] == pytest.approx(2.902e-20, abs=5e-24)
@@ -25,7 +27,9 @@ def test_constants_json_keys_and_thesis_values(cli):
 
 
 def test_constants_thesis_half_width(cli):
-    values = cli.json("constants", "--half-width", "97.5 nm")
+    from memstribo.parameters import THESIS_VDW_FLAGS
+
+    values = cli.json("constants", "--half-width", "97.5 nm", *THESIS_VDW_FLAGS.split())
     assert values["half_width"] == pytest.approx(97.5e-9)
     assert values["pull_off_force_block"] == pytest.approx(3.03e-5, abs=0.005e-5)  # thesis prints 3.75e-5: see docs
 

@@ -17,7 +17,11 @@ from memstribo.simulations.mesh.convergence import TOLERANCE, compare_cycles, re
 
 @pytest.fixture(scope="module")
 def params():
-    return parameter_set()
+    """The default set with the thesis's vdW constants (A = 1.1e-18 J, U_chem / 100): the cohesive zone these tests
+    measure (7.6 nm at the torque's load); the Lifshitz default's 51 nm zone is tests/test_zone_resolution.py's."""
+    from memstribo.parameters import THESIS_VDW
+
+    return parameter_set().updated(THESIS_VDW)
 
 
 def _torque_contact(params):

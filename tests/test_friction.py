@@ -56,7 +56,9 @@ def test_thesis_estimate_printed_inputs():
 
 def test_estimate_from_first_principles(params):
     """Our constants: N_chem = 6885.5, w = 0.445 J/m^2, F_adh,1 = 30.46 uN -> mu = 0.960 (docs/friction.md)."""
-    ours = friction.estimate_from_parameters(params)
+    from memstribo.parameters import THESIS_VDW
+
+    ours = friction.estimate_from_parameters(params.updated(THESIS_VDW))  # the thesis's vdW constants (3.5)
     assert ours.chemical_bonds == pytest.approx(6885.47, rel=1e-5)
     assert ours.vdw_bonds == pytest.approx((195.5e-9 / D) ** 2, rel=1e-12)
     assert ours.chemical_energy_per_block == pytest.approx(6885.47 * 5.43e-19, rel=1e-5)
@@ -72,7 +74,10 @@ def test_estimate_from_first_principles(params):
     energy = (19.5e-9 / D) ** 2 * 5.43e-19 + (195.5e-9 / D) ** 2 * 5.43e-21
     assert ours.cof == pytest.approx(9 * energy / ((25e-6 + 9 * f1) * D), rel=1e-9)  # 0.9599
     # with the thesis's own w12 = 1.31 J/m^2 the adhesion is larger and mu smaller
-    thesis_w = friction.estimate_from_parameters(params.updated({"work_of_adhesion": 1.31}))
+    thesis_w = friction.estimate_from_parameters(params.updated({**THESIS_VDW, "work_of_adhesion": 1.31}))
+    # under the hysteresis rule (MODEL 7h) a larger w12 is also more vdW friction: U_vdW = phi w12 D_chem^2
+    hysteresis_w = friction.estimate_from_parameters(params.updated({"work_of_adhesion": 1.31}))
+    assert hysteresis_w.vdw_energy_per_block == pytest.approx(1.31 * 195.5e-9 ** 2, rel=1e-12)
     assert thesis_w.cof < ours.cof
 
 

@@ -579,11 +579,13 @@ def test_flat_profile_energies_follow_from_the_bond_counts(params):
     """#29: the size of the vdW and chemical friction from the bond counts, numbers written in. Every bond breaks
     once per bond length of sliding (thesis 3.5, (3-1)): E_vdW = sum bonds_vdW U_vdW s / D_chem and E_chem = sum
     bonds_chem U_chem s / D_chem, with U_vdW = 5.43e-21 J, U_chem = 5.43e-19 J, D_chem = 2.35 A (thesis 3.5; the
-    default set). Using U_chem for the vdW bonds (100 x) or the wrong bond length fails here directly."""
+    default set under the thesis's vdW rule; the default rule's U_vdW = phi w12 D_chem^2 is tests/test_vdw_energy.py's).
+    Using U_chem for the vdW bonds (100 x) or the wrong bond length fails here directly."""
     from memstribo.surfaces.roughness import Profile
 
     x = np.arange(4096) * 10e-9
-    ds = simulate_mesh(params, Profile(x=x, z=np.zeros_like(x), name="flat"), steps=11)
+    ds = simulate_mesh(params.updated({"vdw_energy_rule": "thesis"}), Profile(x=x, z=np.zeros_like(x), name="flat"),
+                       steps=11)
     s = ds["sliding_distance"].values  # sliding per step [m]
     bonds_vdw, bonds_chem = ds["bonds_vdw"].values, ds["bonds_chemical"].values
     assert bonds_vdw.sum() > 0 and bonds_chem.sum() > 0 and s.sum() > 0

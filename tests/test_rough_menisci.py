@@ -73,14 +73,16 @@ def test_bare_hydrophilic_bridges_are_bounded_by_their_laplace_pressure_in_the_s
 def test_the_bridges_add_to_f_adh_only_their_work_beyond_the_vdw_work():
     """One work of adhesion per element where F_adh's vdW part acts: the larger of w12 and the bridge's
     (docs/humidity.md).
-    With the thesis's block pull-off (contact_adhesion 'none') the vdW acts on every touching element with
+    With the thesis's block pull-off (contact_adhesion 'none') and its Hamaker constant (1.1e-18 J; the default's
+    Lifshitz 2e-19 J gives 0.081 J/m^2) the vdW acts on every touching element with
     w12 = 0.445 J/m^2 > 2 gamma cos 30 deg = 0.125 J/m^2: the bridges there add nothing, so their part of F_adh
     falls short of their own pull-off; with a w12 far below the bridge's it is the bridges' whole pull-off."""
     from memstribo.parameters import get_parameter_values
     from memstribo.simulations.mesh import simulate_mesh
 
     params = get_parameter_values().updated({"environment": "air", "relative_humidity": 0.5,
-                                             "contact_adhesion": "none"})
+                                             "contact_adhesion": "none",
+                                             "hamaker_constant": 1.1e-18})  # the thesis's A: w12 = 0.445 J/m^2
     strong = simulate_mesh(params, steps=21)
     pull, part = np.asarray(strong["capillary_pull_off"]), np.asarray(strong["capillary_adhesion_force"])
     assert np.all(part <= pull * (1 + 1e-12)) and part.sum() < 0.9 * pull.sum()

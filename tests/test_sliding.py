@@ -15,9 +15,10 @@ ENERGIES = ("energy_chemical", "energy_vdw", "energy_elastic")
 
 @pytest.fixture(scope="module")
 def params_m():
-    from memstribo.parameters import get_parameter_values
+    """The default set with the thesis's vdW constants (U_chem / 100, A = 1.1e-18 J): the thesis's sliding models."""
+    from memstribo.parameters import THESIS_VDW, get_parameter_values
 
-    return get_parameter_values()
+    return get_parameter_values().updated(THESIS_VDW)
 
 
 @pytest.fixture(scope="module")
@@ -162,9 +163,11 @@ def test_cli_json(cli):
     assert out["normal_force_mean"] == pytest.approx(25e-6)
     gap = cli.json("slide", "--model", "fixed-gap", "--distance", "0.5 um", "--gap", "1 nm")
     assert KEYS <= set(gap) and "load_residual" not in gap
-    single = cli.json("slide", "--model", "single")
+    from memstribo.parameters import THESIS_VDW_FLAGS
+
+    single = cli.json("slide", "--model", "single", *THESIS_VDW_FLAGS.split())
     assert single["cof_mean"] == pytest.approx(_by_hand()[1], rel=1e-9)
-    estimate = cli.json("slide", "--model", "estimate")
+    estimate = cli.json("slide", "--model", "estimate", *THESIS_VDW_FLAGS.split())
     assert estimate["thesis_inputs_cof"] == pytest.approx(0.8142, abs=5e-5)
     assert estimate["cof"] == pytest.approx(_by_hand()[9], rel=1e-9)
 

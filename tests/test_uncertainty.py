@@ -13,6 +13,16 @@ from memstribo.uncertainty.intervals import binomial_interval, ensemble_interval
 from memstribo.uncertainty.priors import Prior, check_priors, priors_for
 from memstribo.uncertainty.sampling import sample_constants
 
+
+@pytest.fixture
+def params():
+    """The default set under the thesis's vdW rule: U_vdW is sampled and rescaled there. Under the default rule
+    (MODEL 7h, issue 38) U_vdW follows from phi w12 / n_site and phi is sampled instead (tests/test_vdw_energy.py)."""
+    from memstribo.parameters import get_parameter_values
+
+    return get_parameter_values().updated({"vdw_energy_rule": "thesis"})
+
+
 Z95 = 1.959963984540054  # the 97.5 % quantile of the standard normal
 
 

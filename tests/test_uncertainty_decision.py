@@ -14,6 +14,15 @@ from memstribo.uncertainty.decision import (clip_unit, ks_distance, measurable, 
 from memstribo.uncertainty.priors import Prior
 
 
+@pytest.fixture
+def params():
+    """The default set under the thesis's vdW rule: U_vdW is sampled and rescaled there. Under the default rule
+    (MODEL 7h, issue 38) U_vdW follows from phi w12 / n_site and phi is sampled instead (tests/test_vdw_energy.py)."""
+    from memstribo.parameters import get_parameter_values
+
+    return get_parameter_values().updated({"vdw_energy_rule": "thesis"})
+
+
 # --- the regional index of the verdict --------------------------------------------------------------------------
 def test_ks_distance_closed_forms():
     assert ks_distance([1, 2, 3], [4, 5]) == 1.0  # disjoint: the CDFs part completely

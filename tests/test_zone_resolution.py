@@ -44,7 +44,11 @@ def _torque_contact():
     sys.path.insert(0, str(Path(__file__).parent))
     from test_convergence import _torque_contact as contact
 
-    return contact(parameter_set())
+    from memstribo.parameters import THESIS_VDW
+
+    # the thesis's Hamaker constant (w = 0.445 J/m^2, d = 9.3 nm): the unresolved zone this module is about; at the
+    # Lifshitz default (issue 38) the zone is 51 nm wide and the default grid resolves it on smooth teeth
+    return contact(parameter_set().updated(THESIS_VDW))
 
 
 def _tension(dx, offset, work_factor=1.0, elements=None):
@@ -82,3 +86,39 @@ def test_the_default_grid_carries_the_closed_form_tension(elements, within):
 def test_fine_grids_are_left_as_they_are():
     """On a grid that resolves the zone (1.55 nm, d = 9.3 nm) the solve is the one without the closure."""
     assert _tension(1.55e-9, 0.3) == _tension(1.55e-9, 0.3, elements=0)
+
+
+def test_the_adhesion_force_on_the_shipped_scan_converges_or_is_flagged():
+    """Issue 38 item 5: on data/afm/si_profile_linescan.txt the adhesion force changes < 5 % on the last grid halving,
+    or the cycle says it is not resolved (``adhesion_force_resolved`` false and a warning); the margin is checked
+    apart from it. Measured (docs/contact.md, "Where the sub-grid zone holds"): 31 %, 65 %, 52 % on the halvings
+    48 -> 384 elements across 2a at the Lifshitz Hamaker constant, while the margin moves 3.5 %, 0.42 %, 0.37 %."""
+    from pathlib import Path
+
+    from memstribo.simulations.mesh.convergence import ADHESION_TOLERANCE, refined_cycle
+
+    scan = Path(__file__).resolve().parent.parent / "data" / "afm" / "si_profile_linescan.txt"
+    params = parameter_set().updated({"mesh_step_refinements": 0, "mesh_grid_refinements": 1})
+    dataset, summary = refined_cycle(params, scan, steps=11)
+    change = summary["grid_change_adhesion"]
+    assert change is not None and np.isfinite(change)
+    assert summary["adhesion_force_resolved"] is bool(change < ADHESION_TOLERANCE)
+    flagged = [w for w in summary.get("warnings", []) if "adhesion force is not resolved" in w]
+    assert bool(flagged) is (not summary["adhesion_force_resolved"])
+    # the scan's nano-asperities are DMT-like at the default constants: the zone (51 nm) is wider than the
+    # grid's asperity contacts, so the force is not resolved here (the flag, not a silent number)
+    assert summary["adhesion_force_resolved"] is False and change > ADHESION_TOLERANCE
+
+
+def test_the_zone_is_wider_at_the_lifshitz_hamaker_constant():
+    """The small-scale Dugdale strip d = pi E' w / (8 sigma0^2): 51 nm at A = 2e-19 J against 9.3 nm at the thesis's
+    1.1e-18 J (sigma0 = 16 w / (9 sqrt(3) D0) scales with w, so d scales as 1 / w)."""
+    from memstribo.parameters import THESIS_VDW
+    from memstribo.physics.adhesion import nanoscale_constants
+
+    widths = []
+    for params in (parameter_set(), parameter_set().updated(THESIS_VDW)):
+        c = nanoscale_constants(params)
+        widths.append(zone_width(c.contact_modulus, c.maugis_stress, c.maugis_range))
+    assert widths[0] == pytest.approx(51.3e-9, rel=2e-3) and widths[1] == pytest.approx(9.33e-9, rel=2e-3)
+    assert widths[0] / widths[1] == pytest.approx(1.1e-18 / 2.0e-19, rel=1e-9)

@@ -226,8 +226,18 @@ def check_unused_values(params) -> None:
     ``relative_humidity`` (and the vapour, its pressure ratio and the surface termination, which set the menisci)
     act only in air (``environment = 'air'``); as ``--wear`` without ``--coating`` is refused, a humidity in
     vacuum is too. (``ambient_temperature`` acts in vacuum as well: the tooth's
-    temperature and the coating's stability, docs/thermal.md.)
+    temperature and the coating's stability, docs/thermal.md.). ``vdw_bond_energy`` acts only under
+    ``vdw_energy_rule = 'thesis'`` and ``vdw_dissipated_fraction`` only under ``'hysteresis'`` (MODEL 7h).
     """
+    rule = params.get("vdw_energy_rule")
+    if rule == "hysteresis" and user_set(params, "vdw_bond_energy"):
+        raise InputError("vdw_bond_energy is used only under vdw_energy_rule 'thesis'; the default rule 'hysteresis' "
+                         "derives U_vdW = vdw_dissipated_fraction x w12 / vdw_site_density (MODEL 7h): add --set "
+                         "vdw_energy_rule=thesis, or set vdw_dissipated_fraction instead.")
+    if rule == "thesis" and user_set(params, "vdw_dissipated_fraction"):
+        raise InputError("vdw_dissipated_fraction is used only under vdw_energy_rule 'hysteresis' (U_vdW = phi w12 / "
+                         "n_site), but the rule is 'thesis' (vdw_bond_energy as given): set vdw_energy_rule=hysteresis, "
+                         "or leave vdw_dissipated_fraction out.")
     if params["environment"] == "vacuum":
         for name in ("relative_humidity", "vapour", "vapour_pressure_ratio", "surface_termination"):
             if user_set(params, name):

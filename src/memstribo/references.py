@@ -370,6 +370,15 @@ REFERENCES: dict[str, str] = {
         "W. N. Sharpe, K. Jackson, G. Coles, D. A. LaVan, 'Mechanical properties of different polysilicons', "
         "Proc. ASME IMECE 2000, MEMS, 255-259. doi:10.1115/IMECE2000-1100"
     ),
+    "yoshizawa_1993": (
+        "H. Yoshizawa, Y.-L. Chen, J. Israelachvili, 'Recent advances in molecular level understanding of adhesion, "
+        "friction and lubrication', Wear 168 (1993) 161-166. doi:10.1016/0043-1648(93)90212-5"
+    ),
+    "israelachvili_berman_1999": (
+        "J. N. Israelachvili, A. D. Berman, 'Surface forces and microrheology of molecularly thin liquid films', in "
+        "B. Bhushan (ed.), Handbook of Micro/Nanotribology, 2nd ed., CRC Press, 1999, ch. 9 (9.8 adhesion "
+        "hysteresis; 9.11 the relation between boundary friction and adhesion energy hysteresis)."
+    ),
     "kittel_2005": "C. Kittel, Introduction to Solid State Physics, 8th ed., Wiley, 2005 (Table 3.1, cohesive energies).",
     "almqvist_2007": (
         "A. Almqvist, F. Sahlin, R. Larsson, S. Glavatskih, 'On the dry elasto-plastic contact of nominally flat "

@@ -37,7 +37,9 @@ def run(args, params):
         return CommandResult(values=values, units={n: SPECS[n].unit for n in params})
     from memstribo.uncertainty.priors import priors_for, set_priors
 
-    free = priors_for(params)
+    from memstribo.uncertainty.priors import unused_by_rule
+
+    free, unused = priors_for(params), unused_by_rule(params)
     priors = {**set_priors(params.name if params.name in _sets() else "silicon_thesis"), **free}
     lines = []
     for name in params:
@@ -49,7 +51,9 @@ def run(args, params):
         lines.append(f"  {'':<28} source: {params.source(name)}")
         if name in priors:
             prior = priors[name]
-            state = "sampled by --uncertainty" if name in free else "fixed (its value was given)"
+            state = ("sampled by --uncertainty" if name in free else
+                     f"not sampled: vdw_energy_rule '{params['vdw_energy_rule']}' does not use it" if name in unused
+                     else "fixed (its value was given)")
             lines.append(f"  {'':<28} prior: {prior.describe()} ({state}); {prior.source}; width: {prior.reason}")
     return CommandResult(values={}, title=f"parameter set '{params.name}'", notes=lines)
 

@@ -140,7 +140,9 @@ def _coated(params, coating_name):
     from memstribo.physics.coating import get_coating
 
     coating = get_coating(coating_name, params)
-    return params.updated({"bond_energy": COATED_BOND_ENERGY, "vdw_bond_energy": coating.vdw_bond_energy,
+    # the coating's own (calibrated) U_vdW as given: the thesis's rule, not the bare flanks' hysteresis (MODEL 7h)
+    return params.updated({"bond_energy": COATED_BOND_ENERGY, "vdw_energy_rule": "thesis",
+                           "vdw_bond_energy": coating.vdw_bond_energy,
                            "hamaker_constant": coating.hamaker_constant, "cutoff_distance": coating.cutoff_distance,
                            "work_of_adhesion": coating.work_of_adhesion},
                           origin=f"coating {coating.name}: no chemical bonds (thesis 5.4), its vdW constants")

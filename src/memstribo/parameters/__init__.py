@@ -37,17 +37,27 @@ __all__ = [
     "coerce_value",
     "THESIS_CONDITIONS",
     "THESIS_FLAGS",
+    "THESIS_VDW",
+    "THESIS_VDW_FLAGS",
 ]
 
 DEFAULT_SET = "silicon_thesis"
 
 #: The thesis's own conditions, for the reproduction rows and examples (docs/validation.md "[thesis case]"):
-#: its load case (F_ext = 25 uN), its full-energy vdW band, and no adhesion inside the contact solve
-#: (the thesis counts adhesion as the sum of block pull-off forces, 3-31). memstribo's defaults are
-#: MODEL 7b and 7c: the torque's load, vdW at the actual gap, the Maugis-Dugdale zone in the solve.
-THESIS_CONDITIONS = {"load_case": "thesis", "interface_model": "thesis", "contact_adhesion": "none"}
+#: its load case (F_ext = 25 uN), its full-energy vdW band, no adhesion inside the contact solve
+#: (the thesis counts adhesion as the sum of block pull-off forces, 3-31), and its van der Waals constants
+#: (U_vdW = U_chem / 100 and A = 1.1e-18 J, 3.5). memstribo's defaults are MODEL 7b, 7c and 7h: the torque's
+#: load, vdW at the actual gap, the Maugis-Dugdale zone in the solve, one vdW interaction with the Lifshitz A.
+THESIS_CONDITIONS = {"load_case": "thesis", "interface_model": "thesis", "contact_adhesion": "none",
+                     "vdw_energy_rule": "thesis", "hamaker_constant": 1.1e-18}
+#: The thesis's van der Waals constants alone (3.5), for the rows that reproduce its nanoscale numbers:
+#: U_vdW = U_chem / 100 as given and its Hamaker constant 1.1e-18 J (memstribo's default is the Lifshitz value)
+THESIS_VDW = {"vdw_energy_rule": "thesis", "hamaker_constant": 1.1e-18}
+#: :data:`THESIS_VDW` as command-line options
+THESIS_VDW_FLAGS = "--set vdw_energy_rule=thesis --set hamaker_constant=1.1e-18"
 #: :data:`THESIS_CONDITIONS` as command-line options
-THESIS_FLAGS = "--load-case thesis --set interface_model=thesis --set contact_adhesion=none"
+THESIS_FLAGS = ("--load-case thesis --set interface_model=thesis --set contact_adhesion=none "
+                "--set vdw_energy_rule=thesis --set hamaker_constant=1.1e-18")
 
 
 def available_parameter_sets() -> list[str]:

@@ -124,6 +124,19 @@ _SPECS = [
            "from a weak bond (0.006 eV) to beyond the strongest chemical bond (11 eV = 1.8e-18 J)"),
     _range("vdw_bond_energy", "J", "Energy of one van der Waals bond U_vdW", 0.0, 1e-19,
            "a van der Waals bond is weaker than 0.6 eV; 0 switches it off", exclusive_minimum=False),
+    ParameterSpec("vdw_energy_rule", "", "Friction energy U_vdW of a van der Waals site: 'hysteresis' (MODEL 7h: the "
+                  "dissipated fraction of the adhesion energy the site holds, U_vdW = vdw_dissipated_fraction x w12 / "
+                  "vdw_site_density, one interaction with the adhesion; vdw_bond_energy is not used) or 'thesis' "
+                  "(vdw_bond_energy as given: the thesis's U_chem / 100, 3.5)", kind="str",
+                  choices=("hysteresis", "thesis")),
+    _range("vdw_dissipated_fraction", "", "Dissipated fraction phi of the adhesion energy a vdW site holds when it "
+           "breaks and re-forms while sliding (adhesion hysteresis; vdw_energy_rule 'hysteresis')", 0.0, 1.0,
+           "a fraction: more than nothing and at most all of the adhesion energy (phi = 1: every site gives up its "
+           "whole share of w12)"),
+    _range("vdw_site_density", "1/m^2", "Areal density of van der Waals sites (bonds) of a flank; unset: 1 / "
+           "bond_length^2 (the thesis's count, 3-12)", 1e17, 1e20,
+           "no negative or zero density; from a sparse adsorbate layer (1e17 m^-2, one site per 10 nm^2) to beyond "
+           "any atomic surface (1e20 m^-2, one site per 0.01 nm^2)", optional=True),
     _range("hamaker_constant", "J", "Hamaker constant A", 1e-22, 1e-17,
            "Hamaker constants of solids lie between 1e-21 J and 5e-19 J (metals); a decade of margin each side"),
     _range("cutoff_distance", "m", "Cut-off (contact) separation D0 of the vdW interaction", 5e-11, 1e-9, _ATOMIC),

@@ -334,6 +334,7 @@ def nanoscale_constants(params: Mapping) -> NanoscaleConstants:
     NanoscaleConstants
     """
     from memstribo.physics import potentials
+    from memstribo.physics.vdw_energy import vdw_bond_energy_of
 
     e_star = contact_modulus_of(params)
     if params.get("work_of_adhesion") is None:
@@ -357,6 +358,6 @@ def nanoscale_constants(params: Mapping) -> NanoscaleConstants:
         maugis_stress=s0,
         maugis_range=maugis_range(w, s0),
         bond_energy_chemical=float(params["bond_energy"]),
-        bond_energy_vdw=float(params["vdw_bond_energy"]),
+        bond_energy_vdw=vdw_bond_energy_of(params),
         bond_length=float(params["bond_length"]),
     )

@@ -78,8 +78,10 @@ def chemical_bond_count(atomic_width, chemical_length, bond_length):
 
 
 @cites("thesis")
-def vdw_bond_count(adhesive_width, vdw_length, bond_length):
+def vdw_bond_count(adhesive_width, vdw_length, bond_length, site_density=None):
     """van der Waals bonds held by one adhesive block, ``N_vdW = w_adh L_vdW / D_chem^2``, Eq. (3-12) in [1]_.
+
+    With ``site_density`` n_site (MODEL 7h): ``N_vdW = w_adh L_vdW n_site``; the thesis's 1 / D_chem^2 is its default.
 
     Parameters
     ----------
@@ -89,6 +91,8 @@ def vdw_bond_count(adhesive_width, vdw_length, bond_length):
         Length ``L_vdW`` of the block inside the adhesive layer, along the sliding direction [m].
     bond_length : numeric
         ``D_chem`` [m]: the vdW bonds have the atomic density of the chemical ones (3.5).
+    site_density : numeric, optional
+        Areal density of vdW sites [1/m^2], > 0; default ``1 / D_chem^2``.
 
     Returns
     -------
@@ -98,7 +102,8 @@ def vdw_bond_count(adhesive_width, vdw_length, bond_length):
     w = as_array(adhesive_width, "adhesive_width", "m", nonnegative=True)
     length = as_array(vdw_length, "vdw_length", "m", nonnegative=True)
     d = as_array(bond_length, "bond_length", "m", positive=True)
-    return _result(w * length / d**2)
+    density = 1.0 / d**2 if site_density is None else as_array(site_density, "site_density", "1/m^2", positive=True)
+    return _result(w * length * density)
 
 
 @cites("thesis")
@@ -421,8 +426,9 @@ def thesis_estimate(blocks, chemical_energy_per_block, vdw_energy_per_block, adh
 def estimate_from_parameters(params, blocks: int = 9, load: float | None = None) -> FrictionEstimate:
     """The 3.5 estimate from first principles, with the constants of a parameter set.
 
-    ``N_chem = (w_at / D_chem)^2``, ``N_vdW = (w_adh / D_chem)^2`` (fully overlapped blocks),
-    ``U_chem``, ``U_vdW`` from the set, ``F_adh,1`` from (3-32) with ``a = w_adh / 2``, ``w``
+    ``N_chem = (w_at / D_chem)^2``, ``N_vdW = w_adh^2 n_site`` (fully overlapped blocks; n_site = 1 / D_chem^2
+    unless ``vdw_site_density`` is set), ``U_chem`` from the set, ``U_vdW`` by the set's ``vdw_energy_rule``
+    (:func:`memstribo.physics.vdw_energy.vdw_bond_energy_of`), ``F_adh,1`` from (3-32) with ``a = w_adh / 2``, ``w``
     from (3-34) (0.445 J/m^2 for silicon, not the thesis's printed 1.31 J/m^2), and, as in
     the thesis, ``n`` counting both the chemical and the vdW terms and the pull-off force.
 
@@ -440,14 +446,15 @@ def estimate_from_parameters(params, blocks: int = 9, load: float | None = None)
     FrictionEstimate
     """
     from memstribo.physics.adhesion import nanoscale_constants
+    from memstribo.physics.vdw_energy import vdw_site_density_of
 
     constants = nanoscale_constants(params)
     d = float(params["bond_length"])
     n_chem = full_overlap_bond_count(params["atomic_width"], d)
-    n_vdw = full_overlap_bond_count(params["adhesive_width"], d)
+    n_vdw = vdw_bond_count(params["adhesive_width"], params["adhesive_width"], d, vdw_site_density_of(params))
     load = float(params["normal_load"] if load is None else load)
     return thesis_estimate(
-        blocks, n_chem * params["bond_energy"], n_vdw * params["vdw_bond_energy"],
+        blocks, n_chem * params["bond_energy"], n_vdw * constants.bond_energy_vdw,
         blocks * constants.pull_off_force_block, load, d,
         chemical_bonds=n_chem, vdw_bonds=n_vdw, pull_off_force_block=constants.pull_off_force_block,
     )

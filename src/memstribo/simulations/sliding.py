@@ -50,6 +50,7 @@ from memstribo.physics import friction
 from memstribo.errors import InputError
 from memstribo.physics.nanoblock import mechanics
 from memstribo.physics.nanoblock.geometry import adhesive_layer_thickness
+from memstribo.physics.vdw_energy import vdw_bond_energy_of, vdw_site_density_of
 from memstribo.quantities import attrs as quantity_attrs
 from memstribo.references import cites
 
@@ -176,7 +177,7 @@ def _rates(bonds_chem, bonds_vdw, elastic_energy, steps, params):
     """Friction forces by mechanism and step energies, from bonds and interlocking energies."""
     d = params["bond_length"]
     f_chem = bonds_chem * params["bond_energy"] / d
-    f_vdw = bonds_vdw * params["vdw_bond_energy"] / d
+    f_vdw = bonds_vdw * vdw_bond_energy_of(params) / d  # U_vdW by the set's vdw_energy_rule (MODEL 7h)
     safe = np.where(steps > 0, steps, 1.0)
     f_el = np.where(steps > 0, elastic_energy / safe, 0.0)
     return f_chem, f_vdw, f_el, f_chem * steps, f_vdw * steps, elastic_energy
@@ -237,7 +238,8 @@ def slide_single(params, *, load=None, distance=None, step=None):
                                                        constants.contact_modulus, params["threshold_strain"])
     state = mechanics.structure_fixed_load(np.zeros((1, 1)), stiffness, load)
     bonds_chem = np.full(n, friction.full_overlap_bond_count(geometry.atomic_width, d))
-    bonds_vdw = np.full(n, friction.full_overlap_bond_count(geometry.adhesive_width, d))
+    bonds_vdw = np.full(n, friction.vdw_bond_count(geometry.adhesive_width, geometry.adhesive_width, d,
+                                                   vdw_site_density_of(params)))
     adhesion = np.full(n, constants.pull_off_force_block)
     normal = np.full(n, float(state.total_force))
     steps = np.diff(positions, prepend=positions[0])
@@ -410,7 +412,7 @@ def _slide_structure(params, mode, profile=None, *, gap=None, load=None, distanc
 
         bar = tqdm(total=n_steps, desc=f"slide {mode}", unit="step", unit_scale=True, leave=False)
     full_chem = friction.full_overlap_bond_count(w_at, d_chem)
-    full_vdw = friction.full_overlap_bond_count(w_adh, d_chem)
+    full_vdw = friction.vdw_bond_count(w_adh, w_adh, d_chem, vdw_site_density_of(params))
     for start in range(0, n_steps, _CHUNK):
         if bar is not None and start:
             bar.update(_CHUNK)

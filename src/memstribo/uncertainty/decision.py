@@ -304,6 +304,8 @@ _MEASURABLE_UNITS = {
     "adhesive_height": ("adhesive block height", "nm", 1e9),
     "atomic_width": ("atomic block width", "nm", 1e9),
     "atomic_height": ("atomic block height", "nm", 1e9),
+    "atomic_pitch": ("atomic block pitch", "nm", 1e9),
+    "vdw_site_density": ("van der Waals site density", "sites/nm^2", 1e-18),
     "youngs_modulus": ("Young's modulus", "GPa", 1e-9),
 }
 
@@ -316,6 +318,8 @@ def measurable(name: str, value: float, params) -> list[dict]:
       strength its bonds give, tau = U / D_chem^3 (one bond per D_chem^2, each resisting with U / D_chem: 3-1,
       3-10, 3-12) [MPa], and the energy it dissipates per area and per bond renewal, U / D_chem^2, the adhesion
       hysteresis the model implies [mJ/m^2].
+    - ``vdw_dissipated_fraction`` phi (MODEL 7h): the adhesion hysteresis phi w12 [mJ/m^2] and the vdW shear strength
+      phi w12 / D_chem [MPa].
     - ``hamaker_constant`` and ``cutoff_distance``: the work of adhesion w12 = A / (12 pi D0^2) (3-34) with the
       other at its value in ``params`` [mJ/m^2].
     - block sizes [nm], Young's modulus [GPa]; other constants in their own unit.
@@ -337,6 +341,14 @@ def measurable(name: str, value: float, params) -> list[dict]:
                  "unit": "MPa", "text": f"{tau / 1e6:.3g} MPa", "short": "interfacial shear strength"},
                 {"quantity": "adhesion hysteresis per bond renewal (U / D_chem^2)", "value": hysteresis * 1e3,
                  "unit": "mJ/m^2", "text": f"{hysteresis * 1e3:.3g} mJ/m^2", "short": "adhesion hysteresis"}]
+    if name == "vdw_dissipated_fraction":  # MODEL 7h: the adhesion hysteresis phi w12 and tau = phi w12 / D_chem
+        w = params.get("work_of_adhesion") or float(params["hamaker_constant"]) / (
+            12.0 * math.pi * float(params["cutoff_distance"]) ** 2)
+        hysteresis, tau = value * w, value * w / float(params["bond_length"])
+        return [{"quantity": "adhesion hysteresis of the flanks (phi w12)", "value": hysteresis * 1e3,
+                 "unit": "mJ/m^2", "text": f"{hysteresis * 1e3:.3g} mJ/m^2", "short": "adhesion hysteresis"},
+                {"quantity": "interfacial shear strength of the van der Waals sites (phi w12 / D_chem)",
+                 "value": tau / 1e6, "unit": "MPa", "text": f"{tau / 1e6:.3g} MPa", "short": "interfacial shear strength"}]
     if name in ("hamaker_constant", "cutoff_distance"):
         a = value if name == "hamaker_constant" else float(params["hamaker_constant"])
         d0 = value if name == "cutoff_distance" else float(params["cutoff_distance"])

@@ -31,7 +31,7 @@ import numpy as np
 from memstribo.errors import InputError
 from memstribo.references import cites
 
-__all__ = ["Prior", "DISTRIBUTIONS", "priors_for", "check_priors", "set_priors", "coating_priors"]
+__all__ = ["Prior", "DISTRIBUTIONS", "RULE_UNUSED", "unused_by_rule", "priors_for", "check_priors", "set_priors", "coating_priors"]
 
 #: distributions a prior may have
 DISTRIBUTIONS = ("uniform", "loguniform", "normal")
@@ -263,6 +263,18 @@ def _set_sources(set_name: str) -> dict[str, str]:
     return {name: params.source(name) for name in params}
 
 
+#: the constants each ``vdw_energy_rule`` leaves without effect on the result (MODEL 7h): under 'hysteresis'
+#: U_vdW = phi w12 / n_site, so vdw_bond_energy is not used and the site density cancels in the vdW friction
+#: (n_site U_vdW / D_chem = phi w12 / D_chem); under 'thesis' the dissipated fraction is not used
+RULE_UNUSED = {"hysteresis": ("vdw_bond_energy", "vdw_site_density"), "thesis": ("vdw_dissipated_fraction",)}
+
+
+def unused_by_rule(params) -> tuple[str, ...]:
+    """The constants that ``params``'s ``vdw_energy_rule`` does not use (not sampled; :data:`RULE_UNUSED`)."""
+    rule = params.get("vdw_energy_rule") if hasattr(params, "get") else None
+    return RULE_UNUSED.get(rule or "thesis", ())
+
+
 def priors_for(params, coating=None) -> dict[str, Prior]:
     """The priors of every uncertain constant of ``params`` that the user has not fixed.
 
@@ -278,7 +290,8 @@ def priors_for(params, coating=None) -> dict[str, Prior]:
     Returns
     -------
     dict
-        ``{name: Prior}`` in the order of the set file.
+        ``{name: Prior}`` in the order of the set file, without the constants the set's ``vdw_energy_rule`` does
+        not use (:func:`unused_by_rule`).
 
     Raises
     ------
@@ -290,10 +303,13 @@ def priors_for(params, coating=None) -> dict[str, Prior]:
 
     set_name = params.name if getattr(params, "name", None) in available_parameter_sets() else DEFAULT_SET
     sources = _set_sources(set_name)
+    unused = unused_by_rule(params)
     priors = []
     for name, prior in set_priors(set_name).items():
         if name in params and params.source(name) != sources.get(name):
             continue  # fixed by the user
+        if name in unused:
+            continue  # the vdW energy rule does not use it (MODEL 7h)
         priors.append(prior)
     values = {p.name: params[p.name] for p in priors if p.name in params}
     if coating is not None:

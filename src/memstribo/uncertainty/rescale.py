@@ -25,6 +25,7 @@ from __future__ import annotations
 import numpy as np
 
 from memstribo.errors import InputError
+from memstribo.physics.vdw_energy import vdw_bond_energy_of
 from memstribo.references import cites
 
 __all__ = ["RESCALED", "CYCLE_VARIABLES", "SPLIT_VARIABLES", "reduce_cycle", "rescalable", "rescale_cycle",
@@ -231,7 +232,7 @@ def _energies(dataset, params_nominal, overrides) -> list[float]:
     """U_chem, U_vdW (bare) and the coating's U_vdW [J] of a set (:func:`memstribo.simulations.mesh.limits.bond_energies`
     order), the nominal where a set does not override them."""
     u_chem = float(overrides.get("bond_energy", params_nominal["bond_energy"]))
-    u_vdw = float(overrides.get("vdw_bond_energy", params_nominal["vdw_bond_energy"]))
+    u_vdw = float(overrides.get("vdw_bond_energy", vdw_bond_energy_of(params_nominal)))
     u_coat = 0.0
     if _coated(dataset):
         from memstribo.physics.coating import get_coating
@@ -252,7 +253,7 @@ def _bond_friction(dataset, params_nominal, overrides):
         if _coated(dataset):
             from memstribo.physics.coating import get_coating
 
-            u_bare = overrides.get("vdw_bond_energy", params_nominal["vdw_bond_energy"])
+            u_bare = overrides.get("vdw_bond_energy", vdw_bond_energy_of(params_nominal))
             u_coat = overrides.get("coating_vdw_bond_energy", params_nominal["coating_vdw_bond_energy"]
                                    or get_coating(dataset.attrs["coating"]).vdw_bond_energy)
             f_vdw = (np.asarray(dataset["bonds_vdw_bare"]) * float(u_bare)

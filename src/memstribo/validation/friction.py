@@ -5,7 +5,9 @@ from __future__ import annotations
 
 from memstribo.validation.rows import ValidationRow, compare
 
-_SLIDE = "memstribo slide --model {model} --json"
+from memstribo.parameters import THESIS_VDW_FLAGS
+
+_SLIDE = "memstribo slide --model {model} " + THESIS_VDW_FLAGS + " --json"
 
 
 def _row(quantity, reference, reference_value, value, unit, tolerance, agrees, command, note, shown_as_bound=False):
@@ -16,9 +18,9 @@ def _row(quantity, reference, reference_value, value, unit, tolerance, agrees, c
 def rows() -> list[ValidationRow]:
     from memstribo.simulations import sliding
     from memstribo.physics.friction import THESIS_3_5_COUNTS, THESIS_3_5_INPUTS, estimate_from_parameters, thesis_estimate
-    from memstribo.parameters import get_parameter_values
+    from memstribo.parameters import THESIS_VDW, get_parameter_values
 
-    params = get_parameter_values()
+    params = get_parameter_values().updated(THESIS_VDW)  # the thesis's vdW constants (MODEL 7h: not the default)
     estimate_cmd = _SLIDE.format(model="estimate")
     out = []
     # --- 3.5 estimate -----------------------------------------------------------------------------

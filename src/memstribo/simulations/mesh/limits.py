@@ -90,8 +90,10 @@ def _capped_energies(params, energies, bond) -> list[float]:
 
 def bond_energies(params, coating=None) -> list[float]:
     """The energies [J] of the three bond kinds of :func:`row_bond_forces`: U_chem, U_vdW (bare) and the coating's."""
+    from memstribo.physics.vdw_energy import vdw_bond_energy_of
+
     coated = float(coating.vdw_bond_energy) if coating is not None else 0.0
-    return [float(params["bond_energy"]), float(params["vdw_bond_energy"]), coated]
+    return [float(params["bond_energy"]), vdw_bond_energy_of(params), coated]
 
 
 def startup_and_limits(params, setup, cycle, verdict, coating=None) -> dict:

@@ -9,6 +9,7 @@ import numpy as np
 
 from memstribo.errors import InputError
 from memstribo.materials.pair import no_slip_coefficient
+from memstribo.physics.vdw_energy import vdw_bond_energy_of, vdw_site_density_of
 from memstribo.simulations.mesh.contacts import (_capillary_zone, _cohesive_zone, _solve_contacts,
                                                 _solve_contacts_surface, _solve_with_shear)
 from memstribo.simulations.mesh.interface import (_GOLDEN, _SILVER, _interlocking, _lattice, lattice_overlap_across,
@@ -126,6 +127,8 @@ def _context(setup, params, coating, wear, modulus):
     ctx.w_adh, ctx.w_at, ctx.m = params["adhesive_width"], params["atomic_width"], int(params["atomic_per_side"])
     ctx.pitch = params["atomic_pitch"]
     ctx.bond = params["bond_length"]
+    # one vdW interaction (MODEL 7h): U_vdW by the rule, sites at the set's density (1 / D_chem^2 unless set)
+    ctx.u_vdw, ctx.vdw_sites = vdw_bond_energy_of(params), vdw_site_density_of(params)
     ctx.dx = setup.grid_spacing
     ctx.grid = setup.grid
     ctx.half = 0.5 * ctx.grid.size * ctx.dx
@@ -420,10 +423,9 @@ def _vdw_and_menisci(out, ctx, pressure, gap, info, zone, rolls, row):
     # vdW: the share of a block's contact energy at the local gap (MODEL 7c), or the thesis's band
     inside = vdw_gap_factor(gap, params["cutoff_distance"], params["vdw_cutoff"]) if ctx.gap_model \
         else (gap <= ctx.layer).astype(float)
-    u_vdw_x = np.where(bare_x, params["vdw_bond_energy"], ctx.u_vdw_coat) if coating is not None \
-        else params["vdw_bond_energy"]
+    u_vdw_x = np.where(bare_x, ctx.u_vdw, ctx.u_vdw_coat) if coating is not None else ctx.u_vdw
     w_x = np.where(bare_x, ctx.w_si, ctx.w_coat) if coating is not None else ctx.w_si
-    n_vdw = friction.vdw_bond_count(w_adh, dx, bond) * inside  # (3-12), bonds per element
+    n_vdw = friction.vdw_bond_count(w_adh, dx, bond, ctx.vdw_sites) * inside  # (3-12), bonds per element
     out["vdw_bonds"] += n_vdw.sum(axis=1)
     if coating is not None:
         out["vdw_bonds_bare"] += np.where(bare_x, n_vdw, 0.0).sum(axis=1)
