@@ -226,7 +226,7 @@ def check_unused_values(params) -> None:
     ``relative_humidity`` (and the vapour, its pressure ratio and the surface termination, which set the menisci)
     act only in air (``environment = 'air'``); as ``--wear`` without ``--coating`` is refused, a humidity in
     vacuum is too. (``ambient_temperature`` acts in vacuum as well: the tooth's
-    temperature and the coating's stability, docs/thermal.md.). ``vdw_bond_energy`` acts only under
+    temperature and the coating's stability, docs/thermal.md.) ``vdw_bond_energy`` acts only under
     ``vdw_energy_rule = 'thesis'`` and ``vdw_dissipated_fraction`` only under ``'hysteresis'`` (MODEL 7h).
     """
     rule = params.get("vdw_energy_rule")
