@@ -92,7 +92,9 @@ def test_a_duplicated_id_is_refused_naming_both_rows(tmp_path):
 def test_validate_lab_reads_a_user_file_and_honours_set_and_parameter_set(cli, tmp_path):
     path = write(tmp_path, ROW.format(id="mine"))
     plain = cli.json("validate-lab", path, "--realisations", "1")
-    more = cli.json("validate-lab", path, "--realisations", "1", "--set", "vdw_bond_energy=2e-20")
+    # silicon_oxide_air (the lab's set for a row in air) keeps the thesis's vdW rule, where U_vdW is a constant
+    more = cli.json("validate-lab", path, "--realisations", "1", "--parameter-set", "silicon_oxide_air",
+                    "--set", "vdw_bond_energy=2e-20")
     other = cli.json("validate-lab", path, "--realisations", "1", "--parameter-set", "silicon_thesis")
     medians = [out["laboratory_rows"][0]["median"] for out in (plain, more, other)]
     assert medians[1] > 1.1 * medians[0]  # more vdW bond energy, more friction
@@ -137,7 +139,8 @@ def test_a_set_file_without_base_or_with_an_unknown_parameter_is_refused(tmp_pat
 
 def test_calibrate_refuses_when_every_constant_is_fixed(cli, tmp_path):
     path = write(tmp_path, ROW.format(id="mine") + '\n[calibration]\nconstants = ["vdw_bond_energy"]\n')
-    code, _, err = cli("calibrate", path, "--samples", "4", "--set", "vdw_bond_energy=5e-21")
+    code, _, err = cli("calibrate", path, "--samples", "4", "--parameter-set", "silicon_oxide_air",
+                       "--set", "vdw_bond_energy=5e-21")
     assert code == 2 and "no constant to calibrate" in err
 
 

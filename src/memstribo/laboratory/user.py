@@ -37,7 +37,8 @@ OWN = "own measurement"
 DEFAULTS = {"contact": "not stated", "temperature": "not stated", "coating": "none", "surface": "not stated",
             "speed": "not stated", "roughness": "not stated", "source_text": "user file", "calibration": False}
 #: constants a user calibration updates unless the file's [calibration] table names others
-DEFAULT_CONSTANTS = ("bond_energy", "vdw_bond_energy", "coating_vdw_bond_energy")
+#: (the set's vdW rule keeps the one of vdw_bond_energy / vdw_dissipated_fraction it uses: MODEL 7h)
+DEFAULT_CONSTANTS = ("bond_energy", "vdw_bond_energy", "vdw_dissipated_fraction", "coating_vdw_bond_energy")
 _DOI = re.compile(r"^doi:10\.\d{4,9}/\S+$", re.IGNORECASE)
 #: a citation key stated in place of the row's own (the packaged checks accept only registered keys)
 _PLACEHOLDER = "model"
