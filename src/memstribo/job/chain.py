@@ -497,9 +497,16 @@ class RunChain:
 
         samples = self.options.uncertainty
         steps = self.options.steps
-        result = uncertainty_study(self.model_params, self.results["mesh_roughness"], samples=samples,
-                                   steps=steps, sobol_samples=8, sobol_steps=min(121, steps or 121),
-                                   progress=self.progress)
+        from memstribo.job.workers import RUN_DECISION, stage_cluster
+
+        cluster = stage_cluster(samples, "uncertainty")
+        try:
+            result = uncertainty_study(self.model_params, self.results["mesh_roughness"], samples=samples,
+                                       steps=steps, sobol_samples=8, sobol_steps=min(121, steps or 121),
+                                       progress=self.progress, client=cluster, decision=RUN_DECISION)
+        finally:
+            if cluster is not None:
+                cluster.close()
         self._json(result, "uncertainty")
         for stem, plot, caption in (
                 ("uncertainty_sensitivity", plot_sensitivity,
