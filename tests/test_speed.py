@@ -98,3 +98,35 @@ def test_a_shared_solve_design_that_widens_the_interval_past_the_precision_says_
     assert _warnings({**base, "design_effect": 1.2, "stiction_probability_ci": [0.5 - 0.04, 0.5 + 0.04]}) == []
     assert _warnings({**base, "solve_sets": None, "design_effect": 1.0,
                       "stiction_probability_ci": [0.44, 0.56]}) == []
+
+
+def test_the_study_on_two_workers_equals_the_study_in_this_process(params):
+    from memstribo.simulations.study import local_cluster
+    from memstribo.uncertainty.study import uncertainty_study
+
+    kwargs = dict(samples=4, realisations=2, steps=11, sensitivity=False)
+    alone = uncertainty_study(params, **kwargs)
+    with local_cluster(2) as cluster:
+        shared = uncertainty_study(params, client=cluster, **kwargs)
+    assert alone["workers"] == 1 and shared["workers"] == 2
+    drop = {"workers"}
+    assert _plain({k: v for k, v in alone.items() if k not in drop}) == \
+        _plain({k: v for k, v in shared.items() if k not in drop})
+
+
+def test_the_run_starts_workers_only_where_the_stage_has_work_for_them(monkeypatch, caplog):
+    import logging
+
+    import memstribo.job.workers as workers
+
+    started = []
+    monkeypatch.setattr("memstribo.simulations.study.local_cluster", lambda n: started.append(n) or f"cluster {n}")
+    with caplog.at_level(logging.INFO, logger="memstribo.run"):
+        monkeypatch.setattr(workers, "machine_cores", lambda: 2)
+        assert workers.stage_cluster(workers.PARALLEL_SAMPLES - 1, "uncertainty") is None
+        assert workers.stage_cluster(64, "uncertainty") == "cluster 2" and started == [2]
+        monkeypatch.setattr(workers, "machine_cores", lambda: 1)
+        assert workers.stage_cluster(64, "uncertainty") is None and started == [2]
+    text = caplog.text
+    assert "uncertainty: the cycles run on 2 worker processes (this machine's cores)" in text
+    assert "under 32" in text and "one core" in text
