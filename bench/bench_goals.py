@@ -4,7 +4,7 @@ Cases (``--case``, several allowed; each a command of its own, timed from outsid
 
 - ``cycle``: ``memstribo mesh --no-refine --no-step-check --json`` (one default cycle): the baseline every other
   case is divided by.
-- ``run``: ``memstribo run --out TMP`` with its defaults. Goal: <= 90 s wall on an idle 2-core machine.
+- ``run``: ``memstribo run --out TMP`` (``--keep DIR``: into DIR) with its defaults. Goal: <= 90 s wall on an idle 2-core machine.
 - ``uncertainty256``: ``memstribo mesh --uncertainty 256 --json``. Goal: <= 30 x the baseline cycle.
 - ``sobol481``: Sobol' of the decisive constants at the verdict's 481 steps
   (``bench/bench_uncertainty.py --case sobol --steps 481 --sobol-samples 32 --workers 2``). Goal: <= 5 min.
@@ -61,6 +61,8 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--case", nargs="+", default=["cycle"], choices=list(CASES))
     parser.add_argument("--timeout", type=float, default=1500.0, help="per case [s]")
+    parser.add_argument("--keep", default=None, help="write the run's results folder here (its run.json has the "
+                        "stages' times) instead of a temporary folder")
     args = parser.parse_args(argv)
     cases = args.case if "cycle" in args.case else ["cycle"] + args.case  # the baseline first
     print(f"cpus {os.cpu_count()}, python {sys.version.split()[0]}")
@@ -68,7 +70,7 @@ def main(argv=None):
     with tempfile.TemporaryDirectory() as tmp:
         for name in cases:
             command, goal_s, goal_cycles = CASES[name]
-            command = [part.replace("{tmp}", tmp) for part in command]
+            command = [part.replace("{tmp}/run", args.keep or f"{tmp}/run") for part in command]
             wall, code, before, after = _time(command, args.timeout)
             baseline = wall if name == "cycle" else baseline
             ratio = wall / baseline if baseline else float("nan")

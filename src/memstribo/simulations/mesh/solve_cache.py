@@ -20,8 +20,8 @@ import numpy as np
 
 __all__ = ["keep_solves", "stop_keeping", "kept_solves", "solve_digest", "lookup", "store", "DEFAULT_BYTES"]
 
-#: bytes of solves kept by default (a default cycle's row: ~0.75 MB; 512 MiB: ~70 cycles of 10 rows)
-DEFAULT_BYTES = 512 * 2**20
+#: bytes of solves kept by default per process (a default cycle's row: ~0.9 MB; 256 MiB: ~28 cycles of 10 rows)
+DEFAULT_BYTES = 256 * 2**20
 
 _STATE = {"store": None, "bytes": 0, "max_bytes": 0, "hits": 0, "misses": 0}
 
