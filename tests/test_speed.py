@@ -130,3 +130,20 @@ def test_the_run_starts_workers_only_where_the_stage_has_work_for_them(monkeypat
     text = caplog.text
     assert "uncertainty: the cycles run on 2 worker processes (this machine's cores)" in text
     assert "under 32" in text and "one core" in text
+
+
+def test_the_runs_ensemble_on_the_cluster_equals_the_ensemble_in_this_process(params, tmp_path, monkeypatch):
+    import memstribo.job.workers as workers
+    from memstribo.job.chain import RunChain
+    from memstribo.job.options import options_for_test
+
+    options = options_for_test(stages=("roughness", "geometry", "mesh"), realisations=workers.ENSEMBLE_REALISATIONS)
+    monkeypatch.setattr(workers, "machine_cores", lambda: 2)
+    chain = RunChain(params, tmp_path / "two", options)
+    shared = chain.run()
+    assert chain.workers.cluster is None  # closed at the end of the run
+    monkeypatch.setattr(workers, "machine_cores", lambda: 1)
+    alone = RunChain(params, tmp_path / "one", options).run()
+    assert shared.ok and alone.ok
+    a, b = (json.loads((tmp_path / name / "data" / "mesh_bare_ensemble.json").read_text()) for name in ("two", "one"))
+    assert json.dumps(a, sort_keys=True) == json.dumps(b, sort_keys=True)
