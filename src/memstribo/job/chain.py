@@ -796,6 +796,7 @@ class RunChain:
                      f" ({record.message})" if record.message else "")
             self._finish(time.perf_counter() - start)
         bar.close()
+        self.workers.close()  # the map stage starts its own cluster
         if self.options.map:
             self._run_map_stage(log)
         if self.model_params["environment"] == "air":  # the humid-air section (issue #17)
@@ -811,7 +812,6 @@ class RunChain:
             log.info("validation table (every topic's rows, 1-3 min) ...")
             validation = validation_rows()
             log.info("validation table: done")
-        self.workers.close()
         return self._finish(time.perf_counter() - start, validation)
 
     def _ordered_figures(self) -> list[FigureRecord]:
