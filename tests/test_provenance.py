@@ -56,6 +56,8 @@ def run_folder(tmp_path_factory):
         "[run]\n"
         f"roughness_files = [{json.dumps(str(SCAN))}]\n"
         "steps = 8\n"
+        "uncertainty = 8\n"  # a cheap uncertainty stage: its files, not its numbers (issue 40 item 5)
+        "realisations = 4\n"
         'loads = ["25 uN", "150 uN"]\n'
         "areas = [1, 4]\n"
         "wear = [0.0, 1.0]\n"

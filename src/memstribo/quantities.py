@@ -476,6 +476,11 @@ _ENTRIES = [
     ("solve_sets", "1", "solve sets", "distinct values per realisation of the constants that need a contact solve "
      "(null: every constant set its own); the bond energies keep every set's"),
     ("solve_seconds", "s", "contact solve time", "wall time the uncertainty study spent solving meshing cycles"),
+    ("workers", "1", "worker processes", "processes the uncertainty study's meshing cycles ran on (1: this process; "
+     "more: a Dask cluster, the run's by default one per core, issue 40)"),
+    ("contact_rows_reused", "1", "contact solves reused",
+     "rows' contact solves (a row over the whole cycle) the uncertainty study took from an earlier solve with the "
+     "same inputs instead of solving them again (issue 40; in this process, not counting Dask workers')"),
     ("rescale_seconds", "s", "rescaling time", "wall time the uncertainty study spent rescaling solved cycles to "
      "other bond energies"),
     ("design_effect", "1", "design effect of shared contact solves",

@@ -54,6 +54,9 @@ def run(args, params):
     spec = load_map_spec(args.spec)
     if args.workers is not None and not 1 <= args.workers <= 4096:
         raise InputError(f"--workers {args.workers}: give a positive integer (at most 4096).")
+    from memstribo.cli.mesh import cap_workers
+
+    args.workers = cap_workers(args.workers, "map", quiet=getattr(args, "quiet", False))
     out = Path(args.out) if args.out else Path(f"memstribo-map-{Path(args.spec).stem}")
     from memstribo.cli.common import progress_enabled
 

@@ -292,13 +292,10 @@ MAX_WORKERS = 4096
 
 
 def machine_cores() -> int:
-    """The cores this process may run on (its CPU affinity where the system has one)."""
-    import os
+    """The cores this process may run on (:func:`memstribo.job.workers.machine_cores`)."""
+    from memstribo.job.workers import machine_cores as cores
 
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except (AttributeError, OSError):  # pragma: no cover - not Linux
-        return max(1, os.cpu_count() or 1)
+    return cores()
 
 
 def _check_parallel(args, uncertainty, realisations) -> None:
@@ -308,8 +305,6 @@ def _check_parallel(args, uncertainty, realisations) -> None:
     they are refused. ``--workers`` above :data:`MAX_WORKERS` is refused; above the machine's cores it is
     capped at them with a note on stderr (more processes than cores only share them).
     """
-    import sys
-
     from memstribo.errors import InputError
 
     workers, scheduler = getattr(args, "workers", None), getattr(args, "scheduler", None)
@@ -327,12 +322,23 @@ def _check_parallel(args, uncertainty, realisations) -> None:
         return
     if workers < 1 or workers > MAX_WORKERS:
         raise InputError(f"--workers must be from 1 to {MAX_WORKERS:,} worker processes, got {workers:,}.")
+    args.workers = cap_workers(workers, "mesh", quiet=getattr(args, "quiet", False))
+
+
+def cap_workers(workers, command: str, quiet: bool = False):
+    """``workers`` capped at the machine's cores (:func:`machine_cores`), with a note on stderr where it is (more
+    processes than cores only share them); None stays None (issue 40)."""
+    import sys
+
+    if workers is None:
+        return None
     cores = machine_cores()
     if workers > cores:
-        if not getattr(args, "quiet", False):
-            print(f"memstribo mesh: note: --workers {workers:,} is more than this machine's {cores} core(s): using "
-                  f"{cores} worker processes.", file=sys.stderr)
-        args.workers = cores
+        if not quiet:
+            print(f"memstribo {command}: note: --workers {workers:,} is more than this machine's {cores} core(s): "
+                  f"using {cores} worker processes.", file=sys.stderr)
+        return cores
+    return workers
 
 
 def _client(args):

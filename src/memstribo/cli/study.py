@@ -51,6 +51,9 @@ def run(args, params):
     spec = load_study_spec(args.spec)
     if args.workers is not None and not 1 <= args.workers <= 4096:
         raise InputError(f"--workers {args.workers}: give a positive integer (at most 4096).")
+    from memstribo.cli.mesh import cap_workers
+
+    args.workers = cap_workers(args.workers, "study", quiet=getattr(args, "quiet", False))
     if args.dry_run:
         points = prepare_points(spec, params)
         return CommandResult(values={"name": spec.name, "function": function_name(spec.function),

@@ -45,6 +45,7 @@ from memstribo.job.figures import plot_lives
 from memstribo.job.figures import (plot_block_loads, plot_cycle, plot_energy, plot_ensemble, plot_gear, plot_humidity,
                                    plot_map, plot_profiles, plot_sliding, plot_sweep)
 from memstribo.job.verdict import uncertainty_summary, verdict  # noqa: F401  (verdict: re-exported)
+from memstribo.job.workers import StageWorkers
 from memstribo.job.options import (DEPENDS, MAP_STAGE, RELOADED, STAGES, USES, FigureRecord, RunOptions, RunResult,
                                    StageRecord)
 
@@ -156,6 +157,7 @@ class RunChain:
         self.folder = ensure_directory(results_folder(out, "out"))  # '' (the current folder) refused
         self.options = options or RunOptions()
         self.progress = progress
+        self.workers = StageWorkers()  # the run's local cluster, started by the first stage with work for it
         self.results: dict[str, Any] = {}
         self.summaries: dict[str, Any] = {}
         self.figures: list[FigureRecord] = []
@@ -470,8 +472,13 @@ class RunChain:
         count = self.options.realisations
         if count > 1:
             first = dict(summary, realisation=0, seed=[int(self.model_params["roughness_seed"]), 0])
-            others = [mesh._ensemble_point(self.model_params, self.results["mesh_roughness"], self.options.steps, None, 1.0, k)
-                      for k in self._tick(range(1, count), "roughness realisations")]
+            from memstribo.job.workers import ENSEMBLE_REALISATIONS
+
+            client, point = self.workers.client(count - 1, "mesh ensemble", ENSEMBLE_REALISATIONS), (
+                self.model_params, self.results["mesh_roughness"], self.options.steps, None, 1.0)
+            others = client.gather(client.map(mesh._ensemble_point, *[[a] * (count - 1) for a in point],
+                                              list(range(1, count)), pure=False)) if client is not None else \
+                [mesh._ensemble_point(*point, k) for k in self._tick(range(1, count), "roughness realisations")]
             ensemble = mesh.ensemble_summary([first] + others)
             self.results["ensemble"] = ensemble
             summary.update({key: value for key, value in ensemble.items() if key != "summaries"})
@@ -497,9 +504,11 @@ class RunChain:
 
         samples = self.options.uncertainty
         steps = self.options.steps
-        result = uncertainty_study(self.model_params, self.results["mesh_roughness"], samples=samples,
-                                   steps=steps, sobol_samples=8, sobol_steps=min(121, steps or 121),
-                                   progress=self.progress)
+        from memstribo.job.workers import RUN_DECISION
+
+        result = uncertainty_study(self.model_params, self.results["mesh_roughness"], samples=samples, steps=steps,
+                                   sobol_samples=8, sobol_steps=min(121, steps or 121), progress=self.progress,
+                                   client=self.workers.client(samples, "uncertainty"), decision=RUN_DECISION)
         self._json(result, "uncertainty")
         for stem, plot, caption in (
                 ("uncertainty_sensitivity", plot_sensitivity,
@@ -787,6 +796,7 @@ class RunChain:
                      f" ({record.message})" if record.message else "")
             self._finish(time.perf_counter() - start)
         bar.close()
+        self.workers.close()  # the map stage starts its own cluster
         if self.options.map:
             self._run_map_stage(log)
         if self.model_params["environment"] == "air":  # the humid-air section (issue #17)

@@ -105,6 +105,7 @@ def uncertainty_summary(result) -> dict[str, Any]:
                                         "stiction_probability_text",
                                         "stiction_probability_nominal", "stiction_probability_nominal_ci",
                                         "dominant", "designer_sentence", "solves", "rescalings", "elapsed")},
+        "workers": result.get("workers", 1),
         **{key: result[key] for key in ("startup_stiction_probability", "startup_stiction_probability_ci",
                                         "startup_stiction_count", "startup_stiction_probability_text")
            if key in result},

@@ -53,8 +53,10 @@ BYTES_PER_CYCLE_STEP = 45 * 8
 def _solve_cycle(params, roughness, steps, coating_name, wear, realisation):
     """One meshing cycle, reduced for the rescaling; the error text where the model refuses the point."""
     from memstribo.simulations.mesh import simulate_mesh
+    from memstribo.simulations.mesh.solve_cache import keep_solves
     from memstribo.uncertainty.rescale import reduce_cycle
 
+    keep_solves()  # rows whose contact inputs repeat (block constants, ends of priors) share their solve
     try:
         coating = None
         if coating_name:
@@ -423,7 +425,9 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
         ``design_effect`` and ``effective_samples`` [-] (samples that share a contact solve: :func:`_probability`),
         ``solve_seconds`` and ``rescale_seconds`` [s] (the solves' and rescalings' wall time, the Sobol' rows and
-        critical values included), ``elapsed`` [s], ``warnings``; with ``sensitivity``: ``sobol_design`` and
+        critical values included), ``contact_rows_reused`` (rows' contact solves taken from an earlier solve with
+        the same inputs, :mod:`memstribo.simulations.mesh.solve_cache`), ``workers`` (processes the cycles ran on),
+        ``elapsed`` [s], ``warnings``; with ``sensitivity``: ``sobol_design`` and
         :func:`memstribo.uncertainty.decision.decision_analysis`'s keys.
 
     Raises
@@ -432,20 +436,13 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         Bad sample counts, a fixed constant without a prior or named twice, a sample count above the memory
         estimate, bad priors, ``confidence`` outside (0, 1), ``threshold`` outside [0, 1], bad ``decision`` options.
     """
-    from memstribo.uncertainty.priors import priors_for
-    from memstribo.uncertainty.sampling import _check_fixed
-
     start = time.perf_counter()
-    coating_name = getattr(coating, "name", coating) if coating is not None else None
-    if priors is None:  # a fully worn coating (wear 1) leaves bare blocks only: its constants do not act
-        priors = priors_for(params, coating_name if float(wear) < 1.0 else None)
-    fixed_names = _check_fixed(priors, fixed)
-    sampled = {name: p for name, p in priors.items() if name not in fixed_names}
-    if realisations is None:
-        realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
+    coating_name, priors, fixed_names, sampled, realisations = _what_is_sampled(params, priors, coating, wear, fixed,
+                                                                               realisations, samples)
     decision = _check_inputs(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget,
                              solve_sets, confidence, threshold, decision, sobol_samples)
     client, own_client = _client_of(client)
+    result = None
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
         R = int(realisations)
@@ -462,6 +459,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         result["elapsed"] = time.perf_counter() - start
         return result
     finally:
+        _stop_keeping(result)
         if own_client:
             client.close()
 
@@ -478,9 +476,36 @@ def _analyse(result, params, runner, sampled, nominal, points, summaries, R, see
     return sobol_runner
 
 
+def _what_is_sampled(params, priors, coating, wear, fixed, realisations, samples):
+    """(coating name, priors, fixed names, sampled priors, realisations) of :func:`uncertainty_study`."""
+    from memstribo.uncertainty.priors import priors_for
+    from memstribo.uncertainty.sampling import _check_fixed
+
+    coating_name = getattr(coating, "name", coating) if coating is not None else None
+    if priors is None:  # a fully worn coating (wear 1) leaves bare blocks only: its constants do not act
+        priors = priors_for(params, coating_name if float(wear) < 1.0 else None)
+    fixed_names = _check_fixed(priors, fixed)
+    sampled = {name: p for name, p in priors.items() if name not in fixed_names}
+    if realisations is None:
+        realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
+    return coating_name, priors, fixed_names, sampled, realisations
+
+
+def _stop_keeping(result) -> None:
+    """Forget the kept contact solves of this process; ``result["contact_rows_reused"]``: how many were reused (Dask
+    workers keep their own, dropped with their cluster)."""
+    from memstribo.simulations.mesh.solve_cache import stop_keeping
+
+    counts = stop_keeping()
+    if result is not None:
+        result["contact_rows_reused"] = counts["hits"]
+
+
 def _count(result, runners):
-    """Solves, rescalings and their wall times [s] over the runners (the Sobol' rows' own where its steps differ)."""
+    """Worker processes, solves, rescalings and their wall times [s] over the runners (the Sobol' rows' own where its steps differ)."""
     runners = list({id(r): r for r in runners}.values())
+    client = runners[0].client
+    result["workers"] = len(client.scheduler_info().get("workers", {})) or 1 if client is not None else 1
     for name in ("solves", "rescalings", "solve_seconds", "rescale_seconds"):
         result[name] = sum(getattr(r, name) for r in runners)
 
@@ -508,6 +533,17 @@ def _warnings(result) -> list[str]:
     if result["failed_samples"]:
         warnings.append(f"{result['failed_samples']} sampled point(s) failed (the model refused their inputs): "
                         "counted, and the interval of P(stiction) covers both outcomes of each")
+    if result.get("solve_sets") and result.get("design_effect", 1.0) > 1.0:  # issue 40: say what sharing costs
+        from memstribo.uncertainty.intervals import binomial_interval
+
+        low, high = result["stiction_probability_ci"]
+        plain = binomial_interval(result["stiction_count"], result["samples"], result["confidence"])
+        if 0.5 * (high - low) > TARGET_HALF_WIDTH >= 0.5 * (plain[1] - plain[0]):
+            warnings.append(f"the shared-solve design (solve_sets = {result['solve_sets']}) widens the interval of "
+                            f"P(stiction) to +-{0.5 * (high - low):.3f} (design effect "
+                            f"{result['design_effect']:.2f}), beyond the precision of +-{TARGET_HALF_WIDTH:g} that "
+                            f"{result['samples']} independent samples would reach (+-{0.5 * (plain[1] - plain[0]):.3f})"
+                            ": give more solve sets, or more samples")
     if result["unconverged_samples"]:
         warnings.append(f"{result['unconverged_samples']} sampled cycle(s) have unconverged contact steps: counted "
                         "as computed")

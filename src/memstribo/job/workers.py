@@ -1,0 +1,77 @@
+"""How the run's heavy stages use the machine (issue 40 item 4): a local Dask cluster of its cores where the stage
+has enough cycles to share, and the run's settings of the decision analysis."""
+
+from __future__ import annotations
+
+import logging
+
+__all__ = ["PARALLEL_SAMPLES", "ENSEMBLE_REALISATIONS", "RUN_DECISION", "machine_cores", "stage_cluster", "StageWorkers"]
+
+#: the uncertainty stage runs its cycles on a local Dask cluster of the machine's cores from this many samples on
+#: (fewer: the cluster's start-up, a few seconds, would cost more than it saves; issue 40 item 4)
+PARALLEL_SAMPLES = 32
+
+#: the mesh stage's roughness realisations run on the cluster from this many on (issue 40 item 4)
+ENSEMBLE_REALISATIONS = 8
+
+#: the run's decision analysis (MODEL 7h): the robust-Bayes band of a constant that needs a contact solve re-draws
+#: it in the first 16 of the study's samples (the study's own default: 32), half the solves of its heaviest part
+RUN_DECISION = {"band_samples": 16}
+
+
+def machine_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system has one)."""
+    import os
+
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def stage_cluster(samples, stage: str, threshold: int = PARALLEL_SAMPLES):
+    """A local Dask cluster of this machine's cores (one thread each; Dask's workers start with OMP, MKL and
+    OpenBLAS at one thread) for a stage of ``samples`` cycles, or None: one core, too few samples, or no
+    dask.distributed. Logged, so the run says how it ran."""
+    log = logging.getLogger("memstribo.run")
+    cores = machine_cores()
+    if cores < 2 or samples < threshold:
+        log.info("%s: the cycles run in this process (%s)", stage,
+                 "one core" if cores < 2 else f"{samples} cycles, under {threshold}")
+        return None
+    try:
+        from memstribo.simulations.study import local_cluster
+
+        cluster = local_cluster(cores)
+    except ImportError:
+        log.info("%s: the cycles run in this process (dask.distributed is not installed)", stage)
+        return None
+    log.info("%s: the cycles run on %d worker processes (this machine's cores), one thread each", stage, cores)
+    return cluster
+
+
+class StageWorkers:
+    """One local cluster for the run's stages, started by the first stage that has work for it
+    (:func:`stage_cluster`) and kept for the next; :meth:`close` at the end of the run."""
+
+    def __init__(self):
+        self.cluster = self._client = None
+
+    def client(self, count: int, stage: str, threshold: int = PARALLEL_SAMPLES):
+        """A Dask client of the run's cluster for ``count`` cycles of ``stage``, or None (run them in this process)."""
+        if self._client is not None:
+            logging.getLogger("memstribo.run").info("%s: the cycles run on the run's %d worker processes", stage,
+                                                    len(self._client.scheduler_info().get("workers", {})))
+            return self._client
+        self.cluster = stage_cluster(count, stage, threshold)
+        if self.cluster is not None:
+            from distributed import Client
+
+            self._client = Client(self.cluster, set_as_default=False)
+        return self._client
+
+    def close(self) -> None:
+        if self._client is not None:
+            self._client.close()
+            self.cluster.close()
+        self.cluster = self._client = None
