@@ -171,6 +171,10 @@ REFERENCES: dict[str, str] = {
         "roughness: virtues and limitations of a stochastic Prandtl-Tomlinson model', Beilstein J. Nanotechnol. 1 "
         "(2010) 163-171. doi:10.3762/bjnano.1.20"
     ),
+    "kennedy_ohagan_2001": (
+        "M. C. Kennedy, A. O'Hagan, 'Bayesian calibration of computer models', Journal of the Royal Statistical "
+        "Society B 63 (2001) 425-464. doi:10.1111/1467-9868.00294 (the model-discrepancy term)"
+    ),
     "kish_1965": "L. Kish, Survey Sampling, Wiley, 1965 (effective sample size of weighted samples, (sum w)^2 / sum w^2).",
     "maboudian_howe_1997": (
         "R. Maboudian, R. T. Howe, 'Critical review: adhesion in surface micromechanical structures', "

@@ -110,7 +110,8 @@ def published_rows() -> list[ValidationRow]:
         compare(TOPIC, "bare oxidised silicon in air, RH 0.4: COF over the cycle (CALIBRATED value)",
                 "0.3, dynamic COF of polysilicon in laboratory air (" + GABRIEL_AS_CITED + ")", 0.3, round(cof, 3),
                 "", rtol=0.01, command=OXIDE_COMMAND,
-                note="U_vdW of silicon_oxide_air was calibrated to this number: agreement by construction"),
+                note="U_vdW of silicon_oxide_air was calibrated to this number: agreement by construction",
+                calibrated="parameter set silicon_oxide_air (vdw_bond_energy fitted to this 0.30)"),
         ValidationRow(TOPIC, "bare oxidised silicon in air: COF against the static friction of oxide-coated "
                       "polysilicon", "2.1 +/- 0.8, static (" + SRINIVASAN_1998 + ")", 2.1, round(cof, 3), "",
                       "differs (see note)", False, OXIDE_COMMAND,
@@ -135,7 +136,8 @@ def published_rows() -> list[ValidationRow]:
         round(growth, 3), "", "trend: ratio > 1", bool(growth > 1.0), OXIDE_COMMAND,
         note="F_adh in air is the vdW part plus the pull-off of the rough rows' water bridges (issue #28): it rises "
         "with RH, by less than the beams' exponential growth (a loaded flank is a third bridged already at RH 0.1; "
-        "docs/humidity.md)"))
+        "docs/humidity.md)", calibrated="design target: issue #28 item 4 built the rough rows' water bridges so that "
+        "adhesion rises with RH"))
     growth_ots = coated[0.9]["adhesion_force_mean"] / coated[0.3]["adhesion_force_mean"]
     out.append(ValidationRow(
         TOPIC, "OTS-coated gear, pinion bare: F_adh at RH 0.9 over RH 0.3", "hydrophobic beams: no humidity effect "
