@@ -218,8 +218,9 @@ def _check_schema_fields(name, row):
     if "vapour" in row and row["vapour"] not in VAPOURS:
         _refuse(name, f"vapour {row['vapour']!r}; allowed: {', '.join(VAPOURS)}.")
     ratio = row.get("vapour_pressure_ratio")
-    if ratio is not None and not (isinstance(ratio, (int, float)) and not isinstance(ratio, bool) and 0 <= ratio <= 1):
-        _refuse(name, f"vapour_pressure_ratio must be a number in [0, 1], got {ratio!r}.")
+    if ratio is not None and ratio != "not stated" and not (
+            isinstance(ratio, (int, float)) and not isinstance(ratio, bool) and 0 <= ratio <= 1):
+        _refuse(name, f"vapour_pressure_ratio must be a number in [0, 1] or 'not stated', got {ratio!r}.")
     if "surface_termination" in row and row["surface_termination"] not in TERMINATIONS:
         _refuse(name, f"surface_termination {row['surface_termination']!r}; allowed: {', '.join(TERMINATIONS)}.")
     for key in POSITIVE_FIELDS:

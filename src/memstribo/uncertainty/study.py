@@ -368,7 +368,8 @@ def _check_levels(confidence, threshold):
 def uncertainty_study(params, roughness=None, *, samples="auto", realisations=None, steps=None, coating=None,
                       wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
                       sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
-                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, decision=None) -> dict:
+                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, decision=None,
+                      keep_samples=False) -> dict:
     """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
 
     Parameters
@@ -409,6 +410,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         ``samples / design_effect`` samples (:func:`_probability`).
     decision : Mapping, optional
         ``band_factor``, ``band_samples``, ``span`` of :func:`memstribo.uncertainty.decision.decision_analysis`.
+    keep_samples : bool
+        Also return ``sample_points`` and ``sample_summaries`` (for :mod:`memstribo.laboratory.posterior`).
 
     Returns
     -------
@@ -432,17 +435,10 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         Bad sample counts, a fixed constant without a prior or named twice, a sample count above the memory
         estimate, bad priors, ``confidence`` outside (0, 1), ``threshold`` outside [0, 1], bad ``decision`` options.
     """
-    from memstribo.uncertainty.priors import priors_for
-    from memstribo.uncertainty.sampling import _check_fixed
-
     start = time.perf_counter()
     coating_name = getattr(coating, "name", coating) if coating is not None else None
-    if priors is None:  # a fully worn coating (wear 1) leaves bare blocks only: its constants do not act
-        priors = priors_for(params, coating_name if float(wear) < 1.0 else None)
-    fixed_names = _check_fixed(priors, fixed)
-    sampled = {name: p for name, p in priors.items() if name not in fixed_names}
-    if realisations is None:
-        realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
+    priors, fixed_names, sampled, realisations = _study_priors(params, priors, coating_name, wear, fixed,
+                                                               realisations, samples)
     decision = _check_inputs(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget,
                              solve_sets, confidence, threshold, decision, sobol_samples)
     client, own_client = _client_of(client)
@@ -452,6 +448,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         nominal = runner.summaries([(r, {}) for r in range(R)])
         sets_count, points, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
+        result.update({"sample_points": points, "sample_summaries": summaries} if keep_samples else {})
         runners = [runner]
         if sensitivity and sampled:  # the margin's (Sobol'), then the decision's (MODEL 7h)
             runners.append(_analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence,
@@ -464,6 +461,20 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     finally:
         if own_client:
             client.close()
+
+
+def _study_priors(params, priors, coating_name, wear, fixed, realisations, samples):
+    """(priors, fixed names, sampled priors, realisations) of :func:`uncertainty_study`."""
+    from memstribo.uncertainty.priors import priors_for
+    from memstribo.uncertainty.sampling import _check_fixed
+
+    if priors is None:  # a fully worn coating (wear 1) leaves bare blocks only: its constants do not act
+        priors = priors_for(params, coating_name if float(wear) < 1.0 else None)
+    fixed_names = _check_fixed(priors, fixed)
+    sampled = {name: p for name, p in priors.items() if name not in fixed_names}
+    if realisations is None:
+        realisations = DEFAULT_REALISATIONS if samples == "auto" else max(1, min(DEFAULT_REALISATIONS, int(samples)))
+    return priors, fixed_names, sampled, realisations
 
 
 def _analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence, cycle, sobol_samples,
