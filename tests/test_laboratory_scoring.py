@@ -134,3 +134,26 @@ def test_coverage_summary_has_its_wilson_interval():
     s = scoring.coverage_summary([True] * 7 + [False] * 3)
     assert (s["inside"], s["rows"]) == (7, 10)
     assert s["interval"] == pytest.approx(binomial_interval(7, 10, 0.95))
+
+
+def test_the_page_names_the_fit_of_every_row_and_shows_both_coverages():
+    from memstribo.laboratory.report import _measurement_table, coverage_section, used_by
+
+    rows = {r.id: r for r in data.load_measurements()}
+    assert used_by(rows["gabriel1990_kinetic_turbine"]).startswith("parameter set silicon_oxide_air")
+    assert used_by(rows["srinivasan1998b_static_ots"]) == "same measurement as srinivasan1998_static_ots (counted once)"
+    assert used_by(rows["deboer1998_adhesion_rises_with_rh"]).startswith("design target")
+    assert used_by(rows["srinivasan1998_static_oxide"]) == data.LAB_CALIBRATION
+    assert used_by(rows["lim1990_static_poly_poly"]) == "held out"
+    table = "\n".join(_measurement_table(list(rows.values())))
+    independent = [r for r in rows.values() if r.same_as is None]
+    assert f"{len(independent)} independent measurements from {len({r.source_group for r in independent})}" in table
+    cov = {"level": 0.9, "without": scoring.coverage_summary([True, False, False]),
+           "with": scoring.coverage_summary([True, True, False]), "trained_only": [("x", "design target")],
+           "sigma_all": {"pooled": 0.5, "static_cof": 0.4}, "folds": [{"group": "G", "train": 2, "ess": 3.0,
+                                                                        "sigma": {"static_cof": 0.4}}],
+           "rows": [{"id": "a", "group": "G", "quantity": "static_cof", "measured": 1.0, "band": (0.5, 0.6, 0.7),
+                     "inside": False, "band_discrepancy": (0.5, 0.3, 1.2), "inside_discrepancy": True}]}
+    text = "\n".join(coverage_section(cov))
+    assert "without the discrepancy: 1 of 3 = 33 %" in text and "With the discrepancy: 2 of 3 = 67 %" in text
+    assert "Wilson 95 % interval" in text and "x (design target)" in text
