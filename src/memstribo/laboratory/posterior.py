@@ -58,17 +58,22 @@ def _constants(points):
 
 
 @cites("kish_1965")
-def row_weights(rows, points, calibration_coating="OTS", seed=20260528) -> dict:
+def row_weights(rows, points, calibration_coating="OTS", seed=20260528, discrepancy=True) -> dict:
     """Per usable row, the log-likelihood of each study point's constants; rows the model cannot predict are listed.
+
+    With ``discrepancy`` the likelihood carries the model discrepancy of :mod:`memstribo.laboratory.scoring`
+    (a log-normal sigma per quantity, fitted by maximum likelihood on these rows over the prior samples): a model
+    known to miss by a factor does not let one row's tight scatter pick a single sample.
 
     Returns
     -------
     dict
-        ``loglik`` {row id: ndarray (n_points,)}, ``used`` (row ids), ``skipped`` [(id, reason)].
+        ``loglik`` {row id: ndarray (n_points,)}, ``used`` (row ids), ``skipped`` [(id, reason)], ``sigma``
+        {quantity: discrepancy sigma} (empty without ``discrepancy``).
     """
     from memstribo.laboratory.calibration import log_likelihood
     from memstribo.laboratory.predict import row_values
-    from memstribo.laboratory.scoring import SCORED_QUANTITIES
+    from memstribo.laboratory.scoring import SCORED_QUANTITIES, discrepancy_sigmas
 
     samples = _constants(points)
     loglik, skipped = {}, []
@@ -83,8 +88,12 @@ def row_weights(rows, points, calibration_coating="OTS", seed=20260528) -> dict:
         if values is None:
             skipped.append((row.id, case))
             continue
-        loglik[row.id] = log_likelihood([row], [values])
-    return {"loglik": loglik, "used": list(loglik), "skipped": skipped}
+        loglik[row.id] = values
+    used = [r for r in rows if r.id in loglik]
+    sigma = discrepancy_sigmas(used, loglik, np.ones(len(samples))) if discrepancy and used else {}
+    for row in used:
+        loglik[row.id] = log_likelihood([row], [loglik[row.id]], discrepancy=[sigma.get(row.quantity, 0.0)])
+    return {"loglik": loglik, "used": [r.id for r in used], "skipped": skipped, "sigma": sigma}
 
 
 def _prior_log_density(prior, x):
@@ -208,6 +217,7 @@ def gear_posterior(path, points, summaries, priors, coating="OTS", confidence=0.
             raise InputError(f"--calibration {path}: the model predicts none of its rows ("
                              + "; ".join(f"{i}: {why}" for i, why in found["skipped"]) + ").")
         out["rows_used"] = found["used"]
+        out["discrepancy"] = {q: found["sigma"][q] for q in {r.quantity for r in rows if r.id in found["used"]}}
         weights = importance_weights(sum(found["loglik"].values()))
         base = prior.get("stiction", {}).get("probability")
         for row_id, ll in found["loglik"].items():
@@ -230,6 +240,9 @@ def posterior_notes(post) -> list[str]:
     for key, label in (("stiction", "P(stiction)"), ("startup_stiction", "P(start-up stiction)")):
         if key in post["prior"] and key in post["posterior"]:
             lines.append(f"    {label:<22} prior {post['prior'][key]['text']}  |  posterior {post['posterior'][key]['text']}")
+    if post.get("discrepancy"):
+        lines.append("    likelihood with the model discrepancy (log-normal sigma per quantity, fitted on the rows): "
+                     + ", ".join(f"{q} {v:.2f}" for q, v in sorted(post["discrepancy"].items())))
     if post["moved_by"]:
         lines.append("    moved by (P(stiction) under each row alone, shift from the prior): "
                      + "; ".join(f"{m['id']} {100 * m['stiction_probability']:.0f} % ({100 * m['shift']:+.0f})"

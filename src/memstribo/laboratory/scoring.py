@@ -33,7 +33,7 @@ from memstribo.errors import InputError
 from memstribo.references import cites
 
 __all__ = ["SCORED_QUANTITIES", "MIN_ROWS", "DISCREPANCY_GRID", "independent_rows", "scoreable",
-           "fit_discrepancy", "discrepancy_band", "loso_coverage", "coverage_summary"]
+           "fit_discrepancy", "discrepancy_sigmas", "discrepancy_band", "loso_coverage", "coverage_summary"]
 
 #: quantities scored against a band (a trend or a lifetime is judged otherwise)
 SCORED_QUANTITIES = ("static_cof", "kinetic_cof", "adhesion_energy", "pull_off_force", "interfacial_shear_strength",
@@ -137,7 +137,7 @@ def discrepancy_band(values, weights, sigma, level=0.90):
     return band(spread.reshape(v.shape[0], -1), w, level)
 
 
-def _sigmas(train, values, weights):
+def discrepancy_sigmas(train, values, weights):
     """sigma per quantity on the training rows (pooled where a quantity has fewer than MIN_ROWS)."""
     residuals = dict(zip((r.id for r in train), _residuals(train, values, weights)))
     pooled = fit_discrepancy(list(residuals.values()))
@@ -188,7 +188,7 @@ def loso_coverage(rows, values, level=0.90, confidence=0.95) -> dict:
     for group in sorted({r.source_group for r in scored}):
         train = [r for r in usable if r.source_group != group]
         w0 = _fold_weights(train, values)
-        sigmas = _sigmas(train, values, w0) if train else {q: 0.0 for q in SCORED_QUANTITIES}
+        sigmas = discrepancy_sigmas(train, values, w0) if train else {q: 0.0 for q in SCORED_QUANTITIES}
         w1 = _fold_weights(train, values, sigmas)
         folds.append({"group": group, "train": len(train), "ess": effective_sample_size(w0),
                       "ess_discrepancy": effective_sample_size(w1), "sigma": sigmas})
@@ -202,7 +202,7 @@ def loso_coverage(rows, values, level=0.90, confidence=0.95) -> dict:
     return {"folds": folds, "rows": results, "level": level,
             "without": coverage_summary([x["inside"] for x in results], level, confidence),
             "with": coverage_summary([x["inside_discrepancy"] for x in results], level, confidence),
-            "sigma_all": _sigmas(usable, values, w_all),
+            "sigma_all": discrepancy_sigmas(usable, values, w_all),
             "trained_only": [(r.id, r.fitted_by if r.fitted_by and not r.calibration else "design target")
                              for r in usable if r not in scored]}
 
