@@ -100,7 +100,11 @@ def test_render_groups_by_topic_escapes_pipes_and_counts():
     assert text.count("## alpha") == 1
     assert "a\\|b" in text and "| - | - |" in text
     assert "**3 comparisons: 1 agree, 2 differ" in text
-    assert summary(rows) == {"rows": 3, "agree": 1, "differ": 2}
+    assert summary(rows) == {"rows": 3, "agree": 1, "differ": 2, "calibrated": 0}
+    fitted = rows + [compare("alpha", "d", "a fit's target", 2.0, 2.0, "", rtol=0.01, calibrated="set x")]
+    assert summary(fitted)["calibrated"] == 1
+    assert "2 agree (1 validated, 1 calibrated" in render_markdown(fitted)
+    assert "yes (calibrated: by construction)" in render_markdown(fitted)
     assert "GENERATED FILE" in text
 
 

@@ -498,6 +498,22 @@ _ENTRIES = [
      "(Wilson)"),
     ("startup_stiction_probability_text", _TEXT, "start-up stiction probability with interval",
      "the count and its interval, e.g. '16 of 16 (95 % CI 81-100 %)'"),
+    # the verdict under the laboratory's posterior (memstribo mesh --uncertainty N --calibration FILE, issue 37)
+    ("posterior_stiction_probability", "1", "stiction probability under the posterior",
+     "share of the study's samples that stick, importance-weighted by the --calibration file's likelihood (or its "
+     "calibrated posterior over the prior)"),
+    ("posterior_stiction_probability_ci", "1", "stiction probability interval under the posterior",
+     "95 % Wilson interval [low, high] at the weights' Kish effective sample size"),
+    ("posterior_startup_stiction_probability", "1", "start-up stiction probability under the posterior",
+     "share of the study's samples whose start-up margin is negative, importance-weighted as above"),
+    ("posterior_startup_stiction_probability_ci", "1", "start-up stiction probability interval under the posterior",
+     "95 % Wilson interval [low, high] at the weights' Kish effective sample size"),
+    ("posterior_effective_samples", "1", "effective samples of the posterior",
+     "Kish's (sum w)^2 / sum w^2 of the importance weights: the equally weighted samples the posterior is worth"),
+    ("posterior_calibration", _TEXT, "calibration file", "the --calibration file the posterior comes from"),
+    ("posterior_moved_by", _TEXT, "measurements that moved the verdict",
+     "per row of the --calibration file: its id, P(stiction) under that row alone and its shift from the prior, "
+     "its effective samples; largest shift first"),
     ("stiction_probability_nominal", "1", "stiction probability at nominal constants",
      "fraction of roughness realisations that stick with every constant at its nominal value"),
     ("stiction_probability_nominal_ci", "1", "stiction probability interval at nominal constants",

@@ -206,6 +206,20 @@ REFERENCES: dict[str, str] = {
         "roughness: virtues and limitations of a stochastic Prandtl-Tomlinson model', Beilstein J. Nanotechnol. 1 "
         "(2010) 163-171. doi:10.3762/bjnano.1.20"
     ),
+    "static_friction_jmm_1992": (
+        "'A study of static friction between silicon and silicon compounds', Journal of Micromechanics and "
+        "Microengineering 2(1) (1992) 14-20. doi:10.1088/0960-1317/2/1/004 (millimetre flats at 1e-6 Torr and a "
+        "3 mm radius coated bullet on a flat at about 5e-10 Torr; mu 0.2 to 0.7)"
+    ),
+    "dugger_2007_alcohol": (
+        "M. T. Dugger, J. A. Ohlhausen, D. B. Asay, S. H. Kim, 'MEMS lubrication by tribochemical reaction', "
+        "Proceedings of the ASME/STLE International Joint Tribology Conference IJTC 2007, pp. 873-875 (2008). "
+        "doi:10.1115/IJTC2007-44308"
+    ),
+    "kennedy_ohagan_2001": (
+        "M. C. Kennedy, A. O'Hagan, 'Bayesian calibration of computer models', Journal of the Royal Statistical "
+        "Society B 63 (2001) 425-464. doi:10.1111/1467-9868.00294 (the model-discrepancy term)"
+    ),
     "kish_1965": "L. Kish, Survey Sampling, Wiley, 1965 (effective sample size of weighted samples, (sum w)^2 / sum w^2).",
     "maboudian_howe_1997": (
         "R. Maboudian, R. T. Howe, 'Critical review: adhesion in surface micromechanical structures', "

@@ -55,6 +55,10 @@ def register(subparsers, parents):
                         help="with --uncertainty: the constants that need a contact solve take G values per "
                              "realisation, the bond energies keep every set's (fewer solves: faster; the interval "
                              "is widened by the design effect of the samples that share a solve; default: all)")
+    parser.add_argument("--calibration", metavar="FILE.toml",
+                        help="with --uncertainty: P(stiction) and P(start-up stiction) also under the posterior of "
+                             "FILE (a measurements TOML, or a calibrated parameter set with [posterior.NAME]), by "
+                             "importance weights on the same samples, beside the prior's; names the rows that moved it")
     parser.add_argument("--workers", type=int, metavar="N",
                         help="with --uncertainty or --realisations: run the cycles on a local Dask cluster of N "
                              "worker processes")
@@ -269,8 +273,8 @@ def _uncertainty_option(args):
     text = getattr(args, "uncertainty", None)
     if text is None:
         if getattr(args, "fix", None) or getattr(args, "sobol_samples", None) is not None \
-                or getattr(args, "solve_sets", None) is not None:
-            raise InputError("--fix, --sobol-samples and --solve-sets need --uncertainty N|auto.")
+                or getattr(args, "solve_sets", None) is not None or getattr(args, "calibration", None):
+            raise InputError("--fix, --sobol-samples, --solve-sets and --calibration need --uncertainty N|auto.")
         return None
     from memstribo.uncertainty.study import check_sobol_samples
 
@@ -385,9 +389,14 @@ def _uncertainty(args, params, roughness, options, samples, realisations):
                                                                          else "").startswith("config file"):
             raise InputError(f"the constant '{name}' is named twice: --fix {name} and a value given by "
                              f"{params.source(name)} (a given value is already fixed; drop --fix {name}).")
+    calibration = getattr(args, "calibration", None)
+    if calibration:
+        from memstribo.laboratory.posterior import calibration_kind
+
+        calibration_kind(calibration)  # a bad file is refused before the first cycle
     client = _client(args)
     try:
-        result = uncertainty_study(params, roughness, samples=samples,
+        result = uncertainty_study(params, roughness, samples=samples, keep_samples=bool(calibration),
                                    realisations=None if args.realisations is None else realisations,
                                    steps=options["steps"], coating=options["coating"], wear=options["wear"],
                                    client=client, progress=options["progress"], fixed=fixed,
@@ -396,9 +405,43 @@ def _uncertainty(args, params, roughness, options, samples, realisations):
         _close(client, args)
     result["uncertainty_samples"] = result.pop("samples")
     result["dominant_constant"] = result.pop("dominant")
+    if calibration:
+        result.update(_posterior(calibration, result, options))
     shown = UNCERTAINTY_KEYS if getattr(args, "json", False) else \
         [key for key in UNCERTAINTY_KEYS if key not in UNCERTAINTY_JSON_ONLY]  # the notes give them in words
+    shown = list(shown) + [key for key in POSTERIOR_KEYS if key in result]
     return {key: result[key] for key in shown if key in result}, result
+
+
+#: Keys of ``--calibration`` (:func:`memstribo.laboratory.posterior.gear_posterior`) in the output.
+POSTERIOR_KEYS = ("posterior_stiction_probability", "posterior_stiction_probability_ci",
+                  "posterior_startup_stiction_probability", "posterior_startup_stiction_probability_ci",
+                  "posterior_effective_samples", "posterior_calibration", "posterior_moved_by")
+
+
+def _posterior(calibration, result, options) -> dict:
+    """The study's samples re-weighted by ``--calibration`` (:func:`memstribo.laboratory.posterior.gear_posterior`)."""
+    from memstribo.laboratory.posterior import gear_posterior
+
+    points, summaries = result.pop("sample_points"), result.pop("sample_summaries")
+    coating = options.get("coating")
+    post = gear_posterior(calibration, points, summaries, _study_priors(result),
+                          coating=getattr(coating, "name", coating) or "OTS")
+    out = {"posterior_effective_samples": post["posterior_effective_samples"],
+           "posterior_calibration": post["calibration"]["file"],
+           "posterior_moved_by": post["moved_by"], "_posterior": post}
+    for key in ("stiction", "startup_stiction"):
+        if key in post["posterior"]:
+            out[f"posterior_{key}_probability"] = post["posterior"][key]["probability"]
+            out[f"posterior_{key}_probability_ci"] = post["posterior"][key]["ci"]
+    return out
+
+
+def _study_priors(result):
+    """The study's priors as Prior objects (from its ``priors`` entries)."""
+    from memstribo.uncertainty.priors import Prior
+
+    return {name: Prior(**entry) for name, entry in (result.get("priors") or {}).items()}
 
 
 def uncertainty_notes(values) -> list[str]:
@@ -425,6 +468,10 @@ def uncertainty_notes(values) -> list[str]:
             notes.append(f"    {name:<24} {entry['total']:.2f} [{entry['total_ci'][0]:.2f}, {entry['total_ci'][1]:.2f}]"
                          f"  {crit}")
     notes.extend(decision_notes(values))
+    if values.get("_posterior"):
+        from memstribo.laboratory.posterior import posterior_notes
+
+        notes.extend(posterior_notes(values["_posterior"]))
     if values.get("designer_sentence"):
         notes.append(f"  {values['designer_sentence']}")
     if values.get("decision_sentence"):

@@ -60,17 +60,17 @@ def prior_samples(params, settings, n, seed=0, coating=None):
     return samples, text
 
 
-def _log_sd(row, values):
+def _log_sd(row, values, discrepancy=0.0):
     r = row.relative_sd()
     if r is None:
         raise InputError(f"row {row.id}: no relative scatter for the likelihood; give scatter sd, range or "
                          "relative_sd_assumed.")
     logs = np.log(np.maximum(values, 1e-300))
     model = logs.std(axis=1) if values.shape[1] > 1 else np.zeros(values.shape[0])
-    return np.sqrt(math.log1p(r * r) + model**2), np.median(values, axis=1)
+    return np.sqrt(math.log1p(r * r) + model**2 + discrepancy**2), np.median(values, axis=1)
 
 
-def log_likelihood(rows, values) -> np.ndarray:
+def log_likelihood(rows, values, discrepancy=None) -> np.ndarray:
     """ln L of each constant sample (see the module docstring).
 
     Parameters
@@ -79,6 +79,9 @@ def log_likelihood(rows, values) -> np.ndarray:
         The calibration rows.
     values : list of ndarray
         Per row, the predicted values of shape (n_samples, n_realisations), all > 0.
+    discrepancy : list of float, optional
+        Per row, the sigma of a multiplicative log-normal model discrepancy [ln units]
+        (:mod:`memstribo.laboratory.scoring`), added to s_ij in quadrature; default none.
 
     Returns
     -------
@@ -86,10 +89,12 @@ def log_likelihood(rows, values) -> np.ndarray:
     """
     if len(rows) != len(values) or not rows:
         raise InputError("log_likelihood needs one array of predicted values per calibration row (at least one).")
+    if discrepancy is not None and len(discrepancy) != len(rows):
+        raise InputError("log_likelihood: one discrepancy sigma per row, or none.")
     total = np.zeros(np.asarray(values[0]).shape[0])
-    for row, v in zip(rows, values):
+    for i, (row, v) in enumerate(zip(rows, values)):
         v = np.asarray(v, dtype=float)
-        s, median = _log_sd(row, v)
+        s, median = _log_sd(row, v, 0.0 if discrepancy is None else float(discrepancy[i]))
         total += -0.5 * (np.log(row.value / median) / s) ** 2 - np.log(s)
     return total
 
@@ -151,7 +156,7 @@ class CalibrationResult:
     prior_predictions, posterior_predictions : list of Prediction
         Every row predicted with the prior samples (equal weights) and with the posterior weights.
     held_out_before, held_out_after : dict
-        :func:`hit_rate` of the held-out (non-calibration) rows.
+        :func:`hit_rate` of the held-out rows (no fit used them, not a design target, not a duplicate).
     """
 
     samples: list
@@ -214,7 +219,7 @@ def calibrate(rows, samples, prior_text="given samples", realisations=3, calibra
                           "post_median": weighted_quantile(column, weights, 0.5),
                           "post_p05": weighted_quantile(column, weights, 0.05),
                           "post_p95": weighted_quantile(column, weights, 0.95)})
-    held = {r.id for r in rows if not r.calibration}
+    held = {r.id for r in rows if r.held_out}  # never a row any fit used, a design target or a duplicate
     return CalibrationResult(samples=list(samples), prior=prior_text, weights=weights,
                              ess=effective_sample_size(weights), constants=constants,
                              prior_predictions=prior_pred, posterior_predictions=post_pred,

@@ -16,7 +16,8 @@ from pathlib import Path
 from memstribo.errors import InputError
 from memstribo.references import REFERENCES
 
-__all__ = ["QUANTITY_UNITS", "REQUIRED", "Measurement", "load_measurements", "calibration_settings"]
+__all__ = ["QUANTITY_UNITS", "REQUIRED", "GEOMETRIES", "MATERIALS", "LAB_CALIBRATION", "Measurement",
+           "load_measurements", "calibration_settings"]
 
 #: the measured quantities the laboratory knows, with their SI unit ('1': dimensionless)
 QUANTITY_UNITS = {
@@ -39,8 +40,19 @@ REQUIRED = ("id", "quantity", "value", "unit", "scatter", "geometry", "contact",
 LOAD_KEYS = ("contact_pressure", "normal_force")
 
 ENVIRONMENTS = ("vacuum", "dry_nitrogen", "air")
-GEOMETRIES = ("flat", "sidewall", "microbeam", "gear", "rotor_hub", "micromotor", "sphere_on_flat", "flat_pad",
-              "cantilever_array", "pull_off", "nanocontact")
+GEOMETRIES = ("flat", "flat_pad", "sidewall", "microbeam", "cantilever_array", "pull_off", "nanocontact", "gear",
+              "rotor_hub", "micromotor", "sphere_on_flat")
+#: materials of a row's surfaces (``material``, ``counter_material``; missing: polysilicon); coatings go in ``coating``
+MATERIALS = ("polysilicon", "silicon", "silica", "silicon_nitride")
+VAPOURS = ("water", "pentanol")
+TERMINATIONS = ("oxide", "hydrogen")
+#: geometry and load fields that, where given as a number, must be positive and finite (SI: m, N, Pa, m^2)
+POSITIVE_FIELDS = ("sphere_radius", "normal_force", "contact_pressure", "pad_area", "sliding_amplitude",
+                   "beam_thickness", "beam_gap", "beam_length", "crack_length")
+#: scoring fields (the lab schema): which fit used a row, duplicates, design targets, the research group
+SCORING_FIELDS = {"same_as": str, "design_target": bool, "fitted_by": str, "source_group": str}
+#: the name of the laboratory's own calibration in ``fitted_by`` (rows with ``calibration = true``)
+LAB_CALIBRATION = "laboratory calibration (measurements.toml [calibration])"
 SCATTER_KINDS = ("sd", "range", "not stated", "upper limit", "lower bound", "sign")
 
 
@@ -110,6 +122,40 @@ class Measurement:
         return self.conditions["environment"]
 
     @property
+    def same_as(self) -> str | None:
+        """The id of the row this one duplicates (the same measurement published twice), else None."""
+        return self.conditions.get("same_as")
+
+    @property
+    def design_target(self) -> bool:
+        """Whether the model was designed to reproduce this row (never held out)."""
+        return bool(self.conditions.get("design_target", False))
+
+    @property
+    def fitted_by(self) -> str | None:
+        """The fit that used this row: the row's ``fitted_by``, else the laboratory calibration when
+        ``calibration = true``, else None."""
+        return self.conditions.get("fitted_by") or (LAB_CALIBRATION if self.calibration else None)
+
+    @property
+    def source_group(self) -> str:
+        """The research group (leave-one-source-out cross-validation); default the citation."""
+        return str(self.conditions.get("source_group") or self.citation)
+
+    @property
+    def held_out(self) -> bool:
+        """Never used by any fit, not a design target and not a duplicate: a validation row."""
+        return not (self.fitted_by or self.design_target or self.same_as)
+
+    @property
+    def material(self) -> str:
+        return str(self.conditions.get("material", "polysilicon"))
+
+    @property
+    def counter_material(self) -> str:
+        return str(self.conditions.get("counter_material", self.material))
+
+    @property
     def coating(self) -> str | None:
         name = self.conditions["coating"]
         return None if str(name).lower() == "none" else str(name)
@@ -156,11 +202,51 @@ def _check_row(index, row) -> Measurement:
         _refuse(name, f"citation {row['citation']!r} is not in memstribo.references.REFERENCES.")
     if not isinstance(row["calibration"], bool):
         _refuse(name, f"calibration must be true or false, got {row['calibration']!r}.")
+    _check_schema_fields(name, row)
     conditions = {k: v for k, v in row.items() if k not in ("id", "quantity", "value", "unit", "scatter",
                                                              "calibration", "citation")}
     return Measurement(id=str(row["id"]), quantity=quantity, value=float(value), unit=row["unit"],
                        scatter=dict(scatter), calibration=row["calibration"], citation=row["citation"],
                        conditions=conditions)
+
+
+def _check_schema_fields(name, row):
+    """The lab schema's optional fields: materials, vapour, termination, positive geometry numbers, scoring fields."""
+    for key in ("material", "counter_material"):
+        if key in row and row[key] not in MATERIALS:
+            _refuse(name, f"{key} {row[key]!r}; allowed: {', '.join(MATERIALS)} (a coating goes in 'coating').")
+    if "vapour" in row and row["vapour"] not in VAPOURS:
+        _refuse(name, f"vapour {row['vapour']!r}; allowed: {', '.join(VAPOURS)}.")
+    ratio = row.get("vapour_pressure_ratio")
+    if ratio is not None and ratio != "not stated" and not (
+            isinstance(ratio, (int, float)) and not isinstance(ratio, bool) and 0 <= ratio <= 1):
+        _refuse(name, f"vapour_pressure_ratio must be a number in [0, 1] or 'not stated', got {ratio!r}.")
+    if "surface_termination" in row and row["surface_termination"] not in TERMINATIONS:
+        _refuse(name, f"surface_termination {row['surface_termination']!r}; allowed: {', '.join(TERMINATIONS)}.")
+    for key in POSITIVE_FIELDS:
+        value = row.get(key)
+        if isinstance(value, (int, float)) and not isinstance(value, bool) and not (math.isfinite(value) and value > 0):
+            _refuse(name, f"{key} must be a positive finite number (SI) or 'not stated', got {value!r}.")
+    for key, kind in SCORING_FIELDS.items():
+        if key in row and (not isinstance(row[key], kind) or (kind is str and not row[key].strip())):
+            _refuse(name, f"{key} must be {'true or false' if kind is bool else 'a non-empty text'}, got {row[key]!r}.")
+    if row.get("same_as") is not None and row["calibration"]:
+        _refuse(name, f"a duplicate (same_as {row['same_as']!r}) cannot be a calibration row: mark the row it "
+                      "duplicates.")
+
+
+def _check_duplicates(measurements):
+    """``same_as`` must name another row that is not itself a duplicate."""
+    by_id = {m.id: m for m in measurements}
+    for m in measurements:
+        if m.same_as is None:
+            continue
+        target = by_id.get(m.same_as)
+        if target is None or target.id == m.id:
+            raise InputError(f"measurement row {m.id!r}: same_as {m.same_as!r} names no other row of the file.")
+        if target.same_as is not None:
+            raise InputError(f"measurement row {m.id!r}: same_as {m.same_as!r} is itself a duplicate (of "
+                             f"{target.same_as!r}); name the first row.")
 
 
 def _read(path):
@@ -203,6 +289,7 @@ def load_measurements(path=None) -> list[Measurement]:
         if m.id in seen:
             raise InputError(f"measurement row {m.id!r}: the id is used twice.")
         seen.add(m.id)
+    _check_duplicates(measurements)
     n_cal = sum(m.calibration for m in measurements)
     if 3 * n_cal > len(measurements):
         raise InputError(f"{n_cal} of {len(measurements)} rows are declared for calibration; at most a third may be "

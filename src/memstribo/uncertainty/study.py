@@ -370,7 +370,8 @@ def _check_levels(confidence, threshold):
 def uncertainty_study(params, roughness=None, *, samples="auto", realisations=None, steps=None, coating=None,
                       wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
                       sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
-                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, decision=None) -> dict:
+                      threshold=0.1, curve_points=9, priors=None, solve_sets=None, decision=None,
+                      keep_samples=False) -> dict:
     """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
 
     Parameters
@@ -411,6 +412,8 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         ``samples / design_effect`` samples (:func:`_probability`).
     decision : Mapping, optional
         ``band_factor``, ``band_samples``, ``span`` of :func:`memstribo.uncertainty.decision.decision_analysis`.
+    keep_samples : bool
+        Also return ``sample_points`` and ``sample_summaries`` (for :mod:`memstribo.laboratory.posterior`).
 
     Returns
     -------
@@ -449,6 +452,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         nominal = runner.summaries([(r, {}) for r in range(R)])
         sets_count, points, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
+        result.update({"sample_points": points, "sample_summaries": summaries} if keep_samples else {})
         runners = [runner]
         if sensitivity and sampled:  # the margin's (Sobol'), then the decision's (MODEL 7h)
             runners.append(_analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence,

@@ -36,7 +36,8 @@ def rows() -> list[ValidationRow]:
                     f"({bare['cof_mean']:.3g} here against the thesis's 0.84; docs/coating.md)")
         out.append(compare("coating", f"COF of the OTS-coated pair at Omega = {wear:g}",
                            "thesis 5.5.3, Figure 5-28", cof, value, "", atol=0.02 if wear == 0.0 else 0.05,
-                           command=COMMAND, note=note, differs=known.get(wear)))
+                           command=COMMAND, note=note, differs=known.get(wear),
+                           calibrated="coating OTS (coating_vdw_bond_energy fitted to this 0.185)" if wear == 0.0 else ""))
     out.append(compare("coating", "COF at Omega = 1 equals the bare meshing cycle", "memstribo mesh (cof_mean)",
                        bare["cof_mean"], float(sweep["cof_mean"].sel(wear=1.0)), "", rtol=0.0,
                        command=f"memstribo coating --wear 1 {THESIS_FLAGS} --json",

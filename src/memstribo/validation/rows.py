@@ -47,6 +47,10 @@ class ValidationRow:
     band : tuple of float or None
         For a known disagreement: the range (in ``unit``) that memstribo's value is known to
         lie in; a test fails when it leaves it (the disagreement grew or shrank unnoticed).
+    calibrated : str
+        The fit that made memstribo reproduce this reference (a constant fitted to it, or a design
+        target the model was built for); "" for a validation row. A calibrated row agrees by
+        construction and is counted apart from the validated ones (issue 37).
     """
 
     topic: str
@@ -62,6 +66,7 @@ class ValidationRow:
     shown_as_bound: bool = False
     expected: str | None = None
     band: tuple[float, float] | None = None
+    calibrated: str = ""
 
     def __post_init__(self):
         if self.expected is None:
@@ -80,11 +85,12 @@ class ValidationRow:
 
 
 def compare(topic, quantity, reference, reference_value, value, unit="", *, rtol=None, atol=None,
-            command="", note="", differs: tuple[float, float] | None = None) -> ValidationRow:
+            command="", note="", differs: tuple[float, float] | None = None, calibrated="") -> ValidationRow:
     """Build a row, judging agreement by ``rtol`` (relative) and/or ``atol`` (absolute).
 
     ``differs``: a known disagreement, the band (in ``unit``) memstribo's value is known to lie in; the
     row's verdict is then "differs" whatever the value (the tests check the value stays in the band).
+    ``calibrated``: the fit that made the value agree (see :class:`ValidationRow`).
     """
     if reference_value is None or value is None:
         raise ValueError("compare() needs both values; build a ValidationRow directly for trends")
@@ -97,4 +103,5 @@ def compare(topic, quantity, reference, reference_value, value, unit="", *, rtol
     return ValidationRow(topic, quantity, reference, float(reference_value), float(value), unit,
                          " or ".join(parts) or "exact", agrees, command, note, shown_as_bound=residual,
                          expected="agrees" if differs is None else "differs",
-                         band=None if differs is None else (float(differs[0]), float(differs[1])))
+                         band=None if differs is None else (float(differs[0]), float(differs[1])),
+                         calibrated=calibrated)
