@@ -416,3 +416,23 @@ def test_the_ensemble_output_has_its_interval(cli):
     assert out["stiction_count"] == k
     assert out["stiction_probability_ci"] == pytest.approx(list(binomial_interval(k, 2)))
     assert out["stiction_probability_text"] == format_probability(k, 2)
+
+
+def test_the_dissipated_fraction_rescales_as_a_full_rerun():
+    """U_vdW = phi w12 / n_site is linear in phi (MODEL 7h): a cycle with another phi is the nominal cycle rescaled,
+    to round-off, with no new contact solve (the hysteresis rule's sampled constant costs no cycle)."""
+    from memstribo.parameters import get_parameter_values
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.uncertainty.rescale import reduce_cycle, rescale_cycles
+
+    hysteresis = get_parameter_values("silicon_thesis")
+    assert hysteresis["vdw_energy_rule"] == "hysteresis"
+    steps = 21
+    cycle = reduce_cycle(simulate_mesh(hysteresis, steps=steps))
+    sets = [{"vdw_dissipated_fraction": 0.35}, {"vdw_dissipated_fraction": 0.8, "bond_energy": 4.0e-19}]
+    for overrides, fast in zip(sets, rescale_cycles(cycle, hysteresis, sets)):
+        full = summarize(simulate_mesh(hysteresis.updated(overrides), steps=steps))
+        for key in ("stiction_margin", "startup_margin", "resisting_force_max", "cof_mean", "cof_vdw", "cof_chemical",
+                    "mesh_efficiency", "friction_force_mean"):
+            assert fast[key] == pytest.approx(full[key], rel=1e-9), key
+    assert fast["cof_vdw"] != pytest.approx(summarize(cycle)["cof_vdw"], rel=1e-3)  # it changed something

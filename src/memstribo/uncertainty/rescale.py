@@ -32,7 +32,8 @@ __all__ = ["RESCALED", "CYCLE_VARIABLES", "SPLIT_VARIABLES", "reduce_cycle", "re
            "rescale_cycles"]
 
 #: the constants that enter the cycle only through the bond energies (linear), per kind of cycle
-RESCALED = ("bond_energy", "vdw_bond_energy")
+#: U_vdW = phi w12 / n_site is linear in phi (MODEL 7h), so the dissipated fraction rescales exactly as U_vdW does
+RESCALED = ("bond_energy", "vdw_bond_energy", "vdw_dissipated_fraction")
 
 #: per-step variables of the cycle's dataset that the rescaling reads
 CYCLE_VARIABLES = ("time", "sliding_distance", "normal_force", "adhesion_force", "bonds_chemical", "bonds_vdw",
@@ -125,6 +126,8 @@ def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[d
     from memstribo.simulations.mesh import resisting_force, sliding_average, summarize
 
     allowed = rescalable(dataset)
+    overrides_list = [_as_bond_energies(params_nominal, o) if "vdw_dissipated_fraction" in o else o
+                      for o in overrides_list]
     for overrides in overrides_list:
         for name in overrides:
             if name not in allowed:
@@ -226,6 +229,17 @@ def _rescaled_startup(summary, dataset, params_nominal, overrides, margin, known
         mode = summary.get("stiction_mode")
         summary["verdict"] = ("running stiction" if margin < 0 else "start-up stiction" if mode == "start-up"
                               else "no stiction")
+
+
+def _as_bond_energies(params_nominal, overrides) -> dict:
+    """``overrides`` with the dissipated fraction phi as the U_vdW it gives [J]: U_vdW = phi w12 / n_site is linear in
+    phi (:func:`memstribo.physics.vdw_energy.hysteresis_site_energy`), so phi scales the nominal U_vdW; under the
+    thesis rule phi does not act (U_vdW as given)."""
+    out = dict(overrides)
+    phi = float(out.pop("vdw_dissipated_fraction"))
+    if "vdw_bond_energy" not in out and (params_nominal.get("vdw_energy_rule") or "thesis") == "hysteresis":
+        out["vdw_bond_energy"] = vdw_bond_energy_of(params_nominal) * phi / float(params_nominal["vdw_dissipated_fraction"])
+    return out
 
 
 def _energies(dataset, params_nominal, overrides) -> list[float]:
