@@ -117,9 +117,19 @@ def test_the_measurable_units_of_the_dissipated_fraction(params):
 
 def test_a_vdw_constant_the_rule_does_not_use_is_refused(cli):
     """A value the model would ignore without a word: U_vdW under 'hysteresis', phi under 'thesis'."""
-    code, out, err = cli("constants", "--set", "vdw_bond_energy=9e-21")
+    code, out, err = cli("constants", "--set", "vdw_energy_rule=hysteresis", "--set", "vdw_bond_energy=9e-21")
     assert code == 2 and "vdw_energy_rule" in err
     code, out, err = cli("constants", "--set", "vdw_energy_rule=thesis", "--set", "vdw_dissipated_fraction=0.5")
     assert code == 2 and "vdw_dissipated_fraction" in err
     assert cli.json("constants", "--set", "vdw_energy_rule=thesis", "--set", "vdw_bond_energy=9e-21")[
         "bond_energy_vdw"] == 9e-21
+
+
+def test_vdw_bond_energy_alone_selects_the_thesis_rule_with_a_note(cli):
+    """Issue 38's done-when, `memstribo mesh --set vdw_bond_energy=9e-21`: U_vdW given by itself is the thesis's rule,
+    said on stderr, not an error and not ignored."""
+    code, out, err = cli("constants", "--set", "vdw_bond_energy=9e-21", "--json")
+    assert code == 0 and "thesis" in err and "vdw_energy_rule" in err
+    import json
+
+    assert json.loads(out)["bond_energy_vdw"] == 9e-21

@@ -162,11 +162,25 @@ def load_parameters(args: argparse.Namespace):
                 raise MemstriboInputError(f"--set {name} is given twice with different values, '{overrides[name]}' "
                                           f"and '{value}': they contradict each other; give it once.")
             overrides[name] = value
+        _imply_vdw_rule(params, overrides)
         params = params.updated(overrides, origin="--set")
     from memstribo.checks import check_unused_values
 
     check_unused_values(params)
     return params
+
+
+def _imply_vdw_rule(params, overrides: dict) -> None:
+    """``--set vdw_bond_energy=U`` alone states U_vdW itself: it selects the thesis's rule (U_vdW as given) where the
+    set's rule is the default 'hysteresis' and nobody chose it, with a note on stderr (MODEL 7h). A rule the user
+    chose is kept, and :func:`memstribo.checks.check_unused_values` refuses the contradiction."""
+    from memstribo.checks import user_set
+
+    if ("vdw_bond_energy" in overrides and "vdw_energy_rule" not in overrides
+            and params.get("vdw_energy_rule") == "hysteresis" and not user_set(params, "vdw_energy_rule")):
+        overrides["vdw_energy_rule"] = "thesis"
+        print("note: --set vdw_bond_energy gives U_vdW itself, so the thesis's rule is used (vdw_energy_rule = thesis, "
+              "MODEL 7h); the default rule derives it as phi w12 / n_site.", file=sys.stderr)
 
 
 def _json_error(args, message: str, kind: str) -> None:

@@ -264,12 +264,12 @@ def _findings(res):
     for p in trend:
         lines.append(f"- {p.id}: the microbeam's work of separation rises {_g(p.median)}x from the low to the high RH "
                      f"(band {_g(p.low)}–{_g(p.high)}), as measured: for an unloaded rough interface the menisci fill more "
-                     "of the gaps as RH rises. The loaded gear of the meshing cycle shows the opposite trend "
-                     "(docs/humidity.md): that is item 4 of issue 28, not settled here.")
-    lines.append("- Static friction: the model has one friction coefficient (energy dissipated per sliding distance, "
-                 "divided by normal plus adhesion force); every static row is compared with it. It has no separate "
-                 "static friction (no peak at the start of sliding), so a static and a kinetic row of one coating "
-                 "cannot both be met by one set of constants.")
+                     "of the gaps as RH rises (the asperity-level model of issue 36, built to show this rise: a design "
+                     "target). The loaded gear's adhesion force is a force, not an energy, and falls above RH 0.2 "
+                     "(docs/humidity.md).")
+    lines.append("- Static friction: the test-structure cases predict a static row from the bonds' sideways peak "
+                 "(1.27 U/D per bond, MODEL 7f) over the real contact area, and a kinetic row from the energy the bonds "
+                 "dissipate per sliding distance (U/D^3 over the real area); both capped at the ideal shear strength.")
     result = res["result"]
     by_id = {r.id: r for r in res["rows"]}
     lost = [p1 for p0, p1 in zip(result.prior_predictions, result.posterior_predictions)
@@ -292,7 +292,8 @@ def _why_lost(lost, by_id, result):
         if same:
             parts.append(f"{p.id} is a {row.quantity.replace('_', ' ')} of {row.coating or 'the bare oxide'} "
                          f"({_g(row.value)}) and the calibration row {same[0].id} is its {same[0].quantity.replace('_', ' ')} "
-                         f"({_g(same[0].value)}): the model has one COF, so fitting it to one moves it away from the other")
+                         f"({_g(same[0].value)}): the same constants set both (their ratio follows from the bond law), so "
+                         "fitting one moves the model away from the other")
         elif row.condition("geometry") != "flat":
             parts.append(f"{p.id} is a {row.condition('geometry')} contact at {_g(row.number('contact_pressure'))} Pa, "
                          f"far from the calibration rows' load; the posterior band ({_g(p.low)}–{_g(p.high)}) misses "
