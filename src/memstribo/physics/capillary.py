@@ -374,7 +374,7 @@ def molecular_kelvin_radius(molar_volume=WATER["molar_volume"]):
 def forms_meniscus(kelvin, molar_volume=WATER["molar_volume"]):
     """Whether a condensate of Kelvin radius ``kelvin`` [m] is a meniscus (True) or an adsorbed film (False).
 
-    A meniscus needs ``r_K >= ``:func:`molecular_kelvin_radius` (0.311 nm for water); dry air (r_K = 0) forms none.
+    A meniscus needs r_K at least :func:`molecular_kelvin_radius` (0.311 nm for water); dry air (r_K = 0) forms none.
     """
     k = float(as_array(kelvin, "kelvin", "m", nonnegative=True))
     return k >= molecular_kelvin_radius(molar_volume)
