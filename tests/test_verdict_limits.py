@@ -318,7 +318,11 @@ def test_the_start_up_verdict_rescales_with_the_bond_energies_exactly(params):
     from memstribo.uncertainty.rescale import rescale_cycle
 
     dataset = simulate_mesh(params, steps=21)
-    changed = {"vdw_bond_energy": 3 * params["vdw_bond_energy"], "bond_energy": 0.8 * params["bond_energy"]}
+    # the default vdW rule (hysteresis, MODEL 7h) samples phi; U_vdW itself only under the thesis rule
+    assert params["vdw_energy_rule"] == "hysteresis"
+    with pytest.raises(InputError, match="vdw_dissipated_fraction"):
+        rescale_cycle(dataset, params, {"vdw_bond_energy": 3 * params["vdw_bond_energy"]})
+    changed = {"vdw_dissipated_fraction": 0.4, "bond_energy": 0.8 * params["bond_energy"]}
     rescaled = rescale_cycle(dataset, params, changed)
     solved = summarize(simulate_mesh(params.updated(changed), steps=21))
     for key in ("startup_margin", "static_cof_max", "startup_margin_capped"):

@@ -126,6 +126,10 @@ def rescale_cycles(dataset, params_nominal, overrides_list, base=None) -> list[d
     from memstribo.simulations.mesh import resisting_force, sliding_average, summarize
 
     allowed = rescalable(dataset)
+    if (params_nominal.get("vdw_energy_rule") or "thesis") == "hysteresis" and any(
+            "vdw_bond_energy" in o for o in overrides_list):  # the solve would not use it (MODEL 7h)
+        raise InputError("rescale_cycle: under vdw_energy_rule 'hysteresis' U_vdW is phi w12 / n_site, not "
+                         "vdw_bond_energy: rescale vdw_dissipated_fraction instead.")
     overrides_list = [_as_bond_energies(params_nominal, o) if "vdw_dissipated_fraction" in o else o
                       for o in overrides_list]
     for overrides in overrides_list:
