@@ -18,7 +18,7 @@ import numpy as np
 from memstribo.errors import InputError
 
 __all__ = ["as_array", "as_positive_scalar", "as_count", "check_mesh_arguments", "check_parameter_set_arguments",
-           "user_set", "check_unused_values", "check_coating_wear", "coating_wear_of",
+           "user_set", "check_unused_values", "refuse_unknown_keys", "check_coating_wear", "coating_wear_of",
            "refuse_unused_coating_wear", "point_wear"]
 
 
@@ -325,3 +325,16 @@ def point_wear(options: dict, raw, params, where: str) -> dict:
         raise InputError(f"{where}: wear = {options['wear']:g} and coating_wear = {coating_wear:g} disagree: both are "
                          "the worn fraction Omega of the gear's coating; give one of them.")
     return options
+
+
+def refuse_unknown_keys(table, allowed, where: str, what: str) -> None:
+    """Refuse the keys of ``table`` outside ``allowed`` (InputError naming them, escaped, with the allowed ones and the
+    closest match): one wording for every spec table (``what``, e.g. "key(s) ... in [map]", "constraint(s)")."""
+    from memstribo.errors import did_you_mean
+    from memstribo.units import printable
+
+    unknown = sorted(str(k) for k in set(table) - set(allowed))
+    if unknown:
+        raise InputError(f"{where}: unknown {what.format(keys=[printable(k, 40) for k in unknown])}; allowed: "
+                         f"{sorted(allowed)}.{did_you_mean(unknown[0], allowed)}")
+

@@ -197,10 +197,9 @@ def map_spec(table: Mapping[str, Any], parameters: Mapping[str, Any] | None = No
     where = f"map spec {printable(source, 200)}"
     if not isinstance(table, Mapping):
         raise InputError(f"{where}: [map] must be a table.")
-    unknown = sorted(str(k) for k in set(table) - _MAP_KEYS)
-    if unknown:
-        raise InputError(f"{where}: unknown key(s) {[printable(k) for k in unknown]} in [map]; allowed: "
-                         f"{sorted(_MAP_KEYS)}.{did_you_mean(unknown[0], _MAP_KEYS)}")
+    from memstribo.checks import refuse_unknown_keys
+
+    refuse_unknown_keys(table, _MAP_KEYS, where, "key(s) {keys} in [map]")
     grid, fixed = table.get("grid", {}), table.get("fixed", {})
     if not isinstance(grid, Mapping) or not isinstance(fixed, Mapping):
         raise InputError(f"{where}: [map.grid] and [map.fixed] must be tables.")

@@ -55,6 +55,7 @@ from typing import Any
 
 import numpy as np
 
+from memstribo.checks import refuse_unknown_keys
 from memstribo.errors import InputError, did_you_mean
 from memstribo.units import printable
 
@@ -245,10 +246,7 @@ def design_spec(table: Mapping[str, Any], parameters: Mapping[str, Any] | None =
     where = f"design spec {printable(source, 200)}"
     if not isinstance(table, Mapping):
         raise InputError(f"{where}: [design] must be a table.")
-    unknown = sorted(str(k) for k in set(table) - _DESIGN_KEYS)
-    if unknown:
-        raise InputError(f"{where}: unknown key(s) {unknown} in [design]; allowed: {sorted(_DESIGN_KEYS)}."
-                         f"{did_you_mean(unknown[0], _DESIGN_KEYS)}")
+    refuse_unknown_keys(table, _DESIGN_KEYS, where, "key(s) {keys} in [design]")
     base = (params if params is not None else get_parameter_values()).updated(dict(parameters or {}), origin=where)
     name = table.get("name", "design search")
     if not isinstance(name, str) or not name.strip() or len(name) > 200:
@@ -342,10 +340,7 @@ def _torque(raw, where) -> dict:
 def _constraints(raw, names, where) -> dict:
     if not isinstance(raw, Mapping):
         raise InputError(f"{where}: [design.constraints] must be a table.")
-    unknown = sorted(set(raw) - _CONSTRAINT_KEYS)
-    if unknown:
-        raise InputError(f"{where}: unknown constraint(s) {unknown}; allowed: {sorted(_CONSTRAINT_KEYS)}."
-                         f"{did_you_mean(unknown[0], _CONSTRAINT_KEYS)}")
+    refuse_unknown_keys(raw, _CONSTRAINT_KEYS, where, "constraint(s) {keys}")
     out: dict[str, Any] = {}
     if "contact_ratio_min" in raw:
         out["contact_ratio_min"] = _number(raw["contact_ratio_min"], "", "contact_ratio_min", where)
