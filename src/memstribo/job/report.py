@@ -250,25 +250,17 @@ def _headline_html(result) -> str:
     constants, from the uncertainty stage), then the coated pair and the coating life (issue 41)."""
     v = result.verdict
     lines = []
-    if "bare_stiction_probability" in v:
-        k, n = _count(v.get("bare_stiction_probability_text"), v["bare_stiction_probability"],
-                      v.get("bare_realisations"))
-        text = v.get("bare_stiction_probability_text") or f"{v['bare_stiction_probability'] * 100:.0f} %"
-        lines.append(f"running, over the roughness: <span class='{_probability_class(k, n)}'>stiction in "
-                     f"{_e(text)}</span>")
-    elif "bare_stiction" in v:
-        cls = "bad" if v["bare_stiction"] else "good"
-        lines.append(f"running, one roughness realisation: <span class='{cls}'>"
-                     f"{'STICTION' if v['bare_stiction'] else 'no stiction'}</span>")
-    if v.get("bare_startup_stiction_probability_text"):
-        k, n = _count(v["bare_startup_stiction_probability_text"], v.get("bare_startup_stiction_probability"),
-                      v.get("bare_realisations"))
-        lines.append(f"start-up, over the roughness: <span class='{_probability_class(k, n)}'>stiction in "
-                     f"{_e(v['bare_startup_stiction_probability_text'])}</span>")
-    elif "bare_startup_stiction" in v:
-        cls = "bad" if v["bare_startup_stiction"] else "good"
-        lines.append(f"start-up, one roughness realisation: <span class='{cls}'>"
-                     f"{'STICTION' if v['bare_startup_stiction'] else 'no stiction'}</span>")
+    for label, key in (("running", "bare_stiction"), ("start-up", "bare_startup_stiction")):
+        probability, text = v.get(f"{key}_probability"), v.get(f"{key}_probability_text")
+        if probability is not None or text:
+            k, n = _count(text, probability, v.get("bare_realisations"))
+            text = text or f"{probability * 100:.0f} %"
+            lines.append(f"{label}, over the roughness: <span class='{_probability_class(k, n)}'>stiction in "
+                         f"{_e(text)}</span>")
+        elif key in v:
+            cls = "bad" if v[key] else "good"
+            lines.append(f"{label}, one roughness realisation: <span class='{cls}'>"
+                         f"{'STICTION' if v[key] else 'no stiction'}</span>")
     priors = _priors_probability(result.summaries.get("uncertainty") or v.get("uncertainty"))
     if priors is not None:
         text, k, n = priors
