@@ -1,15 +1,12 @@
 """Each measurement's case built with the paper's conditions, predicted with its uncertainty (MODEL 7e).
 
-A case is a flat or sidewall contact sliding under the paper's contact pressure (the fixed-load
-sliding structure of :mod:`memstribo.simulations.sliding` on a rough counter profile), or a microbeam
-adhered to its substrate (the work of separation of the rough gap field under the library's
-Lennard-Jones surface law and menisci). The roughness is synthesised from the paper's Rq and
-correlation length (or a stated assumption) with one seed per realisation. Each prediction is the
-median and the 90 % band (5th to 95th percentile) over roughness realisations x constant samples;
-a row whose case the model cannot build is returned as "not predicted" with the reason.
-
-Speed (what the generator uses): friction cases slide the 2-block structure over 1 um in steps of
-the bond length on a 2.4 um synthetic profile (about 0.03 s each); microbeams average over a 5.12 um square gap map.
+The test structures (flat pads, sidewalls, spheres, cantilever arrays, pull-off, nanocontacts) are the
+cases of :mod:`memstribo.laboratory.cases` (the rough contact solve, the bonds, the bounded menisci), dispatched by
+the row's geometry; a microbeam row is adhered to its substrate here (the work of separation of the rough gap map
+under the library's Lennard-Jones surface law and menisci, :mod:`memstribo.physics.rough_capillary`). The
+roughness is synthesised from the paper's Rq and correlation length (or a stated assumption) with one seed per
+realisation. Each prediction is the median and the 90 % band (5th to 95th percentile) over roughness realisations
+x constant samples; a row whose case the model cannot build is returned as "not predicted" with the reason.
 """
 
 from __future__ import annotations
@@ -23,13 +20,9 @@ from memstribo.errors import InputError
 from memstribo.laboratory.cases._roughness import SIDEWALL_ROUGHNESS, stated_roughness as _roughness  # noqa: F401
 from memstribo.references import cites
 
-__all__ = ["Prediction", "predict_row", "predict_all", "band", "row_values", "static_cof", "FRICTION",
-           "SLIDE_DISTANCE"]
+__all__ = ["Prediction", "predict_row", "predict_all", "band", "row_values", "static_cof", "FRICTION"]
 
 FRICTION = ("static_cof", "kinetic_cof")
-#: sliding distance of a friction case [m] and the length of its synthetic profile [m]
-SLIDE_DISTANCE = 1.0e-6
-PROFILE_LENGTH = 2.4e-6
 #: side [m] and points per side of a microbeam's synthetic gap map (a 5.12 um square, 10 nm spacing)
 BEAM_MAP_SIZE = 5.12e-6
 BEAM_MAP_POINTS = 512
@@ -157,47 +150,6 @@ def _profile(rq, correlation_length, length, seed, spacing=None):
 
 
 @cites("thesis", "model", "van_spengen_2010")
-def _friction_values(row, samples, realisations, calibration_coating, seed):
-    from memstribo.simulations import sliding
-
-    pressure = row.number("contact_pressure")
-    rough = _roughness(row)
-    values = np.zeros((len(samples), realisations))
-    profiles = {}
-    case = ""
-    for i, sample in enumerate(samples):
-        params, set_name = _base_parameters(row, sample, calibration_coating)
-        if row.coating:
-            params = _coated(params, row.coating)
-        area = int(params["slider_blocks"]) * params["adhesive_width"] ** 2
-        if rough is None:
-            rq, corr = params["roughness_rq"], math.sqrt(2.0) * params["roughness_rq"] / params["roughness_rms_slope"]
-        else:
-            rq, corr = rough[0], rough[1]
-        for k in range(realisations):
-            if k not in profiles:
-                profiles[k] = _profile(rq, corr, PROFILE_LENGTH, seed + k)
-            # humidity (issue #36): the menisci's attraction adds to the load the contact carries (no shear of the
-            # meniscus or the film is added: none is cited)
-            capillary_pressure = _flat_capillary_pressure(row, params, rq, corr, seed + k)
-            load = (pressure + capillary_pressure) * area
-            slid = sliding.slide_fixed_load(params, profiles[k], load=load, distance=SLIDE_DISTANCE)
-            values[i, k] = (static_cof(slid, params) if row.quantity == "static_cof"
-                            else sliding.summarize(slid).cof_mean)
-        if not case:
-            note = "roughness: the parameter set's (the thesis's statistics; the source states none)" if rough is None \
-                else f"roughness Rq {rough[0] * 1e9:.3g} nm, correlation length {rough[1] * 1e9:.3g} nm ({rough[2]})"
-            case = (f"fixed-load sliding structure ({int(params['slider_blocks'])} nanoblocks) over a synthetic profile, "
-                    f"{set_name}{' + ' + row.coating + ' (U_chem off)' if row.coating else ''}, nominal pressure "
-                    f"{pressure:.3g} Pa -> load {load:.3g} N on the structure (with the menisci's "
-                    f"{capillary_pressure:.3g} Pa at RH {row.number('relative_humidity') or 0:g}); {note}; "
-                    + ("static COF: the start-up force of the structure's bonds at rest (one crystal registry: "
-                       "their lateral peak, 1.27 U / D, MODEL 7f) plus its elastic friction, over F_N + F_adh, "
-                       "averaged over the rest positions of the slide"
-                       if row.quantity == "static_cof" else "kinetic COF = cof_mean"))
-    return values, case
-
-
 def _flat_capillary_pressure(row, params, rq, corr, seed):
     """The menisci's attraction per apparent area of a flat or sidewall contact in air [Pa] (issue #36, MODEL 7g).
 
@@ -370,16 +322,9 @@ def row_values(row, constant_samples=None, realisations=8, calibration_coating="
     found = case_values(row, samples, realisations, base, calibration_coating, seed)
     if found is not NotImplemented:
         return found
-    if row.quantity in FRICTION:
-        if geometry not in ("flat", "sidewall"):
-            return None, (f"geometry {geometry}: the rotating rotor-on-hub contact is not a case memstribo builds "
-                          "(it has flat contacts and involute gear teeth)")
-        if row.number("contact_pressure") is None:
-            return None, ("the load is not stated in the cited record; the model's COF depends on the load "
-                          "(adhesion-dominated, falling with load), so there is no prediction without it")
-        if row.environment == "air" and row.number("relative_humidity") is None:
-            return None, "the humidity is not stated and no assumption is declared"
-        return _friction_values(row, samples, realisations, calibration_coating, seed)
+    if row.quantity in FRICTION:  # flat and sidewall rows are cases (memstribo.laboratory.cases): the rest is not
+        return None, (f"geometry {geometry}: the rotating rotor-on-hub contact is not a case memstribo builds "
+                      "(it has flat contacts and involute gear teeth)")
     if row.quantity in ("adhesion_energy", "adhesion_trend_with_rh"):
         if geometry != "microbeam":
             return None, f"geometry {geometry}: adhesion is predicted for microbeams only"

@@ -122,7 +122,7 @@ def markdown(res, figure_name="figures/experiments.png") -> str:
            "scatter and citation); a row without its conditions, unit or citation is refused when the data loads.", "",
            f"Settings (kept small so that the page regenerates in a few minutes on 2 cores): nominal predictions over "
            f"{s['nominal_realisations']} roughness realisations; calibration with {s['prior_samples']} prior samples x "
-           f"{s['calibration_realisations']} realisations; friction cases slide 1 µm in steps of the bond length.", ""]
+           f"{s['calibration_realisations']} realisations; the test structures are the cases of memstribo.laboratory.cases.", ""]
     out += _measurement_table(rows)
     out += ["", "Sources:", ""] + [f"- `{k}`: {REFERENCES[k]}" for k in dict.fromkeys(r.citation for r in rows)]
     out += ["", "## Predictions at the nominal constants", "",
