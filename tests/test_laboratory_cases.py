@@ -245,3 +245,19 @@ def test_cantilever_crack_length_is_the_beam_relation_of_the_predicted_energy(va
                         [{}], 1)[0][0, 0]
     assert crack == pytest.approx(cantilever.beam_crack_length(vacuum["youngs_modulus"], 2.6e-6, 2e-6, energy))
     assert 0 < energy < work_of_adhesion(vacuum)
+
+
+def test_the_rough_contact_never_carries_more_than_the_hardness(vacuum):
+    """Force balance against the physical bound: the contact carries W + F_adh over its real area, at most the
+    hardness on average (each element is capped there), up to nominal pressures at the hardness itself."""
+    from memstribo.laboratory.cases._interface import adhesive_contact
+
+    h = np.random.default_rng(3).normal(0.0, 3e-9, (64, 64))
+    dx = 10e-9
+    carried = []
+    for nominal in (1e8, 2e9, 8e9):
+        state = adhesive_contact(h, dx, vacuum, nominal * (64 * dx) ** 2, None, periodic=True)
+        if state.resolved:
+            carried.append((state.load + state.adhesion) / state.real_area)
+    assert carried and max(carried) <= vacuum["hardness"] * (1 + 1e-6)
+    assert max(carried) > 0.5 * vacuum["hardness"]  # the bound is reached, so the test can fail
