@@ -216,6 +216,39 @@ REFERENCES: dict[str, str] = {
         "Proceedings of the ASME/STLE International Joint Tribology Conference IJTC 2007, pp. 873-875 (2008). "
         "doi:10.1115/IJTC2007-44308"
     ),
+    "imece_1999_parallel_plate": (
+        "'Stiction study on the microscale via an electrostatically actuated polysilicon parallel plate capacitor' "
+        "(title as the abstract states the work; exact title, authors and DOI not read), ASME International Mechanical "
+        "Engineering Congress and Exposition IMECE 1999, proceedings abstract IMECE99/16387/275 (ASME digital collection)"
+    ),
+    "paratte_1991": (
+        "L. Paratte, G.-A. Racine, N. F. de Rooij, E. Bornand, 'Design of an integrated electrostatic stepper motor with "
+        "axial field', Sensors and Actuators A 25-27 (1991) 597-603 (DOI not found in the searched records; record: "
+        "discovery.researcher.life/article/design-of-an-integrated-electrostatic-stepper-motor-with-axial-field)"
+    ),
+    "sfm_h_silicon_1996": (
+        "'Friction forces on hydrogen passivated (110) silicon and silicon dioxide studied by scanning force "
+        "microscopy', J. Vac. Sci. Technol. (American Vacuum Society, 1996); record CORE 18252751 from the University of "
+        "Basel edoc repository (authors and DOI not read; record: core.ac.uk/display/18252751)"
+    ),
+    "asay_dugger_kim_vpl": (
+        "D. B. Asay, M. T. Dugger, S. H. Kim, 'In-situ vapor-phase lubrication of MEMS', Tribology Letters, issue 1, "
+        "pp. 67-74 (Springer, 2007/2008; DOI not read; record: ouci.dntb.gov.ua/works/98VBayv4)"
+    ),
+    "wang_2015_nanowire_friction": (
+        "S. Wang, L. Hou, H. Xie, H. Huang, 'The kinetic friction between a nanowire and a flat substrate measured "
+        "using nanomanipulation with optical microscopy', Appl. Phys. Lett. (2015), no. 10. doi:10.1063/1.4930576"
+    ),
+    "jones_2002_afm_adhesion": (
+        "R. Jones, H. M. Pollock, J. A. S. Cleaver, C. S. Hodges, 'Adhesion forces between glass and silicon surfaces "
+        "in air studied by AFM: effects of relative humidity, particle size, roughness, and surface treatment', "
+        "Langmuir 18 (2002) 8045-8055. doi:10.1021/la0259196"
+    ),
+    "deng_1995_micromotor_sam": (
+        "K. Deng, R. J. Collins, M. Mehregany, C. N. Sukenik, 'Performance impact of monolayer coating of polysilicon "
+        "micromotors', J. Electrochem. Soc., pp. 1278-1285. doi:10.1149/1.2044164 (conference version: Proc. IEEE "
+        "Micro Electro Mechanical Systems 1995, doi:10.1109/MEMSYS.1995.472568)"
+    ),
     "kennedy_ohagan_2001": (
         "M. C. Kennedy, A. O'Hagan, 'Bayesian calibration of computer models', Journal of the Royal Statistical "
         "Society B 63 (2001) 425-464. doi:10.1111/1467-9868.00294 (the model-discrepancy term)"
