@@ -53,6 +53,17 @@ def test_shipped_rows_mark_duplicates_fits_and_design_targets():
     assert len(independent) == len(rows) - sum(r.same_as is not None for r in rows.values())
 
 
+def test_packaged_set_is_broad_enough_for_issue_37():
+    """Issue 37 item 5: at least 30 independent measurements (duplicates merged) from at least 10 research groups,
+    with interfacial shear strengths among them (the quantity the gear's verdict hangs on)."""
+    rows = data.load_measurements()
+    independent = scoring.independent_rows(rows)
+    assert len(independent) >= 30
+    assert len({r.source_group for r in independent}) >= 10
+    assert sum(r.quantity == "interfacial_shear_strength" for r in independent) >= 2
+    assert {r.id for r in independent} <= {r.id for r in rows if r.same_as is None}
+
+
 def test_same_as_must_name_another_first_row(tmp_path):
     with pytest.raises(InputError, match="b.*same_as 'nobody' names no other row"):
         data.load_measurements(_file(tmp_path, [("a", 0.2, ""), ("b", 0.2, 'same_as = "nobody"'), ("c", 1, "")]))

@@ -249,6 +249,16 @@ REFERENCES: dict[str, str] = {
         "micromotors', J. Electrochem. Soc., pp. 1278-1285. doi:10.1149/1.2044164 (conference version: Proc. IEEE "
         "Micro Electro Mechanical Systems 1995, doi:10.1109/MEMSYS.1995.472568)"
     ),
+    "bit_2007_on_chip_tribotester": (
+        "'On-chip micro-tribotester and its micro-fabrication', Zhongguo Jixie Gongcheng (China Mechanical Engineering) "
+        "18(21) (2007) 2539-2542 (authors and DOI not read; record: pure.bit.edu.cn/en/publications/"
+        "on-chip-micro-tribotester-and-its-micro-fabrication)"
+    ),
+    "zno_nanowire_sio2_sin": (
+        "'The kinetic friction of ZnO nanowires on amorphous SiO2 and SiN substrates' (journal, authors and DOI not "
+        "read; record: discovery.researcher.life/article/the-kinetic-friction-of-zno-nanowires-on-amorphous-sio2-and-"
+        "sin-substrates)"
+    ),
     "kennedy_ohagan_2001": (
         "M. C. Kennedy, A. O'Hagan, 'Bayesian calibration of computer models', Journal of the Royal Statistical "
         "Society B 63 (2001) 425-464. doi:10.1111/1467-9868.00294 (the model-discrepancy term)"
