@@ -261,3 +261,43 @@ def test_the_rough_contact_never_carries_more_than_the_hardness(vacuum):
             carried.append((state.load + state.adhesion) / state.real_area)
     assert carried and max(carried) <= vacuum["hardness"] * (1 + 1e-6)
     assert max(carried) > 0.5 * vacuum["hardness"]  # the bound is reached, so the test can fail
+
+
+# --- exact reuse across constant samples (issue 40: validate-lab <= 2 min) ------------------------------------------
+
+def test_samples_reuse_a_case_only_where_it_read_the_same_values(monkeypatch):
+    """A pull-off reads no bond energy: one evaluation per realisation serves every sample; a friction case reads
+    them: every sample is its own. Either way the values equal a fresh evaluation of every sample, bit for bit."""
+    import memstribo.laboratory.cases as cases
+    from memstribo.laboratory.materials import row_parameters
+
+    samples = [{"bond_energy": u, "vdw_bond_energy": u / 50} for u in (2e-19, 4e-19, 8e-19)]
+    calls = []
+    original = cases._one
+    monkeypatch.setattr(cases, "_one", lambda *a: calls.append(a[3]) or original(*a))
+    pull = row(geometry="pull_off", quantity="pull_off_force", sphere_radius=1e-6, value=1e-6)
+    friction = row(geometry="sphere_on_flat", sphere_radius=1e-6, normal_force=1e-6)
+    for r, evaluations in ((pull, 2), (friction, 6)):
+        calls.clear()
+        values, _ = case_values(r, samples, 2)
+        assert len(calls) == evaluations
+        for i, sample in enumerate(samples):
+            params = row_parameters(r, None, sample)[0]
+            for k in range(2):
+                fresh = original(r, params, cases.row_roughness(r, params), 20260528 + k)[0]
+                assert values[i, k] == fresh
+    assert len(set(case_values(friction, samples, 1)[0][:, 0])) == 3  # the bond energies do act on friction
+
+
+def test_the_read_recorder_keys_what_was_read():
+    from memstribo.laboratory.cases._memo import ReadRecorder, read_key
+
+    params = get_parameter_values("silicon_thesis")
+    recorder = ReadRecorder(params)
+    recorder["hamaker_constant"], recorder.get("cutoff_distance")
+    assert recorder.names() == ("cutoff_distance", "hamaker_constant")
+    other = params.updated({"bond_energy": 1e-19})
+    assert read_key(params, recorder.names()) == read_key(other, recorder.names())
+    assert read_key(params, None) != read_key(other, None)
+    recorder.updated({"bond_energy": 1e-19})
+    assert recorder.names() is None  # a copy reads everything

@@ -176,6 +176,21 @@ def _one(row, params, rough, seed):
     return out[key], f"flat pad at {pressure:.3g} Pa, A_r/A {out['real_area_fraction']:.3g}" + _said(out)
 
 
+def _reused_or_new(done, row, params, rough, seed):
+    """``_one(row, params, rough, seed)``, or the stored result of an earlier evaluation that read the same values
+    (:mod:`memstribo.laboratory.cases._memo`: exact); ``done`` is updated."""
+    from memstribo.laboratory.cases._memo import ReadRecorder, read_key
+
+    for names, table in done.items():
+        found = table.get(read_key(params, names))
+        if found is not None:
+            return found
+    recorder = ReadRecorder(params)
+    found = _one(row, recorder, rough, seed)
+    done.setdefault(recorder.names(), {})[read_key(params, recorder.names())] = found
+    return found
+
+
 def case_values(row, samples, realisations, base=None, calibration_coating="OTS", seed=20260528):
     """The predicted values of ``row`` over constant samples x roughness realisations, with the case in words.
 
@@ -197,6 +212,7 @@ def case_values(row, samples, realisations, base=None, calibration_coating="OTS"
         return None, reason
     values = np.zeros((len(samples), realisations))
     text = ""
+    done: dict = {}  # (realisation, roughness) -> {names an evaluation read: {their values: (value, words)}}
     for i, sample in enumerate(samples):
         params, set_name = row_parameters(row, base, sample, calibration_coating)
         try:
@@ -205,7 +221,8 @@ def case_values(row, samples, realisations, base=None, calibration_coating="OTS"
             return None, str(error)
         rough = row_roughness(row, params)
         for k in range(realisations):
-            values[i, k], words = _one(row, params, rough, seed + k)
+            found = _reused_or_new(done.setdefault((k, rough), {}), row, params, rough, seed + k)
+            values[i, k], words = found
             text = text or (f"{geometry} case ({words}); {set_name}"
                             f"{' + ' + row.coating if row.coating else ''}; roughness: "
                             + (f"Rq {rough[0] * 1e9:.3g} nm, correlation length {rough[1] * 1e9:.3g} nm ({rough[2]})"
