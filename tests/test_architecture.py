@@ -240,3 +240,19 @@ def test_the_solvers_constants_live_only_in_the_settings():
         constants = [t.id for node in tree.body if isinstance(node, ast.Assign) for t in node.targets
                      if isinstance(t, ast.Name) and re.fullmatch(r"_?[A-Z][A-Z0-9_]*", t.id)]
         assert not constants, f"{path.name}: {constants}"
+
+
+def test_every_data_file_of_the_package_is_installed():
+    """A wheel carries only the package data pyproject.toml names: every non-Python file under src/memstribo must
+    match one of its patterns (laboratory/materials.toml was missed once: a non-editable install lost it)."""
+    import fnmatch
+    import tomllib
+
+    root = Path(__file__).resolve().parent.parent
+    patterns = tomllib.loads((root / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"]["memstribo"]
+    package = root / "src" / "memstribo"
+    data = [p.relative_to(package).as_posix() for p in package.rglob("*")
+            if p.is_file() and p.suffix not in (".py", ".pyc") and "__pycache__" not in p.parts]
+    assert data
+    missing = [name for name in data if not any(fnmatch.fnmatch(name, pattern) for pattern in patterns)]
+    assert not missing, f"not in [tool.setuptools.package-data]: {missing}"
