@@ -143,11 +143,17 @@ def test_run_options_from_a_config_table(tmp_path):
     ({"cycles_observed": -5}, "cycles > 0"),
     ({"areas": [1.5]}, "whole multiples"),
     ({"sliding_distance": "-1 nm"}, "length > 0"),
-    ({"validation": "yes"}, "true or false"),
+    ({"validation": "yes"}, "recompute"),
 ])
 def test_bad_run_tables_raise_input_error(table, match, tmp_path):
     with pytest.raises(InputError, match=match):
         RunOptions.from_table(table, tmp_path)
+
+
+def test_the_validation_table_is_shipped_or_recomputed_as_asked(tmp_path):
+    assert RunOptions.from_table({}, tmp_path).validation is True  # the rows shipped with this version
+    assert RunOptions.from_table({"validation": "recompute"}, tmp_path).validation == "recompute"
+    assert RunOptions.from_table({"validation": False}, tmp_path).validation is False
 
 
 def test_cli_run_json_with_config_file(cli, tmp_path):

@@ -277,7 +277,7 @@ def test_validation_rows_without_a_checkout_keep_the_other_topics(monkeypatch, t
                                 lambda topic=topic: [ValidationRow(topic, "stand-in", "test", 1.0, 1.0, "", "exact",
                                                                    True, "memstribo gear --json")])
 
-    with_files, note = validation_rows()
+    with_files, note = validation_rows(recompute=True)
     assert note is None
     # an installed wheel (no data/afm/ beside the package) run from the repository root still finds the scans
     from memstribo import output
@@ -285,11 +285,11 @@ def test_validation_rows_without_a_checkout_keep_the_other_topics(monkeypatch, t
     monkeypatch.setattr(roughness_rows, "AFM", tmp_path / "no-such-folder")
     monkeypatch.setattr(output, "__file__", str(tmp_path / "site-packages" / "memstribo" / "output.py"))
     monkeypatch.chdir(Path(__file__).resolve().parent.parent)
-    from_root, note = validation_rows()
+    from_root, note = validation_rows(recompute=True)
     assert note is None and len(from_root) == len(with_files)
     # ... and run anywhere else it leaves those rows out, with a note
     monkeypatch.chdir(tmp_path)
-    rows, note = validation_rows()
+    rows, note = validation_rows(recompute=True)
     assert "data/afm" in note and "checkout" in note
     assert 0 < len(rows) < len(with_files)
     assert not any(row.command.startswith("memstribo roughness data/afm/") for row in rows)

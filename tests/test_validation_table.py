@@ -149,3 +149,28 @@ def test_committed_table_holds_no_round_off_digits(rows):
     for row in rows:
         if row.reference_value == 0 and row.agrees and row.value not in (0, None) and "abs" in row.tolerance:
             assert format_value(row).startswith("< "), row
+
+
+def test_the_shipped_rows_are_a_fresh_computation(rows):
+    """The run's report shows the package's rows.json (issue 40: not 1-2 min of rows at every run); they must be
+    what a fresh computation gives: the same rows, verdicts and bands, rendering to the same table."""
+    from memstribo.validation import shipped_rows
+
+    shipped = shipped_rows()
+    assert shipped is not None, "src/memstribo/validation/rows.json is missing: run 'python -m memstribo.validation'"
+    assert render_markdown(shipped) == render_markdown(rows), (
+        "src/memstribo/validation/rows.json is out of date: run 'python -m memstribo.validation' and commit it")
+    assert [(r.topic, r.quantity, r.agrees, r.expected, r.band, r.calibrated) for r in shipped] == \
+        [(r.topic, r.quantity, r.agrees, r.expected, r.band, r.calibrated) for r in rows]
+
+
+def test_the_run_shows_the_shipped_rows_unless_asked_to_recompute(monkeypatch):
+    import memstribo.validation as validation
+    from memstribo.job.report import SHIPPED_NOTE, validation_rows
+
+    shipped, note = validation_rows()
+    assert note == SHIPPED_NOTE and shipped == validation.shipped_rows()
+    monkeypatch.setattr(validation, "all_rows", lambda: [shipped[0]])
+    assert validation_rows(recompute=True)[0] == [shipped[0]]
+    monkeypatch.setattr(validation, "shipped_rows", lambda: None)  # an install without rows.json computes them
+    assert validation_rows()[0] == [shipped[0]]

@@ -77,8 +77,9 @@ class RunOptions:
         An observed coating life [cycles] to calibrate the damage constant c1.
     sliding_distance : float or None
         Sliding distance [m] of the structure in the ``sliding`` stage (None: the model's default).
-    validation : bool
-        Put the validation table (every topic's rows, computed at the end) into the report.
+    validation : bool or "recompute"
+        Put the validation table (every topic's rows) into the report: True, the rows shipped with this version
+        (they do not depend on the run's parameters); "recompute", computed again at the end (1-2 min).
     realisations : int
         Independent roughness realisations of the bare verdict (MODEL 7b).
     uncertainty : int
@@ -99,7 +100,7 @@ class RunOptions:
     stages: tuple[str, ...] = tuple(STAGES)
     cycles_observed: float | None = None
     sliding_distance: float | None = None
-    validation: bool = True
+    validation: bool | str = True
     realisations: int = 16
     uncertainty: int = 64
     map: str | None = None
@@ -215,8 +216,9 @@ class RunOptions:
                 raise InputError(f"[run] cycles_observed = {table['cycles_observed']!r}: give a number of cycles > 0.")
             options["cycles_observed"] = cycles
         if "validation" in table:
-            if not isinstance(table["validation"], bool):
-                raise InputError(f"[run] validation = {table['validation']!r}: give true or false.")
+            if not isinstance(table["validation"], bool) and table["validation"] != "recompute":
+                raise InputError(f"[run] validation = {table['validation']!r}: give true (the rows shipped with this "
+                                 "version), \"recompute\" (compute them again, 1-2 min) or false.")
             options["validation"] = table["validation"]
         if "sliding_distance" in table:
             distance = to_si(table["sliding_distance"], "m", "sliding_distance")

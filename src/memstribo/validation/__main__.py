@@ -2,8 +2,8 @@
 
 Usage::
 
-    python -m memstribo.validation                 # writes docs/validation.md of this checkout
-                                                   # (./validation.md when installed, not a checkout)
+    python -m memstribo.validation                 # writes docs/validation.md of this checkout and the
+                                                   # package's rows.json (./validation.md when installed)
     python -m memstribo.validation --output FILE   # elsewhere ('-' for stdout)
     python -m memstribo.validation --check         # exit 1 if docs/validation.md is out of date
 
@@ -18,7 +18,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from memstribo.validation import all_rows
+from memstribo.validation import SHIPPED_ROWS, all_rows, rows_to_json
 from memstribo.validation.rows import ValidationRow
 
 def _default_output() -> Path:
@@ -114,7 +114,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--output", default=str(DEFAULT_OUTPUT), help="file to write ('-': stdout)")
     parser.add_argument("--check", action="store_true", help="only compare with --output; exit 1 if it differs")
     args = parser.parse_args(argv)
-    text = render_markdown(all_rows())
+    rows = all_rows()
+    text = render_markdown(rows)
     if args.output == "-":
         sys.stdout.write(text)
         return 0
@@ -130,6 +131,10 @@ def main(argv: list[str] | None = None) -> int:
 
     atomic_write_text(path, text)
     print(f"wrote {path}")
+    if path == DEFAULT_OUTPUT:  # the checkout's table: the package's rows.json with it (the run shows them)
+        shipped = Path(__file__).resolve().parent / SHIPPED_ROWS
+        atomic_write_text(shipped, rows_to_json(rows))
+        print(f"wrote {shipped}")
     return 0
 
 
