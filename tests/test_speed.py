@@ -147,3 +147,26 @@ def test_the_runs_ensemble_on_the_cluster_equals_the_ensemble_in_this_process(pa
     assert shared.ok and alone.ok
     a, b = (json.loads((tmp_path / name / "data" / "mesh_bare_ensemble.json").read_text()) for name in ("two", "one"))
     assert json.dumps(a, sort_keys=True) == json.dumps(b, sort_keys=True)
+
+
+def test_the_runs_uncertainty_stage_reuses_the_mesh_ensemble_and_ranks_on_its_samples(params, tmp_path):
+    """Issue 40: the uncertainty stage takes the mesh stage's realisations as its nominal ones (the same numbers as
+    solving them again, three solves fewer), ranks by the regional index on its own samples (no Sobol' design, no
+    end points or bands) and says where the full analysis is."""
+    from memstribo.job.chain import RunChain
+    from memstribo.job.options import options_for_test
+
+    with_mesh = RunChain(params, tmp_path / "with", options_for_test(
+        stages=("roughness", "geometry", "mesh", "uncertainty"))).run()
+    alone = RunChain(params, tmp_path / "alone", options_for_test(
+        stages=("roughness", "geometry", "uncertainty"))).run()
+    assert with_mesh.ok and alone.ok
+    a, b = (json.loads((tmp_path / name / "data" / "uncertainty.json").read_text()) for name in ("with", "alone"))
+    assert a["nominal_cycles_reused"] == 3 and b["nominal_cycles_reused"] == 0
+    assert a["solves"] == b["solves"] - 3
+    for key in ("stiction_probability", "stiction_probability_ci", "margin_quantiles", "margin_quantiles_nominal",
+                "cof_quantiles", "decision_sensitivity", "margin_correlation"):
+        assert json.dumps(a[key], sort_keys=True) == json.dumps(b[key], sort_keys=True), key
+    assert a["sensitivity_method"] == "regional" and "sobol_design" not in a
+    assert a["decision_depth"] == "regional" and a["robust_bayes"] is None
+    assert "memstribo mesh --uncertainty" in a["decision_sentence"]

@@ -208,3 +208,85 @@ def test_a_small_study_reports_the_decisions_sensitivity(params):
     assert band["band"][0] <= result["stiction_probability"] <= band["band"][1]
     assert result["prior_dominated"] == band["prior_dominated"]
     assert result["decision_sentence"]
+
+
+def test_the_regional_depth_solves_nothing_beyond_the_studys_samples(params):
+    """depth "regional" (the main job's, issue 40): the regional index on the samples, no end point, no band; the
+    flips are None (not checked), never an empty list (which would say "none flips")."""
+    from memstribo.uncertainty.priors import priors_for
+    from memstribo.uncertainty.study import uncertainty_study
+
+    fixed = [name for name in priors_for(params) if name not in ("vdw_bond_energy", "adhesive_height")]
+    kwargs = dict(samples=4, realisations=2, steps=11, sobol_samples=2, fixed=fixed, curve_points=2)
+    full = uncertainty_study(params, **kwargs)
+    regional = uncertainty_study(params, decision={"depth": "regional"}, critical="rescaled", **kwargs)
+    assert full["decision_depth"] == "full" and regional["decision_depth"] == "regional"
+    assert regional["flipping_constants"] is None and regional["robust_bayes"] is None
+    assert regional["prior_dominated"] is None
+    assert "memstribo mesh --uncertainty" in regional["decision_sentence"]
+    assert regional["solves"] < full["solves"]
+    for name in ("vdw_bond_energy", "adhesive_height", "roughness_realisation"):  # the same index on the same rows
+        assert regional["decision_sensitivity"][name]["index"] == full["decision_sensitivity"][name]["index"]
+        assert "margin_at_low" not in regional["decision_sensitivity"][name]
+    assert regional["stiction_probability"] == full["stiction_probability"]
+    # critical values: the rescaled bond energy's is searched, the solved constant's is not (and says so)
+    assert regional["sensitivity"]["adhesive_height"]["critical_value"] is None
+    if regional["sensitivity"]["adhesive_height"]["total"] > 0.1:
+        assert "not searched here" in regional["sensitivity"]["adhesive_height"]["note"]
+    assert (regional["sensitivity"]["vdw_bond_energy"]["critical_value"]
+            == full["sensitivity"]["vdw_bond_energy"]["critical_value"])
+    with pytest.raises(InputError, match="depth"):
+        uncertainty_study(params, decision={"depth": "deep"}, **kwargs)
+    with pytest.raises(InputError, match="critical"):
+        uncertainty_study(params, critical="some", **kwargs)
+
+
+def test_nominal_cycles_solved_already_are_reused_bit_for_bit(params):
+    """The run's mesh ensemble hands its reduced cycles to the uncertainty stage: no solve of them again, the same
+    result as solving them."""
+    from memstribo.simulations.mesh import simulate_mesh
+    from memstribo.uncertainty.priors import priors_for
+    from memstribo.uncertainty.rescale import reduce_cycle
+    from memstribo.uncertainty.study import uncertainty_study
+
+    fixed = [name for name in priors_for(params) if name != "vdw_bond_energy"]
+    kwargs = dict(samples=4, realisations=2, steps=11, fixed=fixed, sensitivity=False)
+    plain = uncertainty_study(params, **kwargs)
+    cycles = {r: reduce_cycle(simulate_mesh(params, steps=11, realisation=r)) for r in range(2)}
+    reused = uncertainty_study(params, nominal_cycles=cycles, **kwargs)
+    assert reused["nominal_cycles_reused"] == 2 and plain["nominal_cycles_reused"] == 0
+    assert reused["solves"] == plain["solves"] - 2
+    for key in ("stiction_probability", "margin_quantiles", "margin_quantiles_nominal", "cof_quantiles"):
+        assert reused[key] == plain[key]
+
+
+def test_a_regional_study_ranks_by_the_verdict_and_draws_its_figure(params, tmp_path):
+    """sensitivity="regional" (the main job's, issue 40): no Sobol' design; the dominant constant is the first whose
+    regional index is above its noise level, or, where every sample gives the same verdict, the one most correlated
+    with the margin; the figure shows whichever ranked them."""
+    from memstribo.uncertainty.figures import plot_sensitivity
+    from memstribo.uncertainty.priors import priors_for
+    from memstribo.uncertainty.study import uncertainty_study
+
+    fixed = [name for name in priors_for(params) if name not in ("vdw_bond_energy", "adhesive_height")]
+    result = uncertainty_study(params, samples=8, realisations=2, steps=11, fixed=fixed, sensitivity="regional",
+                               critical="rescaled", curve_points=2)
+    assert result["sensitivity_method"] == "regional" and "sobol_design" not in result
+    assert result["sensitivity"] == {} and result["decision_depth"] == "regional"
+    correlation = result["margin_correlation"]
+    assert set(correlation) == {"vdw_bond_energy", "adhesive_height", "roughness_realisation"}
+    assert all(-1 <= c["rho"] <= 1 and 0 <= c["p_value"] <= 1 for c in correlation.values())
+    assert correlation["vdw_bond_energy"]["rho"] < 0  # more vdW energy, more friction, less margin
+    regional = result["decision_sensitivity"]
+    above = [n for n, e in regional.items() if n != "roughness_realisation" and e["index"] is not None
+             and e["index"] > e["noise_level"]]
+    significant = sorted((n for n in ("vdw_bond_energy", "adhesive_height") if correlation[n]["p_value"] < 0.05),
+                         key=lambda n: -abs(correlation[n]["rho"]))
+    expected = above[0] if above else (significant[0] if significant else None)
+    assert result["dominant"] == expected
+    if expected == "vdw_bond_energy":  # rescaled: its critical value is searched, at no new cycle
+        assert result["dominant_entry"]["searched"] is True and result["critical_curve"]["name"] == expected
+    written = plot_sensitivity(result, tmp_path)
+    assert {p.suffix for p in written} == {".png", ".svg"}
+    with pytest.raises(InputError, match="sensitivity"):
+        uncertainty_study(params, samples=8, realisations=2, steps=11, fixed=fixed, sensitivity="sobol")

@@ -481,6 +481,9 @@ _ENTRIES = [
     ("contact_rows_reused", "1", "contact solves reused",
      "rows' contact solves (a row over the whole cycle) the uncertainty study took from an earlier solve with the "
      "same inputs instead of solving them again (issue 40; in this process, not counting Dask workers')"),
+    ("nominal_cycles_reused", "1", "nominal cycles reused",
+     "realisations at the nominal constants the uncertainty study took from the run's mesh ensemble instead of "
+     "solving them again (the same function of the same inputs; issue 40)"),
     ("rescale_seconds", "s", "rescaling time", "wall time the uncertainty study spent rescaling solved cycles to "
      "other bond energies"),
     ("design_effect", "1", "design effect of shared contact solves",
@@ -572,6 +575,19 @@ _ENTRIES = [
     ("prior_dominated", _TEXT, "prior-dominated",
      "true where a robust-Bayes band of P(stiction) spans more than 0.3: the probability is mostly the prior"),
     ("prior_dominated_constants", _TEXT, "prior-dominating constants", "the constants whose band spans more than 0.3"),
+    ("sensitivity_method", _TEXT, "what ranks the constants",
+     "'regional': the regional index of the verdict on the study's own samples (no Sobol' design; the main job's "
+     "since issue 40); absent: Sobol' indices of the margin (sensitivity)"),
+    ("dominant_entry", _TEXT, "the dominant constant's critical value",
+     "with sensitivity_method 'regional': what ranked the dominant constant first (ranked_by), its critical_value, "
+     "stiction_above, searched (False: not searched, the note says where it is) and note"),
+    ("margin_correlation", _TEXT, "rank correlation with the margin",
+     "with sensitivity_method 'regional': Spearman's rank correlation rho of the stiction margin with each factor "
+     "over the study's samples and its p_value [-]; it ranks the constants where every sample gives the same verdict"),
+    ("decision_depth", _TEXT, "depth of the decision's sensitivity",
+     "'full': regional index, each constant at the ends of its prior, critical values, robust-Bayes bands; "
+     "'regional': the regional index on the study's samples only (no further cycle; the main job's default), "
+     "the flips and bands then None: not checked"),
     ("decision_sentence", _TEXT, "what the verdict hangs on",
      "the constants that alone flip the verdict, with their critical values in measurable units, and whether "
      "P(stiction) is prior-dominated"),

@@ -45,7 +45,8 @@ from memstribo.job.figures import plot_lives
 from memstribo.job.figures import (plot_block_loads, plot_cycle, plot_energy, plot_ensemble, plot_gear, plot_humidity,
                                    plot_map, plot_profiles, plot_sliding, plot_sweep)
 from memstribo.job.verdict import uncertainty_summary, verdict  # noqa: F401  (verdict: re-exported)
-from memstribo.job.workers import StageWorkers
+from memstribo.job.sweeps import columns, cof_above_one, sweep_dataset
+from memstribo.job.workers import StageWorkers, ensemble_point_and_cycle
 from memstribo.job.options import (DEPENDS, MAP_STAGE, RELOADED, STAGES, USES, FigureRecord, RunOptions, RunResult,
                                    StageRecord)
 
@@ -67,43 +68,6 @@ def cycle_summary(dataset) -> dict[str, Any]:
 HUMIDITY_VALUES = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9)
 #: Title of that section (not a stage of :data:`STAGES`: it runs only when the environment is air).
 HUMIDITY_TITLE = "Humid air: COF, capillary share and stiction margin versus relative humidity"
-
-
-def _sweep_dataset(dimension, values, unit, long_name, summaries):
-    """Summaries (:func:`memstribo.simulations.mesh.summarize`) of a sweep as a Dataset over ``dimension``."""
-    import xarray as xr
-
-    from memstribo.quantities import attrs
-    from memstribo.simulations.mesh import SUMMARY_KEYS
-    data = {key: (dimension, np.array([float(s[key]) for s in summaries], dtype=float), attrs(key))
-            for key in SUMMARY_KEYS
-            if all(key in s and isinstance(s[key], (int, float, np.number)) for s in summaries)}
-    return xr.Dataset(data, coords={dimension: (dimension, np.asarray(values, dtype=float),
-                                                {"units": unit, "long_name": long_name})})
-
-
-def _cof_above_one(dataset, x, x_text) -> str:
-    """A caption's sentence saying why a sweep's mean COF exceeds 1 (e.g. 2.41 at 25 µN), or ""."""
-    if "cof_mean" not in dataset:
-        return ""
-    cof = np.asarray(dataset["cof_mean"].values, dtype=float)
-    if not np.any(np.isfinite(cof)) or np.nanmax(cof) <= 1.0:
-        return ""
-    i = int(np.nanargmax(cof))
-    parts = [(name, float(dataset[name].values[i])) for name in ("cof_chemical", "cof_vdw", "cof_elastic")
-             if name in dataset]
-    largest = max(parts, key=lambda p: p[1]) if parts else None
-    share = (f"; {largest[0].replace('cof_', '').replace('vdw', 'van der Waals')} bonds give {largest[1]:.3g} of it"
-             if largest else "")
-    return (f" The mean COF reaches {cof[i]:.3g} at {x_text(float(dataset[x].values[i]))}{share}. A COF above 1 is "
-            "no error: the apparent COF is the energy of the bonds broken per sliding distance divided by the load "
-            "F_N + F_adh (Eq. 3-7), and the number of bonds (set by the contact area) falls more slowly than the load, "
-            "so at light loads the ratio exceeds 1 (the thesis's COF also falls with load, 4.9.3).")
-
-
-def _columns(dataset) -> dict[str, list]:
-    return {name: [float(v) for v in dataset[name].values] for name in list(dataset.coords) + list(dataset.data_vars)
-            if dataset[name].dtype.kind in "fiub"}
 
 
 _GEOMETRY_FIELDS = ("atomic_width", "atomic_height", "adhesive_width", "adhesive_height", "atomic_pitch",
@@ -470,15 +434,24 @@ class RunChain:
         summary.update(mesh.run_check(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
                                       baseline=summary, dataset=dataset))  # 2x the steps, 2x the grid (MODEL 7d)
         count = self.options.realisations
+        keep = self._uncertainty_reuses_the_ensemble()
+        if keep:  # the uncertainty stage's nominal realisations are these cycles (issue 40)
+            from memstribo.uncertainty.rescale import reduce_cycle
+
+            self.results["nominal_cycles"] = {0: reduce_cycle(dataset)}
         if count > 1:
             first = dict(summary, realisation=0, seed=[int(self.model_params["roughness_seed"]), 0])
             from memstribo.job.workers import ENSEMBLE_REALISATIONS
 
             client, point = self.workers.client(count - 1, "mesh ensemble", ENSEMBLE_REALISATIONS), (
                 self.model_params, self.results["mesh_roughness"], self.options.steps, None, 1.0)
-            others = client.gather(client.map(mesh._ensemble_point, *[[a] * (count - 1) for a in point],
-                                              list(range(1, count)), pure=False)) if client is not None else \
-                [mesh._ensemble_point(*point, k) for k in self._tick(range(1, count), "roughness realisations")]
+            one = ensemble_point_and_cycle if keep else mesh._ensemble_point
+            others = client.gather(client.map(one, *[[a] * (count - 1) for a in point], list(range(1, count)),
+                                              pure=False)) if client is not None else \
+                [one(*point, k) for k in self._tick(range(1, count), "roughness realisations")]
+            if keep:
+                self.results["nominal_cycles"].update({k: cycle for k, (_, cycle) in enumerate(others, start=1)})
+                others = [s for s, _ in others]
             ensemble = mesh.ensemble_summary([first] + others)
             self.results["ensemble"] = ensemble
             summary.update({key: value for key, value in ensemble.items() if key != "summaries"})
@@ -496,25 +469,35 @@ class RunChain:
         self._figure(plot_energy(dataset, "bare silicon"), "mesh_bare_energy",
                      "Energy dissipated per step by chemical bonds, vdW bonds and elastic interlocking.")
 
+    def _uncertainty_reuses_the_ensemble(self) -> bool:
+        """Whether the uncertainty stage will run on the mesh stage's realisations (then the mesh stage keeps them)."""
+        return "uncertainty" in self.options.stages and self.options.uncertainty > 0
+
     def uncertainty(self):
         """What the verdict hangs on (MODEL 7d, docs/uncertainty.md): P(stiction) with its 95 % interval over roughness
-        realisations x the uncertain constants drawn from their priors, Sobol' indices and critical values."""
+        realisations x the uncertain constants drawn from their priors, the regional index of the verdict on those
+        samples and the dominant constant's critical value where it is rescaled (issue 40: tens of cycles; Sobol'
+        indices, end points and bands: ``memstribo mesh --uncertainty``)."""
         from memstribo.uncertainty.figures import plot_sensitivity, plot_stiction_curve
         from memstribo.uncertainty.study import uncertainty_study
 
         samples = self.options.uncertainty
         steps = self.options.steps
-        from memstribo.job.workers import RUN_DECISION
+        from memstribo.job.workers import RUN_CRITICAL, RUN_DECISION, RUN_SOLVE_SETS
 
         result = uncertainty_study(self.model_params, self.results["mesh_roughness"], samples=samples, steps=steps,
-                                   sobol_samples=8, sobol_steps=min(121, steps or 121), progress=self.progress,
-                                   client=self.workers.client(samples, "uncertainty"), decision=RUN_DECISION)
+                                   sensitivity="regional", progress=self.progress,
+                                   client=self.workers.client(samples, "uncertainty"), decision=RUN_DECISION,
+                                   critical=RUN_CRITICAL, nominal_cycles=self.results.get("nominal_cycles"),
+                                   solve_sets=RUN_SOLVE_SETS)
         self._json(result, "uncertainty")
         for stem, plot, caption in (
                 ("uncertainty_sensitivity", plot_sensitivity,
-                 "What the stiction verdict hangs on: Sobol' total indices of the stiction margin and of the mean COF "
-                 "(bars: 95 % bootstrap intervals; the dotted line at 0.1 marks the constants whose critical value is "
-                 "sought)."),
+                 "What the stiction verdict hangs on: the regional index of each factor, the Kolmogorov-Smirnov "
+                 "distance between its values in the samples that stick and in those that do not (bars: 95 % "
+                 "bootstrap intervals; ticks: the level noise alone reaches); where every sample gives the same "
+                 "verdict, the rank correlation of each factor with the margin. Sobol' indices of the margin at the "
+                 "verdict's steps: memstribo mesh --uncertainty 64."),
                 ("uncertainty_stiction_curve", plot_stiction_curve,
                  "P(stiction) over the roughness realisations against the dominant constant, the others at their "
                  "nominal values, with its 95 % interval; the critical value (median margin zero) is marked.")):
@@ -524,18 +507,30 @@ class RunChain:
                 self.figures.append(FigureRecord(stem, self._current.name, caption))
         self.summaries["uncertainty"] = uncertainty_summary(result)
 
+    def _sweep_points(self, what, values, stage) -> list[dict]:
+        """:func:`memstribo.simulations.mesh.sweep` at each of ``values``, one cycle each: on the run's cluster where
+        an earlier stage started it (issue 40), else here."""
+        from memstribo.simulations import mesh
+
+        roughness, n = self.results["mesh_roughness"], len(values)
+        client = self.workers.existing(stage) if n > 1 else None
+        if client is not None:
+            return [out[0] for out in client.gather(client.map(
+                mesh.sweep, [self.model_params] * n, [what] * n, [[v] for v in values], [roughness] * n,
+                steps=self.options.steps, pure=False))]
+        return [mesh.sweep(self.model_params, what, [v], roughness, steps=self.options.steps)[0]
+                for v in self._tick(values, stage)]
+
     def load_sweep(self):
         """COF and dissipated energy versus external load (4.9.3; thesis: COF ~0.9 at 25 uN to ~0.45 at 300 uN)."""
-        from memstribo.simulations import mesh
-        summaries = [mesh.sweep(self.model_params, "load", [load], self.results["mesh_roughness"], steps=self.options.steps)[0]
-                     for load in self._tick(self.options.loads, "load sweep")]
-        dataset = _sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
+        summaries = self._sweep_points("load", self.options.loads, "load sweep")
+        dataset = sweep_dataset("normal_load", self.options.loads, "N", "external load", summaries)
         self._dataset(dataset, "load_sweep")
-        self.summaries["load_sweep"] = _columns(dataset)
+        self.summaries["load_sweep"] = columns(dataset)
         self._figure(plot_sweep(dataset, "normal_load", "external load [µN]", 1e6, title="bare silicon"),
                      "load_sweep", "Time-mean COF and its split into chemical, van der Waals and elastic parts "
                      "(left), and the energy dissipated per meshing cycle (right) versus external load (thesis 4.9.3, "
-                     "Figures 4-48 and 4-49)." + _cof_above_one(dataset, "normal_load",
+                     "Figures 4-48 and 4-49)." + cof_above_one(dataset, "normal_load",
                                                                lambda v: format_quantity(v, "N")))
 
     def area_sweep(self):
@@ -544,17 +539,15 @@ class RunChain:
         As :func:`memstribo.simulations.mesh.sweep` (``"area"``): the face width is set to k w_adh, so that k rows of
         nanoblocks share the load.
         """
-        from memstribo.simulations import mesh
-        summaries = [mesh.sweep(self.model_params, "area", [k], self.results["mesh_roughness"], steps=self.options.steps)[0]
-                     for k in self._tick(self.options.areas, "area sweep")]
-        dataset = _sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
+        summaries = self._sweep_points("area", self.options.areas, "area sweep")
+        dataset = sweep_dataset("area_multiple", self.options.areas, "", "nominal area / A_adh", summaries)
         self._dataset(dataset, "area_sweep")
-        self.summaries["area_sweep"] = _columns(dataset)
+        self.summaries["area_sweep"] = columns(dataset)
         self._figure(plot_sweep(dataset, "area_multiple", "nominal area [A_adh]", title="bare silicon"),
                      "area_sweep", "Time-mean COF and its split into chemical, van der Waals and elastic parts "
                      "(left), and the energy dissipated per meshing cycle (right) versus nominal contact area (face "
                      "width = k w_adh; thesis 4.9.4, Figures 4-49 and 4-50)."
-                     + _cof_above_one(dataset, "area_multiple", lambda v: f"k = {v:g}"))
+                     + cof_above_one(dataset, "area_multiple", lambda v: f"k = {v:g}"))
 
     def coated(self):
         """The coated pair, fully functionalised (Omega = 0; thesis 5.4)."""
@@ -578,16 +571,18 @@ class RunChain:
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
         from memstribo.physics import coating
         from memstribo.simulations import coating_wear
+        known = {0.0: self.results["coated"]} if "coated" in self.results else None  # the coated stage's cycle
         dataset = coating_wear.wear_sweep(self.model_params, self.options.coating, list(self.options.wear),
-                                     roughness=self.results["mesh_roughness"], steps=self.options.steps)
+                                          roughness=self.results["mesh_roughness"], steps=self.options.steps,
+                                          known=known)
         self._dataset(dataset, "wear_sweep")
         self.results["wear_sweep"] = dataset
-        self.summaries["wear_sweep"] = {**_columns(dataset), "critical_wear": coating.critical_wear(dataset)}
+        self.summaries["wear_sweep"] = {**columns(dataset), "critical_wear": coating.critical_wear(dataset)}
         self._figure(plot_sweep(dataset, "wear", "worn fraction Omega [%]", 100.0, self._tangential_force(),
                                 title=self.options.coating), "wear_sweep",
                      "COF and its split (left), and the largest resisting force R over the cycle against F_t (right) "
                      "versus the worn fraction Omega of the gear's coating (thesis 5.5.3, Figure 5-28)."
-                     + _cof_above_one(dataset, "wear", lambda v: f"Omega = {v * 100:.0f} %"))
+                     + cof_above_one(dataset, "wear", lambda v: f"Omega = {v * 100:.0f} %"))
 
     def damage(self):
         """Damage per meshing cycle of the coating, relative lives, cycles until stiction returns (5.5)."""
@@ -809,8 +804,9 @@ class RunChain:
         if self.options.validation:
             from memstribo.job.report import validation_rows
 
-            log.info("validation table (every topic's rows, 1-3 min) ...")
-            validation = validation_rows()
+            recompute = self.options.validation == "recompute"
+            log.info("validation table (every topic's rows%s) ...", ", 1-3 min" if recompute else ", as shipped")
+            validation = validation_rows(recompute)
             log.info("validation table: done")
         return self._finish(time.perf_counter() - start, validation)
 

@@ -76,12 +76,38 @@ def verdict(summaries: Mapping[str, Any]) -> dict[str, Any]:
     return out
 
 
+def _regional_drivers(result) -> list[dict]:
+    """The constants whose regional index of the verdict is above its noise level (the run's ranking, issue 40)."""
+    from memstribo.parameters.definitions import SPECS
+
+    drivers = []
+    dominant = result.get("dominant_entry") or {}
+    for name, entry in (result.get("decision_sensitivity") or {}).items():
+        if entry["index"] is None or entry.get("noise_level") is None or entry["index"] <= entry["noise_level"]:
+            continue
+        note = ""
+        if name == result.get("dominant"):
+            critical = dominant.get("critical_value")
+            unit = SPECS[name].unit if name in SPECS else ""
+            note = (f"critical value {critical:.3g} {unit}".rstrip() if critical is not None
+                    else dominant.get("note", ""))
+        drivers.append({"name": name, "effect": f"regional index of the verdict {entry['index']:.2f} (noise "
+                                                f"{entry['noise_level']:.2f})", "note": note})
+    if not drivers:  # a unanimous verdict: what moves the margin
+        correlation = result.get("margin_correlation") or {}
+        drivers = [{"name": name, "effect": f"rank correlation with the margin {c['rho']:+.2f} (p {c['p_value']:.2g})",
+                    "note": dominant.get("note", "") if name == result.get("dominant") else ""}
+                   for name, c in sorted(correlation.items(), key=lambda kv: -abs(kv[1]["rho"]))
+                   if c["p_value"] < 0.05]
+    return drivers
+
+
 def uncertainty_summary(result) -> dict[str, Any]:
     """The uncertainty stage's summary: its numbers, and the texts of the report's box under the verdict."""
     from memstribo.parameters.definitions import SPECS
 
     q = result["margin_quantiles"]
-    drivers = []
+    drivers = _regional_drivers(result) if result.get("sensitivity_method") == "regional" else []
     for name, entry in result["sensitivity"].items():
         if entry["total"] < 0.05:
             continue

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import logging
 
-__all__ = ["PARALLEL_SAMPLES", "ENSEMBLE_REALISATIONS", "RUN_DECISION", "machine_cores", "stage_cluster", "StageWorkers"]
+__all__ = ["PARALLEL_SAMPLES", "ENSEMBLE_REALISATIONS", "RUN_DECISION", "RUN_CRITICAL", "RUN_SOLVE_SETS", "machine_cores", "stage_cluster", "StageWorkers",
+           "ensemble_point_and_cycle"]
 
 #: the uncertainty stage runs its cycles on a local Dask cluster of the machine's cores from this many samples on
 #: (fewer: the cluster's start-up, a few seconds, would cost more than it saves; issue 40 item 4)
@@ -14,9 +15,18 @@ PARALLEL_SAMPLES = 32
 #: the mesh stage's roughness realisations run on the cluster from this many on (issue 40 item 4)
 ENSEMBLE_REALISATIONS = 8
 
-#: the run's decision analysis (MODEL 7h): the robust-Bayes band of a constant that needs a contact solve re-draws
-#: it in the first 16 of the study's samples (the study's own default: 32), half the solves of its heaviest part
-RUN_DECISION = {"band_samples": 16}
+#: the run's decision analysis (MODEL 7h): the regional index on the stage's own samples only (issue 40: the end
+#: points, critical values and robust-Bayes bands of the constants that need contact solves were ~500 of the stage's
+#: ~570 cycles); ``memstribo mesh --uncertainty 64`` runs them all ("full")
+RUN_DECISION = {"depth": "regional"}
+
+#: the run's samples: the constants that need a contact solve take 2 values per realisation (of its 4 constant sets),
+#: the rescaled bond energies all 4: half the solves; the interval is Wilson's at the design effect's samples
+#: (``solve_sets`` of :func:`memstribo.uncertainty.study.uncertainty_study`)
+RUN_SOLVE_SETS = 2
+
+#: the run's critical values: those of the rescaled bond energies (no new cycle); the others: ``mesh --uncertainty``
+RUN_CRITICAL = "rescaled"
 
 
 def machine_cores() -> int:
@@ -70,8 +80,27 @@ class StageWorkers:
             self._client = Client(self.cluster, set_as_default=False)
         return self._client
 
+    def existing(self, stage: str):
+        """The run's cluster's client where an earlier stage started it, else None (a few cycles do not start one)."""
+        if self._client is not None:
+            logging.getLogger("memstribo.run").info("%s: the cycles run on the run's %d worker processes", stage,
+                                                    len(self._client.scheduler_info().get("workers", {})))
+        return self._client
+
     def close(self) -> None:
         if self._client is not None:
             self._client.close()
             self.cluster.close()
         self.cluster = self._client = None
+
+
+def ensemble_point_and_cycle(params, roughness, steps, coating, wear, realisation):
+    """(summary, reduced cycle) of one realisation of the run's mesh ensemble: the uncertainty stage takes the cycle
+    as its nominal realisation instead of solving it again (issue 40; the same function of the same inputs)."""
+    from memstribo.simulations.mesh import simulate_mesh, summarize
+    from memstribo.uncertainty.rescale import reduce_cycle
+
+    dataset = simulate_mesh(params, roughness, steps=steps, coating=coating, wear=wear, realisation=realisation)
+    summary = summarize(dataset)
+    summary.update(realisation=realisation, seed=[int(params["roughness_seed"]), int(realisation)])
+    return summary, reduce_cycle(dataset)

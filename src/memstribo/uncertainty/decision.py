@@ -33,7 +33,7 @@ from memstribo.references import cites
 
 __all__ = ["critical_value", "ks_distance", "regional_sensitivity", "moved_priors", "robust_bayes_band", "measurable",
            "clip_unit", "decision_analysis", "decision_options", "decision_sentence", "PRIOR_DOMINATED_SPAN",
-           "BAND_FACTOR", "REALISATION_FACTOR", "SOLVED_REALISATIONS"]
+           "BAND_FACTOR", "REALISATION_FACTOR", "SOLVED_REALISATIONS", "DEPTHS"]
 
 #: a robust-Bayes band of P(stiction) wider than this makes the verdict "prior-dominated" (MODEL 7h) [-]
 PRIOR_DOMINATED_SPAN = 0.3
@@ -41,6 +41,10 @@ PRIOR_DOMINATED_SPAN = 0.3
 BAND_FACTOR = 2.0
 #: name of the roughness realisation as a factor of the sensitivity analysis (aleatory, not a constant)
 REALISATION_FACTOR = "roughness_realisation"
+
+#: how far :func:`decision_analysis` goes: "full" (steps 1 to 3) or "regional" (step 1 only: no cycle beyond the
+#: study's own; the main job's default since issue 40, the end points and bands cost hundreds of cycles)
+DEPTHS = ("full", "regional")
 
 #: realisations of the median margin of a constant that needs a new contact solve per value (critical values and
 #: the end-point test of the decision); a rescaled bond energy uses every realisation
@@ -542,15 +546,16 @@ def decision_sentence(flipping, flipping_startup, sensitivity, bands, factor, pa
 
 
 def decision_options(options=None) -> dict:
-    """The options of :func:`decision_analysis` (``band_factor``, ``band_samples``, ``span``), checked, with defaults.
+    """The options of :func:`decision_analysis` (``band_factor``, ``band_samples``, ``span``, ``depth``), checked, with
+    defaults.
 
     Raises
     ------
     InputError
         An unknown option, ``band_factor`` not a number above 1, ``band_samples`` not a whole number >= 1, ``span``
-        not a fraction in (0, 1].
+        not a fraction in (0, 1], ``depth`` not one of :data:`DEPTHS`.
     """
-    out = {"band_factor": BAND_FACTOR, "band_samples": 32, "span": PRIOR_DOMINATED_SPAN}
+    out = {"band_factor": BAND_FACTOR, "band_samples": 32, "span": PRIOR_DOMINATED_SPAN, "depth": "full"}
     options = dict(options or {})
     unknown = sorted(set(options) - set(out))
     if unknown:
@@ -567,6 +572,9 @@ def decision_options(options=None) -> dict:
     samples = out["band_samples"]
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
         raise InputError(f"band_samples must be a whole number >= 1, got {samples!r}.")
+    if out["depth"] not in DEPTHS:
+        raise InputError(f"depth (how far the decision's sensitivity goes) must be one of {', '.join(DEPTHS)}, "
+                         f"got {out['depth']!r}.")
     if not number(out["span"]) or not 0.0 < out["span"] <= 1.0:
         raise InputError(f"span (a band wider than it is prior-dominated) is a fraction in (0, 1], "
                          f"got {out['span']!r}.")
@@ -625,10 +633,28 @@ def _band(runner, name, prior, points, summaries, entry, sensitivity, result, co
     return band
 
 
+def _regional_only(result, decision) -> dict:
+    """:func:`decision_analysis` at ``depth="regional"``: the regional index of every factor, nothing else checked."""
+    ranked = sorted(decision, key=lambda n: -(decision[n]["index"] if decision[n]["index"] is not None else -1))
+    above = [n for n in ranked if decision[n]["index"] is not None and decision[n].get("noise_level") is not None
+             and decision[n]["index"] > decision[n]["noise_level"]]
+    result.update({
+        "decision_sensitivity": {n: decision[n] for n in ranked},
+        "flipping_constants": None, "flipping_constants_startup": None, "robust_bayes": None,
+        "prior_dominated": None, "prior_dominated_constants": None,
+        "decision_sentence": ("The samples that stick differ from those that do not most in "
+                              + (", ".join(above[:3]) if above else "no factor beyond noise")
+                              + " (regional sensitivity); whether a constant alone flips the verdict at the end of its "
+                              "prior, and how much of P(stiction) is the prior's (robust-Bayes band), is not checked "
+                              "here: `memstribo mesh --uncertainty 64` does (hundreds of cycles)."),
+    })
+    return result
+
+
 @cites("model", "spear_hornberger_1980", "berger_1994")
 def decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence, *,
                       threshold=0.1, band_factor=BAND_FACTOR, band_samples=32, span=PRIOR_DOMINATED_SPAN,
-                      resamples=500, critical=True) -> dict:
+                      resamples=500, critical=True, depth="full") -> dict:
     """The sensitivity of the decision into ``result`` (MODEL 7h; called by the uncertainty study).
 
     1. Regional sensitivity of the verdict (:func:`regional_sensitivity`) on the samples the study has: its own
@@ -644,7 +670,11 @@ def decision_analysis(result, params, runner, sampled, nominal, points, summarie
        quantile (a rescaled bond energy: every sample, by rescaling; a constant that needs a contact solve: the
        first ``band_samples``).
 
-    Returns ``result`` with ``decision_sensitivity``, ``decision_design``, ``flipping_constants``,
+    ``depth="regional"`` stops after step 1 (no cycle beyond the study's): ``flipping_constants``,
+    ``robust_bayes`` and ``prior_dominated`` are then None (not checked, which is not "none flips"), and the
+    sentence says which command checks them.
+
+    Returns ``result`` with ``decision_depth``, ``decision_sensitivity``, ``decision_design``, ``flipping_constants``,
     ``flipping_constants_startup``, ``robust_bayes``, ``prior_dominated``, ``prior_dominated_constants`` and
     ``decision_sentence``.
     """
@@ -652,6 +682,9 @@ def decision_analysis(result, params, runner, sampled, nominal, points, summarie
     sensitivity = result.get("sensitivity") or {}
     startup = "startup_margin_quantiles" in result
     decision = _regional(result, names, points, summaries, rows, seed, confidence, resamples)
+    result["decision_depth"] = depth
+    if depth == "regional":
+        return _regional_only(result, decision)
     for name in names:  # 2. each constant alone at the ends of its prior
         ends = _end_points(runner, name, sampled[name], nominal, R, confidence, startup)
         decision[name].update(ends)

@@ -11,7 +11,8 @@ __all__ = ["plot_sensitivity", "plot_stiction_curve", "write_figures"]
 
 
 def plot_sensitivity(result, folder: str | Path, stem: str = "uncertainty_sensitivity", top: int = 12) -> list[Path]:
-    """Ranked bar chart of the total Sobol' indices of the margin (and of the mean COF), with their intervals.
+    """Ranked bar chart of the total Sobol' indices of the margin (and of the mean COF), with their intervals; a
+    study without them (``sensitivity="regional"``): the regional index of the verdict per factor.
 
     Parameters
     ----------
@@ -33,7 +34,7 @@ def plot_sensitivity(result, folder: str | Path, stem: str = "uncertainty_sensit
 
     sensitivity = result.get("sensitivity") or {}
     if not sensitivity:
-        return []
+        return _plot_regional(result, folder, stem, top)
     names = list(sensitivity)[:top][::-1]  # ranked, largest on top
     y = np.arange(len(names))
     figure, ax = new_figure(figsize=(6.4, 0.45 * len(names) + 1.4))
@@ -52,6 +53,57 @@ def plot_sensitivity(result, folder: str | Path, stem: str = "uncertainty_sensit
     ax.set_xlim(left=min(0.0, ax.get_xlim()[0]))
     ax.set_title("What the stiction verdict hangs on", fontsize=10)
     ax.legend(fontsize=7, loc="lower right")
+    return save_figure(figure, folder, stem)
+
+
+def _plot_regional(result, folder, stem, top) -> list[Path]:
+    """The regional index of the verdict per factor with its interval and noise level (a study without Sobol'
+    indices, ``sensitivity="regional"``); none without it."""
+    import numpy as np
+
+    from memstribo.output import new_figure, save_figure
+
+    regional = {n: e for n, e in (result.get("decision_sensitivity") or {}).items() if e.get("index") is not None}
+    if not regional:
+        return _plot_correlation(result, folder, stem, top)
+    names = list(regional)[:top][::-1]
+    y = np.arange(len(names))
+    values = np.array([regional[n]["index"] for n in names])
+    ci = np.array([regional[n]["index_ci"] for n in names])
+    noise = np.array([regional[n]["noise_level"] for n in names])
+    figure, ax = new_figure(figsize=(6.4, 0.4 * len(names) + 1.4))
+    ax.barh(y, values, height=0.6, color="C3", xerr=np.abs(np.stack([values - ci[:, 0], ci[:, 1] - values])),
+            error_kw={"lw": 0.8, "capsize": 2}, label="regional index (KS distance, stuck vs free)")
+    ax.plot(noise, y, "k|", ms=10, label="noise level (permutation, 95 %)")
+    ax.set_yticks(y)
+    ax.set_yticklabels(names, fontsize=8)
+    ax.set_xlim(0.0, 1.0)
+    ax.set_xlabel("regional index of the stiction verdict [-] (bars: 95 % bootstrap interval)")
+    ax.set_title("What separates the samples that stick from those that do not", fontsize=10)
+    ax.legend(fontsize=7, loc="lower right")
+    return save_figure(figure, folder, stem)
+
+
+def _plot_correlation(result, folder, stem, top) -> list[Path]:
+    """Spearman's rank correlation of the margin with each factor (a unanimous verdict: no regional index)."""
+    import numpy as np
+
+    from memstribo.output import new_figure, save_figure
+
+    correlation = result.get("margin_correlation") or {}
+    if not correlation:
+        return []
+    names = sorted(correlation, key=lambda n: -abs(correlation[n]["rho"]))[:top][::-1]
+    y = np.arange(len(names))
+    rho = np.array([correlation[n]["rho"] for n in names])
+    figure, ax = new_figure(figsize=(6.4, 0.4 * len(names) + 1.4))
+    ax.barh(y, rho, height=0.6, color=["C3" if correlation[n]["p_value"] < 0.05 else "0.7" for n in names])
+    ax.axvline(0.0, color="k", lw=0.6)
+    ax.set_yticks(y)
+    ax.set_yticklabels(names, fontsize=8)
+    ax.set_xlim(-1.0, 1.0)
+    ax.set_xlabel("Spearman rank correlation with the stiction margin [-] (red: p < 0.05)")
+    ax.set_title("Every sample gives the same verdict: what moves the margin", fontsize=10)
     return save_figure(figure, folder, stem)
 
 

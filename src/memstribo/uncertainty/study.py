@@ -104,6 +104,13 @@ class _Runner:
     def _params(self, solved):
         return self.params.updated(solved, origin="uncertainty sample") if solved else self.params
 
+    def adopt(self, cycles, realisations) -> int:
+        """Take ``cycles`` {realisation: reduced cycle at the nominal constants} as solved; returns how many."""
+        taken = [r for r in (cycles or {}) if 0 <= int(r) < realisations]
+        for r in taken:
+            self.cache[self._key(r, {})] = cycles[r]
+        return len(taken)
+
     def summaries(self, points) -> list[dict]:
         """Summaries of ``points`` [(realisation, {constant: value})]; a failed point: {"failed": True, "error"}."""
         from memstribo.uncertainty.rescale import rescale_cycles
@@ -272,6 +279,9 @@ def designer_sentence(name, entry, prior, nominal) -> str:
     unit = f" {unit}" if unit else ""
     measure = f"; measure {prior.measure}" if prior.measure else ""
     value = entry.get("critical_value")
+    if value is None and entry.get("searched") is False:
+        return (f"The margin hangs most on {name} (prior {prior.low:.3g}–{prior.high:.3g}{unit}, nominal "
+                f"{nominal:.3g}{unit}); its critical value was not searched ({entry.get('note', '')}){measure}.")
     if value is None:
         return (f"The verdict does not flip within the prior of {name} ({prior.low:.3g}–{prior.high:.3g}{unit}), "
                 f"its most influential constant{measure}.")
@@ -347,10 +357,14 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
 
 
 def _check_inputs(samples, realisations, n_steps, budget, solve_sets, confidence, threshold, decision,
-                  sobol_samples=None) -> dict:
+                  sobol_samples=None, critical=True, sensitivity=True) -> dict:
     """Refuse bad inputs of :func:`uncertainty_study` before any cycle; returns the decision's options."""
     _check_samples(samples, realisations, n_steps, budget, solve_sets)
     check_sobol_samples(sobol_samples)
+    if sensitivity not in (True, False, "regional"):
+        raise InputError(f"sensitivity must be True, False or 'regional' (no Sobol' design), got {sensitivity!r}.")
+    if critical not in (True, False, "rescaled"):
+        raise InputError(f"critical must be True, False or 'rescaled' (the bond energies' only), got {critical!r}.")
     _check_levels(confidence, threshold)
     return decision_options(decision)
 
@@ -371,7 +385,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
                       wear=1.0, client=None, progress=False, seed=0, fixed=(), sensitivity=True,
                       sobol_samples=None, sobol_steps=None, critical=True, budget=DEFAULT_BUDGET, confidence=0.95,
                       threshold=0.1, curve_points=9, priors=None, solve_sets=None, decision=None,
-                      keep_samples=False) -> dict:
+                      keep_samples=False, nominal_cycles=None) -> dict:
     """P(stiction) over roughness realisations x uncertain constants, what it hangs on, and where it flips.
 
     Parameters
@@ -384,23 +398,23 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         Realisations x constant sets [-]; ``"auto"`` doubles the constant sets (from 16 per realisation set) until
         the interval's half-width is below 0.05 or ``budget`` samples.
     realisations, coating
-        Roughness realisations per constant set [-] (default ``min(16, samples)``); the teeth's coating (a str or a
-        Coating; its fitted constants are sampled too).
+        Realisations per constant set [-] (default ``min(16, samples)``); the coating (its constants are sampled).
     client : distributed.Client or a dask cluster, optional
         Run the cycles on its workers (:func:`memstribo.simulations.study.local_cluster`).
     seed, fixed
-        Seed of the designs (the roughness realisations have their own seeds); constants kept at their nominal value
-        (each must have a prior).
-    sensitivity : bool
-        Sobol' indices, critical values of the influential constants, the decision's sensitivity.
+        Seed of the designs (not of the roughness); constants kept at their nominal value (each with a prior).
+    sensitivity : bool or "regional"
+        Sobol' indices, critical values, the decision's sensitivity; ``"regional"``: no Sobol' design (:func:`_screen`).
     sobol_samples : int, optional
-        Base samples N of Saltelli's design (a power of two; default 32): N (D + 3) cycles or rescalings for D
-        constants and the realisation.
+        Base samples N of Saltelli's design (a power of two; default 32): N (D + 3) rows for D constants.
     sobol_steps : int, optional
         Steps of the cycles of the Sobol' design (default ``steps``); a coarser cycle ranks the constants at lower
         cost (the probabilities and critical values keep ``steps``).
-    critical : bool
-        Critical values of the constants whose total index of the margin exceeds ``threshold`` [-] or that flip.
+    critical : bool or "rescaled"
+        Critical values of the constants whose total index of the margin exceeds ``threshold`` [-] or that flip
+        (``"rescaled"``: the rescaled bond energies' only, no new cycle; the main job's, issue 40).
+    nominal_cycles : Mapping[int, xarray.Dataset], optional
+        Realisation -> its reduced cycle at the nominal constants, solved with these inputs (the run's ensemble).
     confidence, curve_points
         Level of the intervals, in (0, 1) [-]; values of the dominant constant for the curve P(stiction) against it.
     priors : Mapping[str, Prior], optional
@@ -411,7 +425,7 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         samples of a group share their contact solution and are correlated: the interval is Wilson's at
         ``samples / design_effect`` samples (:func:`_probability`).
     decision : Mapping, optional
-        ``band_factor``, ``band_samples``, ``span`` of :func:`memstribo.uncertainty.decision.decision_analysis`.
+        Options of :func:`memstribo.uncertainty.decision.decision_analysis` (:func:`.decision_options`).
     keep_samples : bool
         Also return ``sample_points`` and ``sample_summaries`` (for :mod:`memstribo.laboratory.posterior`).
 
@@ -427,38 +441,38 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         ``dominant``, ``critical_curve``, ``designer_sentence``, ``priors``, ``sampled_constants``,
         ``fixed_constants``, ``unconverged_samples``, ``failed_samples``, ``solves``, ``rescalings``,
         ``design_effect`` and ``effective_samples`` [-] (samples that share a contact solve: :func:`_probability`),
-        ``solve_seconds`` and ``rescale_seconds`` [s] (the solves' and rescalings' wall time, the Sobol' rows and
-        critical values included), ``contact_rows_reused`` (rows' contact solves taken from an earlier solve with
-        the same inputs, :mod:`memstribo.simulations.mesh.solve_cache`), ``workers`` (processes the cycles ran on),
-        ``elapsed`` [s], ``warnings``; with ``sensitivity``: ``sobol_design`` and
+        ``solve_seconds``, ``rescale_seconds``, ``elapsed`` [s], ``contact_rows_reused`` (:mod:`.solve_cache`),
+        ``nominal_cycles_reused``, ``workers``, ``warnings``; with ``sensitivity``: ``sobol_design`` and
         :func:`memstribo.uncertainty.decision.decision_analysis`'s keys.
 
     Raises
     ------
     InputError
-        Bad sample counts, a fixed constant without a prior or named twice, a sample count above the memory
-        estimate, bad priors, ``confidence`` outside (0, 1), ``threshold`` outside [0, 1], bad ``decision`` options.
+        Bad sample counts, fixed constants, priors, ``confidence``, ``threshold``, ``critical`` or ``decision``
+        options; a sample count above the memory estimate.
     """
     start = time.perf_counter()
     coating_name, priors, fixed_names, sampled, realisations = _what_is_sampled(params, priors, coating, wear, fixed,
                                                                                realisations, samples)
     decision = _check_inputs(samples, realisations, int(params["mesh_steps"] if steps is None else steps), budget,
-                             solve_sets, confidence, threshold, decision, sobol_samples)
+                             solve_sets, confidence, threshold, decision, sobol_samples, critical, sensitivity)
     client, own_client = _client_of(client)
     result = None
     try:
         runner = _Runner(params, roughness, steps, coating_name, wear, client, progress)
         R = int(realisations)
+        reused = runner.adopt(nominal_cycles, R)  # solved already (the run's mesh ensemble)
         nominal = runner.summaries([(r, {}) for r in range(R)])
         sets_count, points, summaries = _sample(runner, sampled, R, samples, solve_sets, seed, confidence, budget)
         result = _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, sampled, fixed_names)
         result.update({"sample_points": points, "sample_summaries": summaries} if keep_samples else {})
         runners = [runner]
-        if sensitivity and sampled:  # the margin's (Sobol'), then the decision's (MODEL 7h)
+        if sensitivity and sampled:  # the margin's (Sobol'), then the decision's (MODEL 7h); or the regional only
             runners.append(_analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence,
                                     (roughness, steps, coating_name, wear, client, progress), sobol_samples or 32,
-                                    sobol_steps, critical, threshold, curve_points, decision))
+                                    sobol_steps, critical, threshold, curve_points, decision, sensitivity))
         result["warnings"] = _warnings(result)
+        result["nominal_cycles_reused"] = reused
         _count(result, runners)
         result["elapsed"] = time.perf_counter() - start
         return result
@@ -469,10 +483,14 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
 
 
 def _analyse(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence, cycle, sobol_samples,
-             sobol_steps, critical, threshold, curve_points, decision):
+             sobol_steps, critical, threshold, curve_points, decision, sensitivity=True):
     """Sobol' indices of the margin (:func:`_sensitivity`), then the sensitivity of the decision
     (:func:`memstribo.uncertainty.decision.decision_analysis`), into ``result``; returns the Sobol' rows' runner.
-    ``cycle``: (roughness, steps, coating_name, wear, client, progress)."""
+    ``cycle``: (roughness, steps, coating_name, wear, client, progress). ``sensitivity="regional"``: :func:`_screen`."""
+    if sensitivity == "regional":  # the decision's on the samples only (the main job's)
+        _screen(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence, cycle[2], critical,
+                threshold, curve_points, decision)
+        return runner
     sobol_runner, rows = _sensitivity(result, params, runner, sampled, R, seed, confidence, *cycle, sobol_samples,
                                       sobol_steps, critical, threshold, curve_points)
     decision_analysis(result, params, runner, sampled, nominal, points, summaries, rows, R, seed, confidence,
@@ -665,45 +683,109 @@ def _sensitivity(result, params, runner, sampled, R, seed, confidence, roughness
         return sobol_runner, rows
     dominant = constants_ranked[0]
     result["dominant"] = dominant
-
-    def margin_function(name, key="stiction_margin"):
-        return _margin_function(runner, name, R, key)
-
     for name in constants_ranked:
         entry = sensitivity[name]
+        entry["searched"] = False
         if not critical or entry["total"] <= threshold:
             entry["note"] = entry["note"] or (f"total index {entry['total']:.2g} <= {threshold:g}: not searched"
                                               if critical else "not searched")
             continue
-        function, reals = margin_function(name)
+        _search_critical(result, runner, sampled, name, entry, R, critical, f"total index {entry['total']:.2g}")
+    _dominant_outputs(result, params, runner, sampled, dominant, sensitivity[dominant], R, coating_name,
+                      curve_points)
+    return sobol_runner, rows
+
+
+def _search_critical(result, runner, sampled, name, entry, R, critical, why) -> None:
+    """The critical value of ``name`` (and of its start-up margin) into ``entry``; with ``critical="rescaled"`` only
+    where ``name`` is rescaled (no new cycle), else a note saying where it is searched."""
+    if critical == "rescaled" and name not in runner.rescalable():
+        entry["note"] = (f"{why}; not searched here (each value needs new contact solves: `memstribo mesh "
+                         "--uncertainty 64` searches it)")
+        return
+    entry["searched"] = True
+    function, reals = _margin_function(runner, name, R)
+    found = critical_value(function, sampled[name])
+    entry["critical_value"] = found["critical_value"]
+    entry["stiction_above"] = found["stiction_above"]
+    entry["note"] = found["note"] + f" (median over {reals} realisations, others nominal)"
+    if "startup_margin_quantiles" in result:  # where the median start-up margin crosses zero (MODEL 7f)
+        function, _ = _margin_function(runner, name, R, "startup_margin")
         found = critical_value(function, sampled[name])
-        entry["critical_value"] = found["critical_value"]
-        entry["stiction_above"] = found["stiction_above"]
-        entry["note"] = found["note"] + f" (median over {reals} realisations, others nominal)"
-        if "startup_margin_quantiles" in result:  # where the median start-up margin crosses zero (MODEL 7f)
-            function, _ = margin_function(name, "startup_margin")
-            found = critical_value(function, sampled[name])
-            entry["startup_critical_value"] = found["critical_value"]
-            entry["startup_stiction_above"] = found["stiction_above"]
-            entry["startup_note"] = found["note"]  # e.g. no crossing inside the prior
+        entry["startup_critical_value"] = found["critical_value"]
+        entry["startup_stiction_above"] = found["stiction_above"]
+        entry["startup_note"] = found["note"]  # e.g. no crossing inside the prior
+
+
+def _dominant_outputs(result, params, runner, sampled, dominant, entry, R, coating_name, curve_points) -> None:
+    """The designer's sentence on the dominant constant and the curve P(stiction) against it (the others nominal,
+    over the realisations; left out where it would need new solves and its critical value was not searched)."""
     nominal_value = float(params[dominant]) if dominant in params and params[dominant] is not None else \
         _coating_nominal(dominant, coating_name)
-    result["designer_sentence"] = designer_sentence(dominant, sensitivity[dominant], sampled[dominant], nominal_value)
-    # P(stiction) at nominal constants but the dominant one, over the realisations (the figure's curve)
+    result["designer_sentence"] = designer_sentence(dominant, entry, sampled[dominant], nominal_value)
+    if entry.get("searched") is False and dominant not in runner.rescalable():
+        return
     prior = sampled[dominant]
     values = sorted(set([float(v) for v in prior.ppf(np.linspace(0.0, 1.0, max(2, int(curve_points))))]
-                        + ([sensitivity[dominant]["critical_value"]] if sensitivity[dominant]["critical_value"]
-                           else [])))
+                        + ([entry["critical_value"]] if entry.get("critical_value") else [])))
     reals = R if dominant in runner.rescalable() else min(R, SOLVED_REALISATIONS)
     curve = {"name": dominant, "values": values, "probability": [], "ci_low": [], "ci_high": [], "realisations": reals,
-             "critical_value": sensitivity[dominant]["critical_value"], "nominal": nominal_value}
+             "critical_value": entry.get("critical_value"), "nominal": nominal_value}
     for x in values:
         p = _probability(runner.summaries([(r, {dominant: x}) for r in range(reals)]), result["confidence"])
         curve["probability"].append(p["probability"])
         curve["ci_low"].append(p["ci"][0])
         curve["ci_high"].append(p["ci"][1])
     result["critical_curve"] = curve
-    return sobol_runner, rows
+
+
+def _margin_correlation(sampled, points, summaries) -> dict:
+    """Spearman's rank correlation of the stiction margin with each factor over the study's samples, with its p-value
+    ({factor: {"rho", "p_value"}}, [-]; a factor that does not vary: rho 0, p 1)."""
+    from scipy.stats import spearmanr
+
+    keep = [i for i, s in enumerate(summaries) if not s.get("failed") and s.get("stiction_margin") is not None]
+    margin = np.array([summaries[i]["stiction_margin"] for i in keep], dtype=float)
+    columns = {name: np.array([points[i][1][name] for i in keep], dtype=float) for name in sampled}
+    columns[REALISATION_FACTOR] = np.array([points[i][0] for i in keep], dtype=float)
+    out = {}
+    for name, x in columns.items():
+        if len(keep) < 3 or np.ptp(x) == 0 or np.ptp(margin) == 0:
+            out[name] = {"rho": 0.0, "p_value": 1.0}
+            continue
+        rho, p_value = spearmanr(x, margin)
+        out[name] = {"rho": float(rho), "p_value": float(p_value)}
+    return out
+
+
+def _screen(result, params, runner, sampled, nominal, points, summaries, R, seed, confidence, coating_name, critical,
+            threshold, curve_points, decision) -> None:
+    """``sensitivity="regional"`` (the main job's, issue 40): no Sobol' design; the regional index of the verdict on
+    the study's own samples ranks the constants (:func:`memstribo.uncertainty.decision.decision_analysis` at depth
+    "regional"), the first above its noise level is the dominant one, with its critical value where ``critical``
+    allows it."""
+    decision_analysis(result, params, runner, sampled, nominal, points, summaries, None, R, seed, confidence,
+                      threshold=threshold, critical=critical, **{**decision, "depth": "regional"})
+    regional = result["decision_sensitivity"]
+    ranked = [n for n, e in regional.items() if n != REALISATION_FACTOR and e["index"] is not None
+              and e.get("noise_level") is not None and e["index"] > e["noise_level"]]
+    result["sensitivity_method"] = "regional"
+    result["margin_correlation"] = correlation = _margin_correlation(sampled, points, summaries)
+    why = "regional index {:.2g}"
+    if not ranked:  # a unanimous verdict: no factor separates stuck from free; the margin's rank correlation ranks
+        ranked = [n for n in sorted(correlation, key=lambda n: -abs(correlation[n]["rho"]))
+                  if n != REALISATION_FACTOR and correlation[n]["p_value"] < 0.05]
+        why = "rank correlation with the margin {:+.2g}"
+    if not ranked:
+        return
+    dominant = ranked[0]
+    result["dominant"] = dominant
+    score = regional[dominant]["index"] if why.startswith("regional") else correlation[dominant]["rho"]
+    entry = {"searched": False, "critical_value": None, "note": "", "ranked_by": why.format(score)}
+    if critical:
+        _search_critical(result, runner, sampled, dominant, entry, R, critical, why.format(score))
+    result["dominant_entry"] = entry
+    _dominant_outputs(result, params, runner, sampled, dominant, entry, R, coating_name, curve_points)
 
 
 def _coating_nominal(name, coating_name):
