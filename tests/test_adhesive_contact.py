@@ -538,7 +538,9 @@ def _former_zone_updates(monkeypatch):
     _tune(monkeypatch, linear_response_start=False)
 
 
-@pytest.mark.parametrize("exponent, rms, pressure", [(12, 1.4e-9, 0.0025), (13, 2e-9, 0.0025), (14, 2e-9, 0.001)])
+@pytest.mark.parametrize("exponent, rms, pressure", [
+    pytest.param(12, 1.4e-9, 0.0025, marks=pytest.mark.slow),  # the former path's 80 s (issue 40: CI <= 8 min)
+    (13, 2e-9, 0.0025), (14, 2e-9, 0.001)])
 def test_warm_started_zone_updates_reach_the_former_state(monkeypatch, exponent, rms, pressure):
     """Rough profiles, 2^12-2^14 points: the faster inner solves (docs/contact.md, "Adhesive contact", "Speed") give
     the state of the former ones to the zone's tolerance, and the state keeps the invariants of the Dugdale law."""

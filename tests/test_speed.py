@@ -69,7 +69,11 @@ def test_the_study_with_kept_solves_equals_the_study_without(params, monkeypatch
     from memstribo.simulations.mesh import solve_cache
     from memstribo.uncertainty.study import uncertainty_study
 
-    kwargs = dict(samples=4, realisations=2, steps=11, sobol_samples=2, curve_points=2)
+    from memstribo.uncertainty.priors import priors_for
+
+    # a block constant (its rows' solves are kept), a contact constant (solved anew) and a rescaled one
+    fixed = [n for n in priors_for(params) if n not in ("atomic_width", "hamaker_constant", "bond_energy")]
+    kwargs = dict(samples=4, realisations=2, steps=11, sobol_samples=2, curve_points=2, fixed=fixed)
     kept = uncertainty_study(params, **kwargs)
     monkeypatch.setattr(solve_cache, "keep_solves", lambda *a, **k: None)
     plain = uncertainty_study(params, **kwargs)
