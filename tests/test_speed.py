@@ -174,3 +174,23 @@ def test_the_runs_uncertainty_stage_reuses_the_mesh_ensemble_and_ranks_on_its_sa
     assert a["sensitivity_method"] == "regional" and "sobol_design" not in a
     assert a["decision_depth"] == "regional" and a["robust_bayes"] is None
     assert "memstribo mesh --uncertainty" in a["decision_sentence"]
+
+
+def test_the_runs_sweeps_on_the_cluster_equal_the_sweeps_in_this_process(params, tmp_path, monkeypatch):
+    """Issue 40: once the mesh ensemble has started the run's cluster, the load, area and wear sweeps run their
+    cycles on it: the same numbers as in this process."""
+    import memstribo.job.workers as workers
+    from memstribo.job.chain import RunChain
+    from memstribo.job.options import options_for_test
+
+    options = options_for_test(stages=("roughness", "geometry", "gear", "mesh", "load_sweep", "area_sweep", "coated",
+                                       "wear_sweep"), realisations=workers.ENSEMBLE_REALISATIONS, wear=(0.0, 0.5, 1.0))
+    monkeypatch.setattr(workers, "machine_cores", lambda: 2)
+    shared = RunChain(params, tmp_path / "two", options).run()
+    monkeypatch.setattr(workers, "machine_cores", lambda: 1)
+    alone = RunChain(params, tmp_path / "one", options).run()
+    assert shared.ok and alone.ok
+    for name in ("load_sweep", "area_sweep", "wear_sweep"):
+        a, b = ([line for line in (tmp_path / run / "data" / f"{name}.csv").read_text().splitlines()
+                 if not line.startswith("#")] for run in ("two", "one"))  # the header has its time of writing
+        assert a == b and len(a) > 2, name

@@ -46,7 +46,7 @@ from memstribo.job.figures import (plot_block_loads, plot_cycle, plot_energy, pl
                                    plot_map, plot_profiles, plot_sliding, plot_sweep)
 from memstribo.job.verdict import uncertainty_summary, verdict  # noqa: F401  (verdict: re-exported)
 from memstribo.job.sweeps import columns, cof_above_one, sweep_dataset
-from memstribo.job.workers import StageWorkers, ensemble_point_and_cycle
+from memstribo.job.workers import StageWorkers, coated_cycle, ensemble_point_and_cycle
 from memstribo.job.options import (DEPENDS, MAP_STAGE, RELOADED, STAGES, USES, FigureRecord, RunOptions, RunResult,
                                    StageRecord)
 
@@ -571,7 +571,14 @@ class RunChain:
         """COF and friction versus the worn fraction Omega of the gear's coating (5.5.3)."""
         from memstribo.physics import coating
         from memstribo.simulations import coating_wear
-        known = {0.0: self.results["coated"]} if "coated" in self.results else None  # the coated stage's cycle
+        known = {0.0: self.results["coated"]} if "coated" in self.results else {}  # the coated stage's cycle
+        todo = [float(w) for w in self.options.wear if float(w) not in known]
+        client = self.workers.existing("wear sweep") if len(todo) > 1 else None
+        if client is not None:  # the other wear states on the run's cluster (the same cycles, issue 40)
+            n = len(todo)
+            known.update(zip(todo, client.gather(client.map(
+                coated_cycle, [self.model_params] * n, [self.options.coating] * n, [self.results["mesh_roughness"]] * n,
+                [self.options.steps] * n, todo, pure=False))))
         dataset = coating_wear.wear_sweep(self.model_params, self.options.coating, list(self.options.wear),
                                           roughness=self.results["mesh_roughness"], steps=self.options.steps,
                                           known=known)

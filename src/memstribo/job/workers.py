@@ -6,7 +6,7 @@ from __future__ import annotations
 import logging
 
 __all__ = ["PARALLEL_SAMPLES", "ENSEMBLE_REALISATIONS", "RUN_DECISION", "RUN_CRITICAL", "RUN_SOLVE_SETS", "machine_cores", "stage_cluster", "StageWorkers",
-           "ensemble_point_and_cycle"]
+           "ensemble_point_and_cycle", "coated_cycle"]
 
 #: the uncertainty stage runs its cycles on a local Dask cluster of the machine's cores from this many samples on
 #: (fewer: the cluster's start-up, a few seconds, would cost more than it saves; issue 40 item 4)
@@ -104,3 +104,12 @@ def ensemble_point_and_cycle(params, roughness, steps, coating, wear, realisatio
     summary = summarize(dataset)
     summary.update(realisation=realisation, seed=[int(params["roughness_seed"]), int(realisation)])
     return summary, reduce_cycle(dataset)
+
+
+def coated_cycle(params, coating_name, roughness, steps, wear):
+    """One cycle of the run's wear sweep (the coating by name, worn fraction ``wear``), as
+    :func:`memstribo.simulations.coating_wear.wear_sweep` computes it: run on the run's cluster (issue 40)."""
+    from memstribo.physics.coating import get_coating
+    from memstribo.simulations.mesh import simulate_mesh
+
+    return simulate_mesh(params, roughness, steps=steps, coating=get_coating(coating_name, params), wear=float(wear))
