@@ -426,28 +426,27 @@ class RunChain:
     def mesh(self):
         """The bare-silicon meshing cycle (thesis 4.9, MODEL 7b): forces, COF and its split, energies, the
         stiction verdict over an ensemble of roughness realisations and its step convergence."""
+        from memstribo.job.workers import ENSEMBLE_REALISATIONS
         from memstribo.simulations import mesh
+        count, keep = self.options.realisations, self._uncertainty_reuses_the_ensemble()
+        one = ensemble_point_and_cycle if keep else mesh._ensemble_point
+        point = (self.model_params, self.results["mesh_roughness"], self.options.steps, None, 1.0)
+        client = self.workers.client(count - 1, "mesh ensemble", ENSEMBLE_REALISATIONS) if count > 1 else None
+        futures = client.map(one, *[[a] * (count - 1) for a in point], list(range(1, count)), pure=False) \
+            if client is not None else None  # the other realisations on the cluster while this one runs here
         dataset = self._simulate(self.model_params)
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
         summary = cycle_summary(dataset)
         summary.update(mesh.run_check(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
                                       baseline=summary, dataset=dataset))  # 2x the steps, 2x the grid (MODEL 7d)
-        count = self.options.realisations
-        keep = self._uncertainty_reuses_the_ensemble()
         if keep:  # the uncertainty stage's nominal realisations are these cycles (issue 40)
             from memstribo.uncertainty.rescale import reduce_cycle
 
             self.results["nominal_cycles"] = {0: reduce_cycle(dataset)}
         if count > 1:
             first = dict(summary, realisation=0, seed=[int(self.model_params["roughness_seed"]), 0])
-            from memstribo.job.workers import ENSEMBLE_REALISATIONS
-
-            client, point = self.workers.client(count - 1, "mesh ensemble", ENSEMBLE_REALISATIONS), (
-                self.model_params, self.results["mesh_roughness"], self.options.steps, None, 1.0)
-            one = ensemble_point_and_cycle if keep else mesh._ensemble_point
-            others = client.gather(client.map(one, *[[a] * (count - 1) for a in point], list(range(1, count)),
-                                              pure=False)) if client is not None else \
+            others = client.gather(futures) if futures is not None else \
                 [one(*point, k) for k in self._tick(range(1, count), "roughness realisations")]
             if keep:
                 self.results["nominal_cycles"].update({k: cycle for k, (_, cycle) in enumerate(others, start=1)})
