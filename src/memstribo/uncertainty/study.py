@@ -281,7 +281,8 @@ def designer_sentence(name, entry, prior, nominal) -> str:
     value = entry.get("critical_value")
     if value is None and entry.get("searched") is False:
         return (f"The margin hangs most on {name} (prior {prior.low:.3g}–{prior.high:.3g}{unit}, nominal "
-                f"{nominal:.3g}{unit}); its critical value was not searched ({entry.get('note', '')}){measure}.")
+                f"{nominal:.3g}{unit}); its critical value was not searched"
+                + (f" ({entry['note']})" if entry.get("note") else "") + f"{measure}.")
     if value is None:
         return (f"The verdict does not flip within the prior of {name} ({prior.low:.3g}–{prior.high:.3g}{unit}), "
                 f"its most influential constant{measure}.")
@@ -723,8 +724,8 @@ def _dominant_outputs(result, params, runner, sampled, dominant, entry, R, coati
     nominal_value = float(params[dominant]) if dominant in params and params[dominant] is not None else \
         _coating_nominal(dominant, coating_name)
     result["designer_sentence"] = designer_sentence(dominant, entry, sampled[dominant], nominal_value)
-    if entry.get("searched") is False and dominant not in runner.rescalable():
-        return
+    if "not searched here" in entry.get("note", "") and dominant not in runner.rescalable():
+        return  # critical="rescaled": its curve would need the new solves its critical value was spared
     prior = sampled[dominant]
     values = sorted(set([float(v) for v in prior.ppf(np.linspace(0.0, 1.0, max(2, int(curve_points))))]
                         + ([entry["critical_value"]] if entry.get("critical_value") else [])))
