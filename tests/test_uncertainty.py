@@ -371,12 +371,23 @@ def test_sobol_bootstrap_intervals_are_reproducible():
     (("--uncertainty", "4", "--set", "bond_energy=4e-19", "--fix", "bond_energy"), "named twice"),
     (("--fix", "bond_energy"), "need --uncertainty"),
     (("--solve-sets", "2"), "need --uncertainty"),
+    (("--regional",), "need --uncertainty"),
+    (("--uncertainty", "4", "--regional", "--sobol-samples", "2"), "no Sobol' design"),
     (("--uncertainty", "5000000"), "memory"),
 ])
 def test_bad_uncertainty_input_exits_2(cli, argv, message):
     code, out, err = cli("mesh", "--steps", "3", "--no-step-check", *argv)
     assert code == 2
     assert message in err and "Traceback" not in err
+
+
+def test_cli_regional_runs_the_main_jobs_analysis(cli):
+    """``mesh --uncertainty N --regional`` (issue 40): the run's analysis from the command line, in its JSON."""
+    out = cli.json("mesh", "--steps", "5", "--no-step-check", "--uncertainty", "4", "--regional",
+                   "--fix", "youngs_modulus,poisson_ratio,threshold_strain,atomic_height,adhesive_height")
+    assert out["sensitivity_method"] == "regional" and out["decision_depth"] == "regional"
+    assert out["flipping_constants"] is None and "sobol_design" not in out
+    assert set(out["margin_correlation"]) >= {"bond_energy", "roughness_realisation"}
 
 
 def test_grouped_design_shares_the_solved_constants_only(params):

@@ -55,6 +55,11 @@ def register(subparsers, parents):
                         help="with --uncertainty: the constants that need a contact solve take G values per "
                              "realisation, the bond energies keep every set's (fewer solves: faster; the interval "
                              "is widened by the design effect of the samples that share a solve; default: all)")
+    parser.add_argument("--regional", action="store_true",
+                        help="with --uncertainty: the main job's analysis (issue 40): the constants ranked by the "
+                             "regional index of the verdict on the samples (no Sobol' design), critical values of the "
+                             "rescaled constants only, no end points or robust-Bayes bands: tens of cycles, not "
+                             "hundreds")
     parser.add_argument("--calibration", metavar="FILE.toml",
                         help="with --uncertainty: P(stiction) and P(start-up stiction) also under the posterior of "
                              "FILE (a measurements TOML, or a calibrated parameter set with [posterior.NAME]), by "
@@ -253,17 +258,21 @@ UNCERTAINTY_KEYS = ("stiction_probability", "stiction_probability_ci", "stiction
                     "unconverged_samples", "failed_samples", "priors", "solve_sets", "design_effect",
                     "effective_samples", "sobol_design", "decision_sensitivity", "decision_design",
                     "flipping_constants", "flipping_constants_startup", "robust_bayes", "prior_dominated",
-                    "prior_dominated_constants", "decision_sentence",
+                    "prior_dominated_constants", "decision_sentence", "decision_depth", "sensitivity_method",
+                    "margin_correlation", "dominant_entry", "nominal_cycles_reused",
                     # the start-up verdict over the priors (MODEL 7f, issue #35)
                     "startup_stiction_probability", "startup_stiction_probability_ci", "startup_stiction_count",
                     "startup_stiction_probability_text", "startup_stiction_probability_nominal",
                     "startup_stiction_probability_nominal_ci", "startup_stiction_probability_nominal_text")
 
 
+#: ``--regional``: the main job's analysis (:data:`memstribo.job.workers.RUN_DECISION`, ``RUN_CRITICAL``)
+REGIONAL = {"sensitivity": "regional", "critical": "rescaled", "decision": {"depth": "regional"}}
+
 #: Keys only the JSON carries (the readable output gives them as notes).
 UNCERTAINTY_JSON_ONLY = ("priors", "sensitivity", "cof_split_quantiles", "sampled_constants",
                          "margin_quantiles_nominal", "sobol_design", "decision_sensitivity", "decision_design",
-                         "robust_bayes", "decision_sentence")
+                         "robust_bayes", "decision_sentence", "margin_correlation", "dominant_entry")
 
 
 def _uncertainty_option(args):
@@ -273,9 +282,13 @@ def _uncertainty_option(args):
     text = getattr(args, "uncertainty", None)
     if text is None:
         if getattr(args, "fix", None) or getattr(args, "sobol_samples", None) is not None \
-                or getattr(args, "solve_sets", None) is not None or getattr(args, "calibration", None):
-            raise InputError("--fix, --sobol-samples, --solve-sets and --calibration need --uncertainty N|auto.")
+                or getattr(args, "solve_sets", None) is not None or getattr(args, "calibration", None) \
+                or getattr(args, "regional", False):
+            raise InputError("--fix, --sobol-samples, --solve-sets, --regional and --calibration need --uncertainty "
+                             "N|auto.")
         return None
+    if getattr(args, "regional", False) and getattr(args, "sobol_samples", None) is not None:
+        raise InputError("--regional has no Sobol' design: drop --sobol-samples (or --regional).")
     from memstribo.uncertainty.study import check_sobol_samples
 
     check_sobol_samples(getattr(args, "sobol_samples", None), "--sobol-samples")  # before the first cycle
@@ -400,7 +413,8 @@ def _uncertainty(args, params, roughness, options, samples, realisations):
                                    realisations=None if args.realisations is None else realisations,
                                    steps=options["steps"], coating=options["coating"], wear=options["wear"],
                                    client=client, progress=options["progress"], fixed=fixed,
-                                   sobol_samples=args.sobol_samples, solve_sets=getattr(args, "solve_sets", None))
+                                   sobol_samples=args.sobol_samples, solve_sets=getattr(args, "solve_sets", None),
+                                   **(REGIONAL if getattr(args, "regional", False) else {}))
     finally:
         _close(client, args)
     result["uncertainty_samples"] = result.pop("samples")
