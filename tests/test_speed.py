@@ -136,15 +136,21 @@ def test_the_run_starts_workers_only_where_the_stage_has_work_for_them(monkeypat
     assert "under 32" in text and "one core" in text
 
 
-def test_the_runs_ensemble_on_the_cluster_equals_the_ensemble_in_this_process(params, tmp_path, monkeypatch):
+def test_the_runs_ensemble_on_the_cluster_equals_the_ensemble_in_this_process(params, tmp_path, monkeypatch, caplog):
+    import logging
+
     import memstribo.job.workers as workers
     from memstribo.job.chain import RunChain
     from memstribo.job.options import options_for_test
 
-    options = options_for_test(stages=("roughness", "geometry", "mesh"), realisations=workers.ENSEMBLE_REALISATIONS)
+    # the first realisation runs here, the others (at least ENSEMBLE_REALISATIONS of them) on the cluster
+    options = options_for_test(stages=("roughness", "geometry", "mesh"),
+                               realisations=workers.ENSEMBLE_REALISATIONS + 1)
     monkeypatch.setattr(workers, "machine_cores", lambda: 2)
     chain = RunChain(params, tmp_path / "two", options)
-    shared = chain.run()
+    with caplog.at_level(logging.INFO, logger="memstribo.run"):
+        shared = chain.run()
+    assert "mesh ensemble: the cycles run on 2 worker processes" in caplog.text
     assert chain.workers.cluster is None  # closed at the end of the run
     monkeypatch.setattr(workers, "machine_cores", lambda: 1)
     alone = RunChain(params, tmp_path / "one", options).run()
@@ -176,17 +182,23 @@ def test_the_runs_uncertainty_stage_reuses_the_mesh_ensemble_and_ranks_on_its_sa
     assert "memstribo mesh --uncertainty" in a["decision_sentence"]
 
 
-def test_the_runs_sweeps_on_the_cluster_equal_the_sweeps_in_this_process(params, tmp_path, monkeypatch):
+def test_the_runs_sweeps_on_the_cluster_equal_the_sweeps_in_this_process(params, tmp_path, monkeypatch, caplog):
     """Issue 40: once the mesh ensemble has started the run's cluster, the load, area and wear sweeps run their
     cycles on it: the same numbers as in this process."""
+    import logging
+
     import memstribo.job.workers as workers
     from memstribo.job.chain import RunChain
     from memstribo.job.options import options_for_test
 
     options = options_for_test(stages=("roughness", "geometry", "gear", "mesh", "load_sweep", "area_sweep", "coated",
-                                       "wear_sweep"), realisations=workers.ENSEMBLE_REALISATIONS, wear=(0.0, 0.5, 1.0))
+                                       "wear_sweep"), realisations=workers.ENSEMBLE_REALISATIONS + 1,
+                               wear=(0.0, 0.5, 1.0))
     monkeypatch.setattr(workers, "machine_cores", lambda: 2)
-    shared = RunChain(params, tmp_path / "two", options).run()
+    with caplog.at_level(logging.INFO, logger="memstribo.run"):
+        shared = RunChain(params, tmp_path / "two", options).run()
+    for stage in ("load sweep", "area sweep", "wear sweep"):
+        assert f"{stage}: the cycles run on the run's 2 worker processes" in caplog.text
     monkeypatch.setattr(workers, "machine_cores", lambda: 1)
     alone = RunChain(params, tmp_path / "one", options).run()
     assert shared.ok and alone.ok
@@ -194,3 +206,31 @@ def test_the_runs_sweeps_on_the_cluster_equal_the_sweeps_in_this_process(params,
         a, b = ([line for line in (tmp_path / run / "data" / f"{name}.csv").read_text().splitlines()
                  if not line.startswith("#")] for run in ("two", "one"))  # the header has its time of writing
         assert a == b and len(a) > 2, name
+
+
+def test_a_failed_mesh_stage_cancels_its_realisations_on_the_cluster(params, tmp_path, monkeypatch):
+    """The ensemble's realisations go to the cluster before the first one runs here (issue 40): where that one fails,
+    they are cancelled, not left running beside the next stages."""
+    import distributed
+
+    import memstribo.job.workers as workers
+    from memstribo.errors import InputError
+    from memstribo.job.chain import RunChain
+    from memstribo.job.options import options_for_test
+
+    cancelled = []
+    original = distributed.Client.cancel
+    monkeypatch.setattr(distributed.Client, "cancel", lambda self, futures, *a, **k: cancelled.append(len(futures))
+                        or original(self, futures, *a, **k))
+    monkeypatch.setattr(workers, "machine_cores", lambda: 2)
+
+    def broken(*args, **kwargs):
+        raise InputError("a refused cycle")
+
+    monkeypatch.setattr(RunChain, "_simulate", broken)
+    options = options_for_test(stages=("roughness", "geometry", "mesh"),
+                               realisations=workers.ENSEMBLE_REALISATIONS + 1)
+    result = RunChain(params, tmp_path / "out", options).run()
+    mesh = next(record for record in result.stages if record.name == "mesh")
+    assert mesh.status == "failed" and "a refused cycle" in mesh.message
+    assert cancelled == [workers.ENSEMBLE_REALISATIONS]

@@ -428,18 +428,24 @@ class RunChain:
         stiction verdict over an ensemble of roughness realisations and its step convergence."""
         from memstribo.job.workers import ENSEMBLE_REALISATIONS
         from memstribo.simulations import mesh
-        count, keep = self.options.realisations, self._uncertainty_reuses_the_ensemble()
+        count = self.options.realisations  # keep: the uncertainty stage will take these realisations as its own
+        keep = "uncertainty" in self.options.stages and self.options.uncertainty > 0
         one = ensemble_point_and_cycle if keep else mesh._ensemble_point
         point = (self.model_params, self.results["mesh_roughness"], self.options.steps, None, 1.0)
         client = self.workers.client(count - 1, "mesh ensemble", ENSEMBLE_REALISATIONS) if count > 1 else None
         futures = client.map(one, *[[a] * (count - 1) for a in point], list(range(1, count)), pure=False) \
             if client is not None else None  # the other realisations on the cluster while this one runs here
-        dataset = self._simulate(self.model_params)
+        try:
+            dataset = self._simulate(self.model_params)
+            summary = cycle_summary(dataset)
+            summary.update(mesh.run_check(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
+                                          baseline=summary, dataset=dataset))  # 2x the steps and the grid (MODEL 7d)
+        except BaseException:  # the stage fails: its realisations must not run on beside the next stages
+            if futures is not None:
+                client.cancel(futures)
+            raise
         self._dataset(dataset, "mesh_bare")
         self.results["mesh"] = dataset
-        summary = cycle_summary(dataset)
-        summary.update(mesh.run_check(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
-                                      baseline=summary, dataset=dataset))  # 2x the steps, 2x the grid (MODEL 7d)
         if keep:  # the uncertainty stage's nominal realisations are these cycles (issue 40)
             from memstribo.uncertainty.rescale import reduce_cycle
 
@@ -467,10 +473,6 @@ class RunChain:
                          "shaded, median dashed): the verdict's spread.")
         self._figure(plot_energy(dataset, "bare silicon"), "mesh_bare_energy",
                      "Energy dissipated per step by chemical bonds, vdW bonds and elastic interlocking.")
-
-    def _uncertainty_reuses_the_ensemble(self) -> bool:
-        """Whether the uncertainty stage will run on the mesh stage's realisations (then the mesh stage keeps them)."""
-        return "uncertainty" in self.options.stages and self.options.uncertainty > 0
 
     def uncertainty(self):
         """What the verdict hangs on (MODEL 7d, docs/uncertainty.md): P(stiction) with its 95 % interval over roughness
@@ -507,8 +509,7 @@ class RunChain:
         self.summaries["uncertainty"] = uncertainty_summary(result)
 
     def _sweep_points(self, what, values, stage) -> list[dict]:
-        """:func:`memstribo.simulations.mesh.sweep` at each of ``values``, one cycle each: on the run's cluster where
-        an earlier stage started it (issue 40), else here."""
+        """:func:`memstribo.simulations.mesh.sweep` at each of ``values``: on the run's cluster where it runs, else here."""
         from memstribo.simulations import mesh
 
         roughness, n = self.results["mesh_roughness"], len(values)
