@@ -437,6 +437,8 @@ class RunChain:
             if client is not None else None  # the other realisations on the cluster while this one runs here
         try:
             dataset = self._simulate(self.model_params)
+            self._dataset(dataset, "mesh_bare")  # written at once: a failing check below loses nothing computed
+            self.results["mesh"] = dataset
             summary = cycle_summary(dataset)
             summary.update(mesh.run_check(self.model_params, self.results["mesh_roughness"], steps=self.options.steps,
                                           baseline=summary, dataset=dataset))  # 2x the steps and the grid (MODEL 7d)
@@ -444,8 +446,6 @@ class RunChain:
             if futures is not None:
                 client.cancel(futures)
             raise
-        self._dataset(dataset, "mesh_bare")
-        self.results["mesh"] = dataset
         if keep:  # the uncertainty stage's nominal realisations are these cycles (issue 40)
             from memstribo.uncertainty.rescale import reduce_cycle
 
