@@ -290,3 +290,14 @@ def test_a_regional_study_ranks_by_the_verdict_and_draws_its_figure(params, tmp_
     assert {p.suffix for p in written} == {".png", ".svg"}
     with pytest.raises(InputError, match="sensitivity"):
         uncertainty_study(params, samples=8, realisations=2, steps=11, fixed=fixed, sensitivity="sobol")
+
+
+def test_the_regional_sentence_says_a_unanimous_verdict_and_noise_apart():
+    from memstribo.uncertainty.decision import _regional_words
+
+    none = {"a": {"index": None, "noise_level": None}, "b": {"index": None, "noise_level": None}}
+    assert _regional_words(none, []).startswith("Every sample gives the same verdict")
+    noisy = {"a": {"index": 0.2, "noise_level": 0.3}}
+    assert _regional_words(noisy, []).startswith("No factor separates")
+    assert _regional_words({"a": {"index": 0.9, "noise_level": 0.3}}, ["a"]).endswith("most in a (regional "
+                                                                                     "sensitivity)")

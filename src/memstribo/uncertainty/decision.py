@@ -633,6 +633,16 @@ def _band(runner, name, prior, points, summaries, entry, sensitivity, result, co
     return band
 
 
+def _regional_words(decision, above) -> str:
+    """What the regional index says, in words: the factors above their noise level, none, or a unanimous verdict."""
+    if all(entry["index"] is None for entry in decision.values()):
+        return "Every sample gives the same verdict, so no factor separates stuck from free (no regional index)"
+    if not above:
+        return "No factor separates the samples that stick from those that do not beyond noise (regional sensitivity)"
+    return ("The samples that stick differ from those that do not most in " + ", ".join(above[:3])
+            + " (regional sensitivity)")
+
+
 def _regional_only(result, decision) -> dict:
     """:func:`decision_analysis` at ``depth="regional"``: the regional index of every factor, nothing else checked."""
     ranked = sorted(decision, key=lambda n: -(decision[n]["index"] if decision[n]["index"] is not None else -1))
@@ -642,11 +652,10 @@ def _regional_only(result, decision) -> dict:
         "decision_sensitivity": {n: decision[n] for n in ranked},
         "flipping_constants": None, "flipping_constants_startup": None, "robust_bayes": None,
         "prior_dominated": None, "prior_dominated_constants": None,
-        "decision_sentence": ("The samples that stick differ from those that do not most in "
-                              + (", ".join(above[:3]) if above else "no factor beyond noise")
-                              + " (regional sensitivity); whether a constant alone flips the verdict at the end of its "
-                              "prior, and how much of P(stiction) is the prior's (robust-Bayes band), is not checked "
-                              "here: `memstribo mesh --uncertainty 64` does (hundreds of cycles)."),
+        "decision_sentence": (_regional_words(decision, above)
+                              + "; whether a constant alone flips the verdict at the end of its prior, and how much of "
+                              "P(stiction) is the prior's (robust-Bayes band), is not checked here: `memstribo mesh "
+                              "--uncertainty 64` does (hundreds of cycles)."),
     })
     return result
 
