@@ -372,7 +372,11 @@ def test_sobol_bootstrap_intervals_are_reproducible():
     (("--fix", "bond_energy"), "need --uncertainty"),
     (("--solve-sets", "2"), "need --uncertainty"),
     (("--regional",), "need --uncertainty"),
+    (("--sobol",), "need --uncertainty"),
     (("--uncertainty", "4", "--regional", "--sobol-samples", "2"), "no Sobol' design"),
+    (("--uncertainty", "4", "--regional", "--sobol"), "no Sobol' design"),
+    (("--uncertainty", "4", "--solve-sets", "0"), "'pairs' or 'all', got '0'"),
+    (("--uncertainty", "4", "--solve-sets", "some"), "'pairs' or 'all', got 'some'"),
     (("--uncertainty", "5000000"), "memory"),
 ])
 def test_bad_uncertainty_input_exits_2(cli, argv, message):
@@ -381,13 +385,61 @@ def test_bad_uncertainty_input_exits_2(cli, argv, message):
     assert message in err and "Traceback" not in err
 
 
-def test_cli_regional_runs_the_main_jobs_analysis(cli):
-    """``mesh --uncertainty N --regional`` (issue 40): the run's analysis from the command line, in its JSON."""
-    out = cli.json("mesh", "--steps", "5", "--no-step-check", "--uncertainty", "4", "--regional",
+def test_cli_runs_the_main_jobs_analysis_by_default(cli):
+    """``mesh --uncertainty N`` (issue 40): the run's analysis (regional index, rescaled critical values, pairs of
+    constant sets sharing a solve), in its JSON; the Sobol' design only with ``--sobol``."""
+    out = cli.json("mesh", "--steps", "5", "--no-step-check", "--uncertainty", "8", "--realisations", "2",
                    "--fix", "youngs_modulus,poisson_ratio,threshold_strain,atomic_height,adhesive_height")
     assert out["sensitivity_method"] == "regional" and out["decision_depth"] == "regional"
     assert out["flipping_constants"] is None and "sobol_design" not in out
     assert set(out["margin_correlation"]) >= {"bond_energy", "roughness_realisation"}
+    assert out["solve_sets"] == 2 and out["design_effect"] >= 1.0  # 4 sets a realisation: 2 solves
+
+
+def test_cli_analysis_options():
+    """``--sobol`` or ``--sobol-samples`` ask for the Sobol' design; otherwise the main job's; ``--solve-sets``."""
+    import argparse
+
+    from memstribo.cli.mesh import REGIONAL, _analysis, _solve_sets
+
+    args = argparse.Namespace(sobol=False, sobol_samples=None, solve_sets=None, calibration=None)
+    assert _analysis(args) == REGIONAL and _solve_sets(args) == "pairs"
+    assert _analysis(argparse.Namespace(sobol=True, sobol_samples=None)) == {"sobol_samples": None}
+    assert _analysis(argparse.Namespace(sobol=False, sobol_samples=4)) == {"sobol_samples": 4}
+    assert _solve_sets(argparse.Namespace(solve_sets=None, calibration="lab.toml")) is None  # weights: no sharing
+    assert _solve_sets(argparse.Namespace(solve_sets="all", calibration=None)) is None
+    assert _solve_sets(argparse.Namespace(solve_sets="3", calibration=None)) == 3
+
+
+def test_pairs_sharing_a_solve_give_the_same_probability_within_its_interval(params):
+    """The default design of ``mesh --uncertainty`` and the run (issue 40 item 2): two constant sets share the solved
+    constants; P(stiction) lies within the interval of every set solved apart and vice versa, at about half the
+    solves, and the interval carries the design effect (11-step cycles, where the verdict is split)."""
+    from memstribo.uncertainty.study import uncertainty_study
+
+    kwargs = {"samples": 32, "realisations": 2, "steps": 11, "sensitivity": False}
+    apart = uncertainty_study(params, **kwargs)
+    pairs = uncertainty_study(params, solve_sets="pairs", **kwargs)
+    assert 0.2 < apart["stiction_probability"] < 0.8  # a split verdict: the comparison can fail
+    for one, other in ((apart, pairs), (pairs, apart)):
+        low, high = one["stiction_probability_ci"]
+        assert low <= other["stiction_probability"] <= high
+    assert pairs["solves"] == 2 + 2 * 8 and apart["solves"] >= 2 + 2 * 16 - 2  # nominal + solves (few repeats)
+    assert pairs["solve_sets"] == 8 and apart["solve_sets"] is None
+    assert pairs["design_effect"] >= 1.0 and apart["design_effect"] == 1.0
+
+
+def test_pairs_keep_their_partner_when_the_sets_double(params):
+    """``samples="auto"`` doubles the sets; the pairs of the smaller design stay pairs (their solves are reused)."""
+    from memstribo.uncertainty.study import _design
+
+    priors = priors_for(params)
+    rescaled = ("bond_energy", "vdw_bond_energy", "vdw_dissipated_fraction")
+    small, large = (_design(priors, 2, sets, "pairs", rescaled, seed=0) for sets in (4, 8))
+    assert large[:len(small)] == small
+    solved = [tuple(v for k, v in sorted(c.items()) if k not in rescaled) for _, c in large]
+    assert all(solved[i] == solved[i + 2] for i in (0, 1, 4, 5, 8, 9, 12, 13))  # point j * 2 + r, pairs in j
+    assert len(set(solved)) == len(large) // 2
 
 
 def test_grouped_design_shares_the_solved_constants_only(params):

@@ -17,6 +17,11 @@ MESH_KEYS = ("load_case", "interface_model", "contact_adhesion", "cof_mean", "co
              "steps",
              "sliding_distance", "roughness_rows", "max_shear_stress", "warnings")
 
+#: the samples that share a contact solve without ``--solve-sets`` (the main job's,
+#: :data:`memstribo.job.workers.RUN_SOLVE_SETS`): pairs, half the solves; the interval carries the design effect
+#: (issue 40; docs/uncertainty.md)
+DEFAULT_SOLVE_SETS = "pairs"
+
 #: Keys of the ensemble verdict (``--realisations N``).
 ENSEMBLE_KEYS = ("realisations", "stiction_probability", "stiction_margin_median", "stiction_margin_p05",
                  "stiction_margin_p95", "cof_mean_median", "cof_mean_p05", "cof_mean_p95", "mesh_efficiency_median",
@@ -44,22 +49,27 @@ def register(subparsers, parents):
                         help="the verdict over what nobody measured (MODEL 7d): N samples of roughness realisations x "
                              "constants drawn from their priors ('memstribo parameters' lists them), or 'auto' (until "
                              "the 95 %% interval's half-width is below 0.05, at most 1024); reports P(stiction) with "
-                             "its interval, the Sobol' ranking of the constants and their critical values")
+                             "its interval, the constants ranked by the regional index of the verdict and the "
+                             "critical values of the rescaled ones (tens of cycles); --sobol adds the Sobol' design")
     parser.add_argument("--fix", action="append", default=[], metavar="NAME[,NAME]",
                         help="with --uncertainty: keep these constants at their value (each must have a prior; "
                              "--set NAME=VALUE fixes one at another value)")
+    parser.add_argument("--sobol", action="store_true",
+                        help="with --uncertainty: also the Sobol' indices of the margin and the COF (Saltelli's "
+                             "design), every decisive constant's critical value, whether one alone flips the verdict "
+                             "at the end of its prior, and the robust-Bayes bands (hundreds of cycles)")
     parser.add_argument("--sobol-samples", type=int, metavar="N",
-                        help="with --uncertainty: base samples of the Sobol' design, a power of two (default 32): "
-                             "N x (constants + 3) cycles or rescalings")
-    parser.add_argument("--solve-sets", type=int, metavar="G",
+                        help="with --uncertainty (implies --sobol): base samples of the Sobol' design, a power of two "
+                             "(default 32): N x (constants + 3) cycles or rescalings")
+    parser.add_argument("--solve-sets", metavar="G|pairs|all",
                         help="with --uncertainty: the constants that need a contact solve take G values per "
-                             "realisation, the bond energies keep every set's (fewer solves: faster; the interval "
-                             "is widened by the design effect of the samples that share a solve; default: all)")
+                             "realisation, the bond energies keep every set's ('pairs', the default: one solve per two "
+                             "sets; 'all': every constant set solved apart, the default with --calibration); the "
+                             "interval is widened by the design effect of the samples that share a solve, and a "
+                             "design that widens it beyond the precision asked says so")
     parser.add_argument("--regional", action="store_true",
-                        help="with --uncertainty: the main job's analysis (issue 40): the constants ranked by the "
-                             "regional index of the verdict on the samples (no Sobol' design), critical values of the "
-                             "rescaled constants only, no end points or robust-Bayes bands: tens of cycles, not "
-                             "hundreds")
+                        help="with --uncertainty: the regional analysis (the default; kept for scripts): refused "
+                             "with --sobol")
     parser.add_argument("--calibration", metavar="FILE.toml",
                         help="with --uncertainty: P(stiction) and P(start-up stiction) also under the posterior of "
                              "FILE (a measurements TOML, or a calibrated parameter set with [posterior.NAME]), by "
@@ -266,7 +276,7 @@ UNCERTAINTY_KEYS = ("stiction_probability", "stiction_probability_ci", "stiction
                     "startup_stiction_probability_nominal_ci", "startup_stiction_probability_nominal_text")
 
 
-#: ``--regional``: the main job's analysis (:data:`memstribo.job.workers.RUN_DECISION`, ``RUN_CRITICAL``)
+#: the analysis without ``--sobol``: the main job's (:data:`memstribo.job.workers.RUN_DECISION`, ``RUN_CRITICAL``)
 REGIONAL = {"sensitivity": "regional", "critical": "rescaled", "decision": {"depth": "regional"}}
 
 #: Keys only the JSON carries (the readable output gives them as notes).
@@ -283,12 +293,14 @@ def _uncertainty_option(args):
     if text is None:
         if getattr(args, "fix", None) or getattr(args, "sobol_samples", None) is not None \
                 or getattr(args, "solve_sets", None) is not None or getattr(args, "calibration", None) \
-                or getattr(args, "regional", False):
-            raise InputError("--fix, --sobol-samples, --solve-sets, --regional and --calibration need --uncertainty "
-                             "N|auto.")
+                or getattr(args, "regional", False) or getattr(args, "sobol", False):
+            raise InputError("--fix, --sobol, --sobol-samples, --solve-sets, --regional and --calibration need "
+                             "--uncertainty N|auto.")
         return None
-    if getattr(args, "regional", False) and getattr(args, "sobol_samples", None) is not None:
-        raise InputError("--regional has no Sobol' design: drop --sobol-samples (or --regional).")
+    if getattr(args, "regional", False) and (getattr(args, "sobol_samples", None) is not None
+                                             or getattr(args, "sobol", False)):
+        raise InputError("--regional has no Sobol' design: drop --sobol/--sobol-samples (or --regional).")
+    _solve_sets(args)  # a bad value is refused before the first cycle
     from memstribo.uncertainty.study import check_sobol_samples
 
     check_sobol_samples(getattr(args, "sobol_samples", None), "--sobol-samples")  # before the first cycle
@@ -302,6 +314,38 @@ def _uncertainty_option(args):
     if n < 1:
         raise InputError(f"--uncertainty must be at least 1 sample, got {n}.")
     return n
+
+
+def _solve_sets(args):
+    """``--solve-sets``: an int >= 1, "pairs", or None for 'all' (every set solved apart); default
+    :data:`DEFAULT_SOLVE_SETS`, or 'all' with ``--calibration`` (the posterior's weights do not carry the design
+    effect of samples that share a solve)."""
+    from memstribo.errors import InputError
+
+    text = getattr(args, "solve_sets", None)
+    if text is None:
+        return None if getattr(args, "calibration", None) else DEFAULT_SOLVE_SETS
+    text = str(text).strip().lower()
+    if text == "all":
+        return None
+    if text == "pairs":
+        return "pairs"
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise InputError("--solve-sets expects a whole number >= 1 (distinct solves per realisation), 'pairs' or "
+                         f"'all', got '{text}'.")
+    return value
+
+
+def _analysis(args) -> dict:
+    """The study's analysis options: the Sobol' design with ``--sobol`` or ``--sobol-samples``, else
+    :data:`REGIONAL`."""
+    if getattr(args, "sobol", False) or getattr(args, "sobol_samples", None) is not None:
+        return {"sobol_samples": args.sobol_samples}
+    return dict(REGIONAL)
 
 
 #: most worker processes ``--workers`` may ask for (as ``study`` and ``map``)
@@ -413,8 +457,7 @@ def _uncertainty(args, params, roughness, options, samples, realisations):
                                    realisations=None if args.realisations is None else realisations,
                                    steps=options["steps"], coating=options["coating"], wear=options["wear"],
                                    client=client, progress=options["progress"], fixed=fixed,
-                                   sobol_samples=args.sobol_samples, solve_sets=getattr(args, "solve_sets", None),
-                                   **(REGIONAL if getattr(args, "regional", False) else {}))
+                                   solve_sets=_solve_sets(args), **_analysis(args))
     finally:
         _close(client, args)
     result["uncertainty_samples"] = result.pop("samples")

@@ -478,7 +478,7 @@ class RunChain:
         """What the verdict hangs on (MODEL 7d, docs/uncertainty.md): P(stiction) with its 95 % interval over roughness
         realisations x the uncertain constants drawn from their priors, the regional index of the verdict on those
         samples and the dominant constant's critical value where it is rescaled (issue 40: tens of cycles; Sobol'
-        indices, end points and bands: ``memstribo mesh --uncertainty``)."""
+        indices, end points and bands: ``memstribo mesh --uncertainty N --sobol``)."""
         from memstribo.uncertainty.figures import plot_sensitivity, plot_stiction_curve
         from memstribo.uncertainty.study import uncertainty_study
 
@@ -498,7 +498,7 @@ class RunChain:
                  "distance between its values in the samples that stick and in those that do not (bars: 95 % "
                  "bootstrap intervals; ticks: the level noise alone reaches); where every sample gives the same "
                  "verdict, the rank correlation of each factor with the margin. Sobol' indices of the margin at the "
-                 "verdict's steps: memstribo mesh --uncertainty 64."),
+                 "verdict's steps: memstribo mesh --uncertainty 64 --sobol."),
                 ("uncertainty_stiction_curve", plot_stiction_curve,
                  "P(stiction) over the roughness realisations against the dominant constant, the others at their "
                  "nominal values, with its 95 % interval; the critical value (median margin zero) is marked.")):

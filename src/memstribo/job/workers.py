@@ -17,13 +17,14 @@ ENSEMBLE_REALISATIONS = 8
 
 #: the run's decision analysis (MODEL 7h): the regional index on the stage's own samples only (issue 40: the end
 #: points, critical values and robust-Bayes bands of the constants that need contact solves were ~500 of the stage's
-#: ~570 cycles); ``memstribo mesh --uncertainty 64`` runs them all ("full")
+#: ~570 cycles); ``memstribo mesh --uncertainty 64 --sobol`` runs them all ("full")
 RUN_DECISION = {"depth": "regional"}
 
-#: the run's samples: the constants that need a contact solve take 2 values per realisation (of its 4 constant sets),
-#: the rescaled bond energies all 4: half the solves; the interval is Wilson's at the design effect's samples
-#: (``solve_sets`` of :func:`memstribo.uncertainty.study.uncertainty_study`)
-RUN_SOLVE_SETS = 2
+#: the run's samples: two constant sets share the values of the constants that need a contact solve (2 solves per
+#: realisation of its 4 sets), the rescaled bond energies keep all 4: half the solves; the interval is Wilson's at
+#: the design effect's samples (``solve_sets`` of :func:`memstribo.uncertainty.study.uncertainty_study`; the same
+#: default as ``memstribo mesh --uncertainty``)
+RUN_SOLVE_SETS = "pairs"
 
 #: the run's critical values: those of the rescaled bond energies (no new cycle); the others: ``mesh --uncertainty``
 RUN_CRITICAL = "rescaled"

@@ -655,7 +655,7 @@ def _regional_only(result, decision) -> dict:
         "decision_sentence": (_regional_words(decision, above)
                               + "; whether a constant alone flips the verdict at the end of its prior, and how much of "
                               "P(stiction) is the prior's (robust-Bayes band), is not checked here: `memstribo mesh "
-                              "--uncertainty 64` does (hundreds of cycles)."),
+                              "--uncertainty 64 --sobol` does (hundreds of cycles)."),
     })
     return result
 

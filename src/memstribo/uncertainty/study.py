@@ -298,12 +298,13 @@ def _design(sampled, realisations, sets, solve_sets, rescalable, seed):
     With ``solve_sets`` < ``sets``, the constants that need a new contact solve take only ``solve_sets``
     values per realisation (each group of ``sets / solve_sets`` points shares its first point's), while the
     rescaled bond energies keep all their values: fewer solves, each sample still drawn from the priors.
+    ``solve_sets="pairs"``: groups of two (half the solves, at any ``sets``; a doubled ``sets`` keeps the pairs).
     """
     from memstribo.uncertainty.sampling import sample_constants
 
     design = sample_constants(sampled, realisations * sets, seed=seed)
     points = []
-    group = 1 if not solve_sets or solve_sets >= sets else int(math.ceil(sets / int(solve_sets)))
+    group = _group_size(solve_sets, sets)
     for i, constants in enumerate(design):
         r, j = i % realisations, i // realisations
         if group > 1:
@@ -311,6 +312,19 @@ def _design(sampled, realisations, sets, solve_sets, rescalable, seed):
             constants = {k: (v if k in rescalable else first[k]) for k, v in constants.items()}
         points.append((r, constants))
     return points
+
+
+def _group_size(solve_sets, sets) -> int:
+    """Samples per realisation that share a contact solve under ``solve_sets`` (None, "pairs" or an int)."""
+    if solve_sets == "pairs":
+        return 2 if sets >= 2 else 1
+    return 1 if not solve_sets or solve_sets >= sets else int(math.ceil(sets / int(solve_sets)))
+
+
+def solved_sets(solve_sets, sets) -> int:
+    """Distinct contact solves per realisation under ``solve_sets`` (None, "pairs" or an int) with ``sets`` constant
+    sets per realisation [-]."""
+    return int(math.ceil(sets / _group_size(solve_sets, sets)))
 
 
 #: most base samples N of the Sobol' design (issue #41: 2^40 ended in a generic memory message after SALib
@@ -349,10 +363,10 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
         raise InputError(f"{n} samples of {steps_of_cycle}-step cycles would keep about {need / 2**30:.1f} GiB of "
                          f"cycles in memory, more than the {MEMORY_LIMIT_BYTES / 2**31:.0f} GiB an uncertainty study "
                          "may use: use fewer samples or fewer steps.")
-    if solve_sets is not None and (isinstance(solve_sets, bool) or not isinstance(solve_sets, (int, np.integer))
-                                   or solve_sets < 1):
-        raise InputError(f"solve_sets must be a whole number >= 1 (distinct solves per realisation), "
-                         f"got {solve_sets!r}.")
+    if solve_sets is not None and solve_sets != "pairs" and (
+            isinstance(solve_sets, bool) or not isinstance(solve_sets, (int, np.integer)) or solve_sets < 1):
+        raise InputError(f"solve_sets must be a whole number >= 1 (distinct solves per realisation), 'pairs' or None "
+                         f"(every set solved apart), got {solve_sets!r}.")
     if samples == "auto" and (isinstance(budget, bool) or int(budget) < realisations):
         raise InputError(f"budget ({budget}) must be at least the realisations ({realisations}).")
 
@@ -420,11 +434,12 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
         Level of the intervals, in (0, 1) [-]; values of the dominant constant for the curve P(stiction) against it.
     priors : Mapping[str, Prior], optional
         Priors to use instead of the parameter set's.
-    solve_sets : int, optional
+    solve_sets : int or "pairs", optional
         Distinct values per realisation of the constants that need a new contact solve (default: every constant set
-        its own); the bond energies are rescaled and keep every set's value (:func:`_design`). Fewer solves; the
-        samples of a group share their contact solution and are correlated: the interval is Wilson's at
-        ``samples / design_effect`` samples (:func:`_probability`).
+        its own; ``"pairs"``: one per two sets, the main job's and ``memstribo mesh``'s); the bond energies are
+        rescaled and keep every set's value (:func:`_design`). Fewer solves; the samples of a group share their
+        contact solution and are correlated: the interval is Wilson's at ``samples / design_effect`` samples
+        (:func:`_probability`); ``solve_sets`` in the result is the number of distinct solves per realisation.
     decision : Mapping, optional
         Options of :func:`memstribo.uncertainty.decision.decision_analysis` (:func:`.decision_options`).
     keep_samples : bool
@@ -593,7 +608,7 @@ def _verdict(summaries, nominal, R, sets_count, solve_sets, confidence, priors, 
         "stiction_probability_nominal_text": p_nom["text"],
         "realisations": R,
         "constant_sets": sets_count,
-        "solve_sets": solve_sets,
+        "solve_sets": None if solve_sets is None else solved_sets(solve_sets, sets_count),
         "confidence": confidence,
         "margin_quantiles": _quantiles([s["stiction_margin"] for s in ok]),
         "margin_quantiles_nominal": _quantiles([s["stiction_margin"] for s in ok_nominal]),
@@ -702,7 +717,7 @@ def _search_critical(result, runner, sampled, name, entry, R, critical, why) -> 
     where ``name`` is rescaled (no new cycle), else a note saying where it is searched."""
     if critical == "rescaled" and name not in runner.rescalable():
         entry["note"] = (f"{why}; not searched here (each value needs new contact solves: `memstribo mesh "
-                         "--uncertainty 64` searches it)")
+                         "--uncertainty 64 --sobol` searches it)")
         return
     entry["searched"] = True
     function, reals = _margin_function(runner, name, R)
