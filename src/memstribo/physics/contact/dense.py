@@ -12,7 +12,10 @@ import scipy.linalg
 
 from memstribo.physics.contact.halfplane import ContactSolution, _full_matrix, _half_plane
 from memstribo.physics.contact.inputs import _check_adhesive_inputs
+from memstribo.physics._threads import limit_blas_threads
 from memstribo.references import cites
+
+limit_blas_threads()  # small dense algebra, many calls: one BLAS thread (memstribo.physics._threads)
 
 
 _kernel_module = None  # memstribo.physics._zone_kernel, once imported (numba: on first use)
