@@ -149,11 +149,13 @@ def case_sobol(args, params):
     fixed = [n for n in priors_for(params) if n not in SOBOL_CONSTANTS]
     clock = _CpuClock() if not args.workers else None
     result, wall = _study(args, params, clock, samples=16, realisations=16, steps=args.steps, fixed=fixed,
-                          sobol_samples=args.sobol_samples, sobol_steps=args.sobol_steps, critical=False)
+                          sobol_samples=args.sobol_samples, sobol_steps=args.sobol_steps, critical=False,
+                          decision={"depth": args.decision})
     ranking = [(n, round(s["total"], 3)) for n, s in result["sensitivity"].items()]
     out = {"case": "sobol", "constants": len(SOBOL_CONSTANTS), "base_samples": args.sobol_samples,
            "rows": result["sobol_design"]["rows"], "sobol_steps": result["sobol_design"]["steps"], "wall_s": wall,
-           "solves": result["solves"], "rescalings": result["rescalings"], "ranking": ranking}
+           "solves": result["solves"], "rescalings": result["rescalings"], "ranking": ranking,
+           "decision_depth": result.get("decision_depth")}
     if clock is not None:
         out.update(clock.split(result["solves"], result["rescalings"]))
     return out
@@ -266,6 +268,10 @@ def main():
     parser.add_argument("--energies-only", action="store_true")
     parser.add_argument("--sobol-samples", type=int, default=256)
     parser.add_argument("--sobol-steps", type=int, default=None)
+    parser.add_argument("--decision", choices=("regional", "full"), default="regional",
+                        help="sobol case: the decision's sensitivity after the Sobol' indices: 'regional' (on the "
+                             "samples and rows, no cycle more: the Sobol' analysis alone, issue 40's goal) or 'full' "
+                             "(each constant at the ends of its prior and the robust-Bayes bands, as mesh --sobol)")
     parser.add_argument("--cycles", type=int, default=32)
     parser.add_argument("--profile", metavar="FILE", help="run the cases under cProfile, write FILE, print the split")
     parser.add_argument("--json", metavar="FILE", help="append one JSON line per case")

@@ -155,7 +155,7 @@ def apply_load_case(args, params):
 
 def run(args, params):
     from memstribo.errors import InputError
-    from memstribo.simulations.mesh import SUMMARY_UNITS, simulate_ensemble, simulate_mesh, summarize
+    from memstribo.simulations.mesh import SUMMARY_UNITS, simulate_mesh, summarize
     from memstribo.simulations.mesh.convergence import refined_cycle, settings_of
 
     params = apply_load_case(args, params)
@@ -186,19 +186,7 @@ def run(args, params):
         shown, study = _uncertainty(args, params, roughness, options, uncertainty, realisations)
         values.update(shown)
     elif realisations > 1:
-        from memstribo.uncertainty.intervals import ensemble_interval
-
-        client = _client(args)
-        try:
-            ensemble = simulate_ensemble(params, roughness, realisations=realisations, steps=options["steps"],
-                                         coating=options["coating"], wear=options["wear"], client=client,
-                                         progress=options["progress"])
-        finally:
-            _close(client, args)
-        ensemble = ensemble_interval(ensemble)  # no probability without its interval (MODEL 7d)
-        values.update({key: ensemble[key] for key in ENSEMBLE_KEYS})
-        values.update({key: ensemble[key] for key in ENSEMBLE_INTERVAL_KEYS})
-        values.update({key: ensemble[key] for key in STARTUP_ENSEMBLE_KEYS if key in ensemble})
+        values.update(_ensemble(args, params, roughness, options, realisations))
     notes = [
         f"  load case '{summary['load_case']}': normal force {summary['normal_force_total'] * 1e3:.4g} mN on the "
         f"teeth, F_t {summary['tangential_force'] * 1e3:.4g} mN"
@@ -252,6 +240,24 @@ def run(args, params):
             notes.append("  wrote " + ", ".join(str(path) for path in write_figures(study, args.out)))
     return CommandResult(values=values, units=dict(SUMMARY_UNITS), title="meshing cycle (thesis 4.6-4.9)",
                          notes=notes)
+
+
+def _ensemble(args, params, roughness, options, realisations) -> dict:
+    """``--realisations N``: the ensemble verdict's keys, with the interval of its probability (MODEL 7d)."""
+    from memstribo.job.workers import ENSEMBLE_REALISATIONS
+    from memstribo.simulations.mesh import simulate_ensemble
+    from memstribo.uncertainty.intervals import ensemble_interval
+
+    client = _client(args, realisations, ENSEMBLE_REALISATIONS)
+    try:
+        ensemble = simulate_ensemble(params, roughness, realisations=realisations, steps=options["steps"],
+                                     coating=options["coating"], wear=options["wear"], client=client,
+                                     progress=options["progress"])
+    finally:
+        _close(client, args)
+    ensemble = ensemble_interval(ensemble)  # no probability without its interval
+    keys = ENSEMBLE_KEYS + ENSEMBLE_INTERVAL_KEYS + STARTUP_ENSEMBLE_KEYS
+    return {key: ensemble[key] for key in keys if key in ensemble}
 
 
 #: Keys the ensemble verdict gains from :func:`memstribo.uncertainty.intervals.ensemble_interval`.
@@ -402,8 +408,10 @@ def cap_workers(workers, command: str, quiet: bool = False):
     return workers
 
 
-def _client(args):
-    """A Dask client: --scheduler ADDRESS, or a local cluster of --workers N processes, or None."""
+def _client(args, cycles=None, threshold=None):
+    """A Dask client: --scheduler ADDRESS, or a local cluster of --workers N processes; without either, a local
+    cluster of the machine's cores for ``cycles`` cycles from ``threshold`` on where dask.distributed is installed
+    (issue 40 item 4: the run's rule, :func:`memstribo.job.workers.stage_cluster`, said on stderr), or None."""
     from memstribo.simulations.study import require_dask
 
     if getattr(args, "scheduler", None):
@@ -422,11 +430,25 @@ def _client(args):
         from memstribo.simulations.study import local_cluster
 
         return Client(local_cluster(args.workers))
-    return None
+    if cycles is None:
+        return None
+    from memstribo.job.workers import stage_cluster
+
+    cluster = stage_cluster(cycles, "mesh", threshold)
+    if cluster is None:
+        return None
+    from distributed import Client
+
+    if not getattr(args, "quiet", False):
+        import sys
+
+        print(f"memstribo mesh: note: the cycles run on {len(cluster.workers)} worker processes (this machine's "
+              "cores, one BLAS thread each); --workers N sets their number.", file=sys.stderr)
+    return Client(cluster, set_as_default=False)
 
 
 def _close(client, args) -> None:
-    """Close a client of :func:`_client`, and the local cluster it started (--workers)."""
+    """Close a client of :func:`_client`, and the local cluster it started (--workers, or the machine's cores)."""
     if client is None:
         return
     cluster = getattr(client, "cluster", None)
@@ -451,7 +473,10 @@ def _uncertainty(args, params, roughness, options, samples, realisations):
         from memstribo.laboratory.posterior import calibration_kind
 
         calibration_kind(calibration)  # a bad file is refused before the first cycle
-    client = _client(args)
+    from memstribo.job.workers import PARALLEL_SAMPLES
+    from memstribo.uncertainty.study import DEFAULT_BUDGET
+
+    client = _client(args, DEFAULT_BUDGET if samples == "auto" else int(samples), PARALLEL_SAMPLES)
     try:
         result = uncertainty_study(params, roughness, samples=samples, keep_samples=bool(calibration),
                                    realisations=None if args.realisations is None else realisations,

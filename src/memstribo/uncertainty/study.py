@@ -435,11 +435,10 @@ def uncertainty_study(params, roughness=None, *, samples="auto", realisations=No
     priors : Mapping[str, Prior], optional
         Priors to use instead of the parameter set's.
     solve_sets : int or "pairs", optional
-        Distinct values per realisation of the constants that need a new contact solve (default: every constant set
-        its own; ``"pairs"``: one per two sets, the main job's and ``memstribo mesh``'s); the bond energies are
-        rescaled and keep every set's value (:func:`_design`). Fewer solves; the samples of a group share their
-        contact solution and are correlated: the interval is Wilson's at ``samples / design_effect`` samples
-        (:func:`_probability`); ``solve_sets`` in the result is the number of distinct solves per realisation.
+        Distinct values per realisation of the constants that need a new contact solve (default: every set its own;
+        ``"pairs"``: one per two sets, as the main job); the bond energies keep every set's value (:func:`_design`).
+        The samples of a group share their contact solution: the interval is Wilson's at ``samples / design_effect``
+        samples (:func:`_probability`); the result's ``solve_sets`` is the distinct solves per realisation.
     decision : Mapping, optional
         Options of :func:`memstribo.uncertainty.decision.decision_analysis` (:func:`.decision_options`).
     keep_samples : bool
