@@ -503,3 +503,18 @@ def test_the_dissipated_fraction_rescales_as_a_full_rerun():
                     "mesh_efficiency", "friction_force_mean"):
             assert fast[key] == pytest.approx(full[key], rel=1e-9), key
     assert fast["cof_vdw"] != pytest.approx(summarize(cycle)["cof_vdw"], rel=1e-3)  # it changed something
+
+
+def test_the_cli_starts_a_cluster_only_for_enough_cycles_on_several_cores(monkeypatch):
+    """``mesh --uncertainty N`` / ``--realisations N`` without --workers (issue 40 item 4): the run's rule
+    (:func:`memstribo.job.workers.stage_cluster`): in this process below the threshold or on one core."""
+    import argparse
+
+    import memstribo.job.workers as workers
+    from memstribo.cli.mesh import _client
+
+    args = argparse.Namespace(scheduler=None, workers=None, quiet=True)
+    assert _client(args) is None  # no cycles named: one cycle, this process
+    assert _client(args, 8, 32) is None  # under the threshold
+    monkeypatch.setattr(workers, "machine_cores", lambda: 1)
+    assert _client(args, 1024, 32) is None  # one core
