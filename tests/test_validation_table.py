@@ -1,4 +1,5 @@
-"""docs/validation.md is generated from the code: it must equal a fresh generation."""
+"""docs/validation.md is generated from the code: it renders the shipped rows (src/memstribo/validation/rows.json),
+which tests/test_validation_fresh_*.py hold equal to a fresh computation, topic by topic."""
 
 from __future__ import annotations
 
@@ -6,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from memstribo.validation import ValidationRow, all_rows, compare
+from memstribo.validation import ValidationRow, compare
 from memstribo.validation.__main__ import DEFAULT_OUTPUT, format_number, render_markdown, summary
 
 REPO = Path(__file__).resolve().parent.parent
@@ -14,15 +15,28 @@ REPO = Path(__file__).resolve().parent.parent
 
 @pytest.fixture(scope="module")
 def rows():
-    return all_rows()
+    """The shipped rows: equal to a fresh computation topic by topic (tests/test_validation_fresh_*.py)."""
+    from memstribo.validation import shipped_rows
+
+    shipped = shipped_rows()
+    assert shipped is not None, "src/memstribo/validation/rows.json is missing: run 'python -m memstribo.validation'"
+    return shipped
 
 
-def test_committed_validation_md_equals_a_fresh_generation(rows):
+def test_committed_validation_md_renders_the_shipped_rows(rows):
     assert DEFAULT_OUTPUT == REPO / "docs" / "validation.md"
     committed = DEFAULT_OUTPUT.read_text(encoding="utf-8")
-    fresh = render_markdown(rows)
-    assert committed == fresh, ("docs/validation.md is out of date: run 'python -m memstribo.validation' "
-                                "and commit the result")
+    assert committed == render_markdown(rows), ("docs/validation.md is out of date: run 'python -m "
+                                                "memstribo.validation' and commit the result")
+
+
+def test_every_topic_is_checked_fresh_and_in_the_shipped_rows(rows):
+    from validation_fresh import every_topic_in_one_group, headings
+
+    from memstribo.validation import TOPICS
+
+    assert every_topic_in_one_group()
+    assert sorted(h for topic in TOPICS for h in headings(topic)) == sorted({r.topic for r in rows})
 
 
 def test_every_row_names_its_command_and_explains_a_difference(rows):
@@ -149,19 +163,6 @@ def test_committed_table_holds_no_round_off_digits(rows):
     for row in rows:
         if row.reference_value == 0 and row.agrees and row.value not in (0, None) and "abs" in row.tolerance:
             assert format_value(row).startswith("< "), row
-
-
-def test_the_shipped_rows_are_a_fresh_computation(rows):
-    """The run's report shows the package's rows.json (issue 40: not 1-2 min of rows at every run); they must be
-    what a fresh computation gives: the same rows, verdicts and bands, rendering to the same table."""
-    from memstribo.validation import shipped_rows
-
-    shipped = shipped_rows()
-    assert shipped is not None, "src/memstribo/validation/rows.json is missing: run 'python -m memstribo.validation'"
-    assert render_markdown(shipped) == render_markdown(rows), (
-        "src/memstribo/validation/rows.json is out of date: run 'python -m memstribo.validation' and commit it")
-    assert [(r.topic, r.quantity, r.agrees, r.expected, r.band, r.calibrated) for r in shipped] == \
-        [(r.topic, r.quantity, r.agrees, r.expected, r.band, r.calibrated) for r in rows]
 
 
 def test_the_run_shows_the_shipped_rows_unless_asked_to_recompute(monkeypatch):
