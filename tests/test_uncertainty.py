@@ -518,3 +518,15 @@ def test_the_cli_starts_a_cluster_only_for_enough_cycles_on_several_cores(monkey
     assert _client(args, 8, 32) is None  # under the threshold
     monkeypatch.setattr(workers, "machine_cores", lambda: 1)
     assert _client(args, 1024, 32) is None  # one core
+
+
+def test_without_critical_values_the_curve_needing_new_solves_is_left_out(params):
+    """``critical=False`` (the Sobol' benchmark, issue 40): the dominant constant's curve would need new solves for
+    a critical value nobody searched: left out, as with ``critical="rescaled"``."""
+    from memstribo.uncertainty.study import uncertainty_study
+
+    fixed = [n for n in priors_for(params) if n != "hamaker_constant"]
+    result = uncertainty_study(params, samples=4, realisations=2, steps=11, sobol_samples=2, fixed=fixed,
+                               critical=False, curve_points=3)
+    assert result["dominant"] == "hamaker_constant" and not result["sensitivity"]["hamaker_constant"]["searched"]
+    assert result.get("critical_curve") is None

@@ -738,8 +738,8 @@ def _dominant_outputs(result, params, runner, sampled, dominant, entry, R, coati
     nominal_value = float(params[dominant]) if dominant in params and params[dominant] is not None else \
         _coating_nominal(dominant, coating_name)
     result["designer_sentence"] = designer_sentence(dominant, entry, sampled[dominant], nominal_value)
-    if "not searched here" in entry.get("note", "") and dominant not in runner.rescalable():
-        return  # critical="rescaled": its curve would need the new solves its critical value was spared
+    if not entry.get("searched") and dominant not in runner.rescalable():
+        return  # critical False or "rescaled": its curve would need the new solves its critical value was spared
     prior = sampled[dominant]
     values = sorted(set([float(v) for v in prior.ppf(np.linspace(0.0, 1.0, max(2, int(curve_points))))]
                         + ([entry["critical_value"]] if entry.get("critical_value") else [])))
