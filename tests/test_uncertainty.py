@@ -530,3 +530,15 @@ def test_without_critical_values_the_curve_needing_new_solves_is_left_out(params
                                critical=False, curve_points=3)
     assert result["dominant"] == "hamaker_constant" and not result["sensitivity"]["hamaker_constant"]["searched"]
     assert result.get("critical_curve") is None
+
+
+def test_a_sample_count_the_study_refuses_is_refused_before_the_first_cycle(cli, monkeypatch):
+    """Issue 40: not after the self-refining cycle and a cluster's start (16 s), before them."""
+    import memstribo.simulations.mesh.convergence as convergence
+
+    def no_cycle(*args, **kwargs):
+        raise AssertionError("a cycle ran before the sample count was checked")
+
+    monkeypatch.setattr(convergence, "refined_cycle", no_cycle)
+    code, out, err = cli("mesh", "--uncertainty", "5000000")
+    assert code == 2 and "at most 1048576" in err and "Traceback" not in err

@@ -169,6 +169,8 @@ def run(args, params):
         raise InputError(f"--realisations must be from {int(spec.minimum):,} to {int(spec.maximum):,} (the bounds "
                          f"of the parameter realisations), got {realisations:,}.")
     _check_parallel(args, uncertainty, realisations)
+    if uncertainty is not None:
+        _check_study_size(args, params, options, uncertainty, realisations)
     roughness = roughness_of(args)
     if args.refine:  # the finest cycle of the self-refining one, and its checks (MODEL 7d)
         dataset, summary = refined_cycle(params, roughness, **options)
@@ -455,6 +457,15 @@ def _close(client, args) -> None:
     client.close()
     if cluster is not None and not getattr(args, "scheduler", None):
         cluster.close()
+
+
+def _check_study_size(args, params, options, samples, realisations) -> None:
+    """Refuse a sample count the study would refuse, before the first cycle (and before a cluster starts)."""
+    from memstribo.uncertainty.study import DEFAULT_BUDGET, DEFAULT_REALISATIONS, _check_samples
+
+    count = DEFAULT_BUDGET if samples == "auto" else int(samples)
+    _check_samples(samples, realisations if args.realisations is not None else min(DEFAULT_REALISATIONS, count),
+                   int(options["steps"] or params["mesh_steps"]))
 
 
 def _uncertainty(args, params, roughness, options, samples, realisations):

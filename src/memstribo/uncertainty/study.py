@@ -355,6 +355,10 @@ def _check_samples(samples, realisations, steps_of_cycle, budget=DEFAULT_BUDGET,
     if samples != "auto":
         if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
             raise InputError(f"samples must be a whole number >= 1 or 'auto', got {samples!r}.")
+        from memstribo.uncertainty.sampling import MAX_SAMPLES
+
+        if samples > MAX_SAMPLES:  # before the first cycle (the design's own check comes after the nominal ones)
+            raise InputError(f"{samples} samples: at most {MAX_SAMPLES} (the design would not fit in memory).")
     if isinstance(realisations, bool) or not isinstance(realisations, (int, np.integer)) or realisations < 1:
         raise InputError(f"realisations must be a whole number >= 1, got {realisations!r}.")
     n = DEFAULT_BUDGET if samples == "auto" else int(samples)
