@@ -193,9 +193,10 @@ class SolverSettings:
     cohesive_start: str = "previous"
     """Start of the cohesive zone under load control when an ``initial_pressure`` is given: "previous" (the zone of
     that pressure, its tensile parts and contact set: continuation from a previous state, e.g. along a
-    loading-unloading curve) or "loading" (the pressure warm-starts the contact set only, the zone starts empty:
-    the state reached is the loading-branch state, the one reached without a start, whatever state the pressure
-    came from). The meshing cycle uses "loading", so that a step's state does not depend on the step before it
+    loading-unloading curve) or "loading" (the zone starts empty and the pressure is not used: the state reached
+    is the loading-branch state, the one reached without a start, whatever state the pressure came from; the
+    compiled small-grid loop used the pressure's contact set as the start of its first, non-adhesive update until
+    issue 40, which reached the same contact set at several times the cost). The meshing cycle uses "loading", so that a step's state does not depend on the step before it
     (issue #25, docs/interface.md; bench/bench_convergence.py measures it)."""
 
 
