@@ -657,3 +657,24 @@ def test_a_loading_branch_solve_depends_on_its_own_inputs_alone(monkeypatch, shi
     former, contact = _former_loading_start(step, dx, load, previous)
     assert np.array_equal(contact, started.contact)
     assert np.abs(former - started.pressure).max() <= 1e-9 * np.abs(former).max()
+
+
+def test_a_loading_branch_solve_on_a_small_grid_starts_from_the_start_pressures_contact_set(monkeypatch):
+    """Up to ``SolverSettings.loading_start_max`` elements (the default cycle's windows, where a step moves the contact
+    by a fraction of its width) the first update starts from the start pressure's contact set as before issue 40: the
+    same solve, bit for bit."""
+    from memstribo.physics.contact.settings import DEFAULTS
+
+    _tune(monkeypatch, cohesive_start="loading")
+    n, dx = 200, 2e-9
+    assert n <= DEFAULTS.loading_start_max
+    x = (np.arange(n) - 0.5 * (n - 1)) * dx
+    line = rough(n + 4, dx, 0.5e-9, seed=5)
+    before, step = (x**2 / (2 * 2e-6) + line[s:s + n] for s in (0, 1))
+    load = 0.002 * E_STAR * n * dx
+    kwargs = dict(load=load, cohesive_stress=SIGMA0, cohesive_range=H0, tolerance=1e-8)
+    previous = solve_line_contact(before, dx, E_STAR, **kwargs).pressure
+    started = solve_line_contact(step, dx, E_STAR, initial_pressure=previous, **kwargs)
+    assert started.converged and "dense" in started.message
+    former, contact = _former_loading_start(step, dx, load, previous)
+    assert np.array_equal(former, started.pressure) and np.array_equal(contact, started.contact)

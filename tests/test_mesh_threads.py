@@ -18,6 +18,8 @@ def test_threads_only_where_a_solve_is_long_and_there_are_rows(monkeypatch):
     assert row_threads(MIN_ELEMENTS, 40) == 2
     assert row_threads(MIN_ELEMENTS - 1, 40) == 1  # the default cycle's ~130-element windows: one thread
     assert row_threads(MIN_ELEMENTS, 1) == 1
+    assert row_threads(MIN_ELEMENTS, 40, compiled=False) == 1  # the plain dense solve's BLAS calls: one thread
+    assert row_threads(10**5, 40) == 1  # past the compiled loop's grids
     monkeypatch.setenv("MEMSTRIBO_THREADS", "8")
     assert row_threads(4096, 3) == 3  # at most the rows
     monkeypatch.setenv("MEMSTRIBO_THREADS", "1")

@@ -286,14 +286,11 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
         sigmas, reaches, per_element, sigma = _zone_arrays(zones, n)
     top = float(h.max()) if top is None else top
     scale = top if top > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
-    if p_start is not None and settings.cohesive_start == "loading":  # the loading branch: no start (as the
-        # general solver, _solve_adhesive). The first update is the non-adhesive problem, whose contact set is unique:
-        # a start changes only the path to it. The former start, the contact set of the start pressure (the step
-        # before's adhesive set, several times the non-adhesive one and disjoint from it where the roughness moves
-        # by more than the asperities' contacts per step), cost a factor of that set and ~8 contact sets to shrink
-        # to it: from the lowest element it takes ~5 and small factors (the thesis case's 2600-element grids: 30 %
-        # of the zone loop's time, issue 40). A step's solve then depends on that step's inputs alone.
-        contact = np.zeros(n, dtype=bool)
+    if p_start is not None and settings.cohesive_start == "loading":  # the loading branch: the zone empty, the
+        # contact set of the start pressure on small grids, none on large ones (from the lowest element, as the
+        # general solver, _solve_adhesive): the first update is the non-adhesive problem, whose contact set is unique,
+        # so the start changes only the path to it (SolverSettings.loading_start_max, issue 40)
+        contact = p_start > 0.0 if n <= settings.loading_start_max else np.zeros(n, dtype=bool)
         fraction = np.zeros(n)
     elif p_start is not None:  # min(clip(-p/sigma, 0, 1) + (p > 0), 1)
         contact = p_start > 0.0

@@ -37,7 +37,7 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     block_loads = []
     strip = _surface_strip(setup, params, modulus, beta, kinematics, pbar)
     # each row's contacts, the next rows on threads while this one is added up (the same numbers: threads.py)
-    threads = 1 if strip is not None else row_threads(setup.grid.size, n_rows_solved)
+    threads = row_threads(setup.grid.size, n_rows_solved, compiled=strip is None and ctx.with_cohesive_zone)
     contacts = ordered_map(lambda row: _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row,
                                                     strip, pbar, warm_start), range(n_rows_solved), threads)
     for row, (pressure, gap, info, zone) in enumerate(contacts):

@@ -3,8 +3,8 @@
 Each roughness row's contact solves (every step of the row, each started from the step before it) depend on no other
 row, and the compiled zone loop that takes most of their time (:mod:`memstribo.physics._zone_kernel`) runs without
 Python's lock. On grids of :data:`MIN_ELEMENTS` elements and more (a solve of a millisecond and more: the thesis load
-case's 1300- and 2600-element windows) the rows are solved on :func:`row_threads` threads, the next rows while this
-thread adds up the last; the results are taken in row order, so every number is the one the rows solved one after
+case's 1300- and 2600-element windows) with the Maugis-Dugdale zone (the compiled loop) the rows are solved on
+:func:`row_threads` threads, the next rows while this thread adds up the last; the results are taken in row order, so every number is the one the rows solved one after
 the other give, bit for bit (tests/test_mesh_threads.py). Below it (the default cycle's ~130-element windows, solves
 of ~50 us, mostly Python) the threads would wait on each other: one thread. Inside a Dask worker (an ensemble, an
 uncertainty study: one worker per core already) one thread.
@@ -49,10 +49,12 @@ def _in_dask_worker() -> bool:
     return True
 
 
-def row_threads(elements: int, rows: int) -> int:
+def row_threads(elements: int, rows: int, compiled: bool = True) -> int:
     """Threads to solve ``rows`` rows of contacts on a grid of ``elements`` elements [count]: 1 below
-    :data:`MIN_ELEMENTS`, for one row or inside a Dask worker; else ``MEMSTRIBO_THREADS`` or the cores (at most
-    :data:`MAX_THREADS`), at most the rows.
+    :data:`MIN_ELEMENTS` or above the compiled loop's grids (``SolverSettings.zone_kernel_max``), where the solves are
+    not the compiled zone loop's (``compiled`` False: the plain dense solve's LAPACK and BLAS calls from two threads
+    wait on each other, the validation table's coated teeth 20 -> 43 s), for one row or inside a Dask worker; else
+    ``MEMSTRIBO_THREADS`` or the cores (at most :data:`MAX_THREADS`), at most the rows.
 
     Raises
     ------
@@ -72,7 +74,10 @@ def row_threads(elements: int, rows: int) -> int:
                              f"solves), got {chosen!r}.")
     else:
         threads = min(_cores(), MAX_THREADS)
-    if elements < MIN_ELEMENTS or rows < 2 or threads < 2 or _in_dask_worker():
+    from memstribo.physics.contact import settings
+
+    if (not compiled or elements < MIN_ELEMENTS or elements > settings.DEFAULTS.zone_kernel_max or rows < 2
+            or threads < 2 or _in_dask_worker()):
         return 1
     return min(threads, rows)
 
