@@ -607,3 +607,74 @@ def test_zone_kernel_compiles_without_a_writable_cache(monkeypatch):
 
     assert kernel._jit(function) == ("compiled", function)
     assert calls == [{"cache": True, "nogil": True}, {"nogil": True}]
+
+
+def _former_loading_start(h, dx, load, p_start):
+    """The compiled zone loop as ``_dense_capillary`` ran it before issue 40 with ``cohesive_start = "loading"``: the
+    first update's contact set started from the start pressure's (the zone empty). (pressure [Pa], contact set
+    reached)."""
+    from memstribo.physics.contact import dense
+    from memstribo.physics.contact.settings import DEFAULTS
+    from memstribo.physics.contact.subgrid import resolved_zones
+
+    n = h.size
+    zones, _ = resolved_zones(dx, E_STAR, SIGMA0, H0, DEFAULTS.zone_elements, DEFAULTS.contact_only_range)
+    zones = zones or ((SIGMA0, H0),)
+    kernel, reverse = dense._toeplitz_kernel(n, dx, E_STAR, False, n * dx)
+    sigmas, reaches, per_element, _ = dense._zone_arrays(zones, n)
+    shifted = h - h.min()
+    contact = p_start > 0.0
+    status, p, _, _, _ = dense._compiled().zone_solve(
+        kernel, reverse, np.ascontiguousarray(shifted), load / dx, sigmas, reaches, per_element, False, np.zeros(n),
+        contact, 1e-8 * shifted.max(), DEFAULTS.adhesive_max_outer, DEFAULTS.max_outer, DEFAULTS.fraction_tolerance,
+        DEFAULTS.zone_load_tolerance, DEFAULTS.zone_max_change, DEFAULTS.aitken_min_ratio, DEFAULTS.aitken_max_ratio)
+    assert status == 0
+    return p, contact
+
+
+@pytest.mark.parametrize("shift", [2, 7])
+def test_a_loading_branch_solve_depends_on_its_own_inputs_alone(monkeypatch, shift):
+    """The meshing cycle's solves (``cohesive_start = "loading"``) on a thesis-like grid (1300 elements, a rough
+    cylinder, the adhesive contact more than twice the non-adhesive one): the compiled zone loop starts the first update
+    (the non-adhesive problem) from the lowest element whatever the start pressure, so a step started from the step
+    before (the roughness moved by ``shift`` elements) is the same solve as one without a start, bit for bit; the
+    former start (the start pressure's contact set, issue 40) reached the same contact set and the same pressures
+    to round-off."""
+    _tune(monkeypatch, cohesive_start="loading")
+    n, dx = 1300, 0.94e-9
+    x = (np.arange(n) - 0.5 * (n - 1)) * dx
+    line = rough(n + 16, dx, 1.5e-9, seed=3)
+    before, step = (x**2 / (2 * 2e-6) + line[s:s + n] for s in (0, shift))
+    load = 0.0005 * E_STAR * n * dx
+    kwargs = dict(load=load, cohesive_stress=SIGMA0, cohesive_range=H0, tolerance=1e-8)
+    previous = solve_line_contact(before, dx, E_STAR, **kwargs).pressure
+    started = solve_line_contact(step, dx, E_STAR, initial_pressure=previous, **kwargs)
+    cold = solve_line_contact(step, dx, E_STAR, **kwargs)
+    assert started.converged and "dense" in started.message
+    assert np.array_equal(started.pressure, cold.pressure) and started.approach == cold.approach
+    assert np.count_nonzero(started.contact) > 2 * np.count_nonzero(solve_line_contact(step, dx, E_STAR, load=load,
+                                                                                       tolerance=1e-8).contact)
+    former, contact = _former_loading_start(step, dx, load, previous)
+    assert np.array_equal(contact, started.contact)
+    assert np.abs(former - started.pressure).max() <= 1e-9 * np.abs(former).max()
+
+
+def test_a_loading_branch_solve_on_a_small_grid_starts_from_the_start_pressures_contact_set(monkeypatch):
+    """Up to ``SolverSettings.loading_start_max`` elements (the default cycle's windows, where a step moves the contact
+    by a fraction of its width) the first update starts from the start pressure's contact set as before issue 40: the
+    same solve, bit for bit."""
+    from memstribo.physics.contact.settings import DEFAULTS
+
+    _tune(monkeypatch, cohesive_start="loading")
+    n, dx = 200, 2e-9
+    assert n <= DEFAULTS.loading_start_max
+    x = (np.arange(n) - 0.5 * (n - 1)) * dx
+    line = rough(n + 4, dx, 0.5e-9, seed=5)
+    before, step = (x**2 / (2 * 2e-6) + line[s:s + n] for s in (0, 1))
+    load = 0.002 * E_STAR * n * dx
+    kwargs = dict(load=load, cohesive_stress=SIGMA0, cohesive_range=H0, tolerance=1e-8)
+    previous = solve_line_contact(before, dx, E_STAR, **kwargs).pressure
+    started = solve_line_contact(step, dx, E_STAR, initial_pressure=previous, **kwargs)
+    assert started.converged and "dense" in started.message
+    former, contact = _former_loading_start(step, dx, load, previous)
+    assert np.array_equal(former, started.pressure) and np.array_equal(contact, started.contact)

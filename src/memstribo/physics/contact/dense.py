@@ -289,8 +289,11 @@ def _dense_capillary(h, dx, modulus, total, periodic, reference, zones, p_start,
         sigmas, reaches, per_element, sigma = _zone_arrays(zones, n)
     top = float(h.max()) if top is None else top
     scale = top if top > 0 else max(abs(total) * dx / modulus, max(float(np.max(r)) for _, r in zones))
-    if p_start is not None and settings.cohesive_start == "loading":  # the contact set only: the loading branch
-        contact = p_start > 0.0
+    if p_start is not None and settings.cohesive_start == "loading":  # the loading branch: the zone empty, the
+        # contact set of the start pressure on small grids, none on large ones (from the lowest element, as the
+        # general solver, _solve_adhesive): the first update is the non-adhesive problem, whose contact set is unique,
+        # so the start changes only the path to it (SolverSettings.loading_start_max, issue 40)
+        contact = p_start > 0.0 if n <= settings.loading_start_max else np.zeros(n, dtype=bool)
         fraction = np.zeros(n)
     elif p_start is not None:  # min(clip(-p/sigma, 0, 1) + (p > 0), 1)
         contact = p_start > 0.0

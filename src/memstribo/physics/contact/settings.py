@@ -193,11 +193,22 @@ class SolverSettings:
     cohesive_start: str = "previous"
     """Start of the cohesive zone under load control when an ``initial_pressure`` is given: "previous" (the zone of
     that pressure, its tensile parts and contact set: continuation from a previous state, e.g. along a
-    loading-unloading curve) or "loading" (the pressure warm-starts the contact set only, the zone starts empty:
-    the state reached is the loading-branch state, the one reached without a start, whatever state the pressure
-    came from). The meshing cycle uses "loading", so that a step's state does not depend on the step before it
+    loading-unloading curve) or "loading" (the zone starts empty, the pressure's contact set starts the first,
+    non-adhesive update on grids up to ``loading_start_max`` elements and is not used on larger ones: the state
+    reached is the loading-branch state, the one reached without a start, whatever state the pressure came from). The meshing cycle uses "loading", so that a step's state does not depend on the step before it
     (issue #25, docs/interface.md; bench/bench_convergence.py measures it)."""
 
+
+    loading_start_max: int = 512
+    """Grids up to this many elements start the loading branch's first zone update (``cohesive_start = "loading"``,
+    the non-adhesive problem) from the start pressure's contact set, larger ones from the lowest element [elements].
+    A meshing step's start is the step before's adhesive contact set: on the default cycle's ~110-element windows the
+    contact moves by a fraction of its width per step and that set is close (0.094 against 0.173 ms per solve from
+    the lowest element, the validation table's humid cycles); on the thesis case's 1300- and 2600-element windows
+    (8 um face) the adhesive set is several times the non-adhesive one and disjoint from it, and factoring it and
+    shrinking it took ~8 contact sets (the case's CPU time 169 -> 88 s from the lowest element). Both starts reach
+    the same contact set (unique), the pressures to round-off. Set by bench/bench_convergence.py (issue 40,
+    bench/README.md)."""
 
     # ---------------------------------------------------------------- pressure capped at the hardness (plastic.py)
     max_plastic_updates: int = 60

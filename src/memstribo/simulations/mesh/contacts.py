@@ -25,7 +25,8 @@ def _cohesive_zone(params):
 
 
 # With the Maugis-Dugdale zone a step's contact can have two states (an asperity adhered or not). Each step's solve
-# starts from the previous step's contact set, but its zone starts empty: the state is the loading-branch state
+# starts from the previous step's contact set (on grids past SolverSettings.loading_start_max from none: issue 40),
+# but its zone starts empty: the state is the loading-branch state
 # (the one reached from the non-adhesive contact at the same load), whatever state the step before was in. Following
 # the states from step to step made the verdict depend on the step size: the roughness moves by about two grid
 # elements per step at 481 steps, and the default margin fell by 7.6 % (realisation 1: 13.6 %) over four times the

@@ -14,6 +14,7 @@ the result is that of a new solve, bit-identical); the least recently used are d
 from __future__ import annotations
 
 import hashlib
+import threading
 from collections import OrderedDict
 
 import numpy as np
@@ -24,6 +25,9 @@ __all__ = ["keep_solves", "stop_keeping", "kept_solves", "solve_digest", "lookup
 DEFAULT_BYTES = 256 * 2**20
 
 _STATE = {"store": None, "bytes": 0, "max_bytes": 0, "hits": 0, "misses": 0}
+
+#: lookups and stores of the rows solved on threads (simulations/mesh/threads.py) one at a time
+_LOCK = threading.Lock()
 
 
 def keep_solves(max_bytes: int = DEFAULT_BYTES) -> None:
@@ -63,6 +67,11 @@ def solve_digest(arrays, values) -> str | None:
 
 def lookup(key):
     """The kept (pressure, gap, info) of ``key`` as fresh copies, or None."""
+    with _LOCK:
+        return _lookup(key)
+
+
+def _lookup(key):
     store = _STATE["store"]
     if key is None or store is None or key not in store:
         if key is not None and store is not None:
@@ -75,6 +84,11 @@ def lookup(key):
 
 def store(key, arrays) -> None:
     """Keep copies of ``arrays`` under ``key`` (dropping the least recently used beyond the byte limit)."""
+    with _LOCK:
+        _store(key, arrays)
+
+
+def _store(key, arrays) -> None:
     kept = _STATE["store"]
     if key is None or kept is None:
         return

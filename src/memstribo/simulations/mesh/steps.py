@@ -15,6 +15,7 @@ from memstribo.simulations.mesh.contacts import (_capillary_zone, _cohesive_zone
 from memstribo.simulations.mesh.interface import (_GOLDEN, _SILVER, _interlocking, _lattice, lattice_overlap_across,
                                                  vdw_gap_factor)
 from memstribo.simulations.mesh.setup import _geometry, _work_of_adhesion, roll_coordinate
+from memstribo.simulations.mesh.threads import ordered_map, row_threads
 
 
 def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progress, warm_start=None):
@@ -35,10 +36,12 @@ def _run_cycle(setup, params, coating, wear, modulus, beta, mu_previous, progres
     out["row_bonds"] = np.zeros((3, n_steps, n_rows_solved))
     block_loads = []
     strip = _surface_strip(setup, params, modulus, beta, kinematics, pbar)
-    for row in range(n_rows_solved):
+    # each row's contacts, the next rows on threads while this one is added up (the same numbers: threads.py)
+    threads = row_threads(setup.grid.size, n_rows_solved, compiled=strip is None and ctx.with_cohesive_zone)
+    contacts = ordered_map(lambda row: _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row,
+                                                    strip, pbar, warm_start), range(n_rows_solved), threads)
+    for row, (pressure, gap, info, zone) in enumerate(contacts):
         before = [out[key].copy() for key in _ROW_BOND_KEYS[coating is not None]]
-        pressure, gap, info, zone = _row_contact(setup, params, ctx, modulus, beta, mu_previous, kinematics, row,
-                                                 strip, pbar, warm_start)
         _record_solve(out, ctx, pressure, gap, info, n_rows_solved)
         rolls = _row_rolls(setup, kinematics, row)
         k1, k2, flank_states = _flank_blocks(out, ctx, pressure, gap, rolls)
