@@ -542,3 +542,11 @@ def test_a_sample_count_the_study_refuses_is_refused_before_the_first_cycle(cli,
     monkeypatch.setattr(convergence, "refined_cycle", no_cycle)
     code, out, err = cli("mesh", "--uncertainty", "5000000")
     assert code == 2 and "at most 1048576" in err and "Traceback" not in err
+
+
+def test_a_constant_fixed_twice_is_refused_before_the_first_cycle(cli, monkeypatch):
+    import memstribo.simulations.mesh.convergence as convergence
+
+    monkeypatch.setattr(convergence, "refined_cycle", lambda *a, **k: (_ for _ in ()).throw(AssertionError("ran")))
+    code, out, err = cli("mesh", "--uncertainty", "4", "--set", "bond_energy=4e-19", "--fix", "bond_energy")
+    assert code == 2 and "named twice" in err and "Traceback" not in err

@@ -170,7 +170,7 @@ def run(args, params):
                          f"of the parameter realisations), got {realisations:,}.")
     _check_parallel(args, uncertainty, realisations)
     if uncertainty is not None:
-        _check_study_size(args, params, options, uncertainty, realisations)
+        _check_study(args, params, options, uncertainty, realisations)
     roughness = roughness_of(args)
     if args.refine:  # the finest cycle of the self-refining one, and its checks (MODEL 7d)
         dataset, summary = refined_cycle(params, roughness, **options)
@@ -459,31 +459,37 @@ def _close(client, args) -> None:
         cluster.close()
 
 
-def _check_study_size(args, params, options, samples, realisations) -> None:
-    """Refuse a sample count the study would refuse, before the first cycle (and before a cluster starts)."""
+def _fixed(args) -> list[str]:
+    """The constants of ``--fix``."""
+    return [name.strip() for item in args.fix for name in item.split(",") if name.strip()]
+
+
+def _check_study(args, params, options, samples, realisations) -> None:
+    """Refuse what the study would refuse (its sample count, a constant fixed twice, a bad calibration file) before
+    the first cycle and before a cluster starts."""
+    from memstribo.errors import InputError
     from memstribo.uncertainty.study import DEFAULT_BUDGET, DEFAULT_REALISATIONS, _check_samples
 
     count = DEFAULT_BUDGET if samples == "auto" else int(samples)
     _check_samples(samples, realisations if args.realisations is not None else min(DEFAULT_REALISATIONS, count),
                    int(options["steps"] or params["mesh_steps"]))
-
-
-def _uncertainty(args, params, roughness, options, samples, realisations):
-    """Run :func:`memstribo.uncertainty.study.uncertainty_study` for ``--uncertainty``: (its keys shown, the result)."""
-    from memstribo.errors import InputError
-    from memstribo.uncertainty.study import uncertainty_study
-
-    fixed = [name.strip() for item in args.fix for name in item.split(",") if name.strip()]
-    for name in fixed:
+    for name in _fixed(args):
         if name in params and params.source(name) in ("--set",) or str(params.source(name) if name in params
                                                                          else "").startswith("config file"):
             raise InputError(f"the constant '{name}' is named twice: --fix {name} and a value given by "
                              f"{params.source(name)} (a given value is already fixed; drop --fix {name}).")
-    calibration = getattr(args, "calibration", None)
-    if calibration:
+    if getattr(args, "calibration", None):
         from memstribo.laboratory.posterior import calibration_kind
 
-        calibration_kind(calibration)  # a bad file is refused before the first cycle
+        calibration_kind(args.calibration)
+
+
+def _uncertainty(args, params, roughness, options, samples, realisations):
+    """Run :func:`memstribo.uncertainty.study.uncertainty_study` for ``--uncertainty``: (its keys shown, the result)."""
+    from memstribo.uncertainty.study import uncertainty_study
+
+    fixed = _fixed(args)
+    calibration = getattr(args, "calibration", None)
     from memstribo.job.workers import PARALLEL_SAMPLES
     from memstribo.uncertainty.study import DEFAULT_BUDGET
 
