@@ -234,3 +234,34 @@ def test_a_failed_mesh_stage_cancels_its_realisations_on_the_cluster(params, tmp
     mesh = next(record for record in result.stages if record.name == "mesh")
     assert mesh.status == "failed" and "a refused cycle" in mesh.message
     assert cancelled == [workers.ENSEMBLE_REALISATIONS]
+
+
+def test_a_wear_sweep_takes_the_contact_solves_its_states_repeat(params, monkeypatch):
+    """Issue 40: the wear states of one coating under the thesis conditions (no adhesion in the contact solve) differ
+    in bond energies only: every state after the first takes its rows' solves from the store, the same numbers as
+    without it; a store kept already (an uncertainty study's) is left kept."""
+    import contextlib
+
+    import xarray as xr
+
+    import memstribo.simulations.mesh.solve_cache as cache
+    from memstribo.parameters import THESIS_CONDITIONS
+    from memstribo.simulations.coating_wear import wear_sweep
+
+    conditions = params.updated(THESIS_CONDITIONS)
+    counts = []
+    original = cache.stop_keeping
+    monkeypatch.setattr(cache, "stop_keeping", lambda: counts.append(original()) or counts[-1])
+    kept = wear_sweep(conditions, "OTS", [0.0, 0.5, 1.0], steps=11)
+    assert len(counts) == 1 and counts[0]["misses"] > 0 and counts[0]["hits"] == 2 * counts[0]["misses"]
+    with monkeypatch.context() as patch:
+        patch.setattr(cache, "solves_kept", contextlib.nullcontext)
+        plain = wear_sweep(conditions, "OTS", [0.0, 0.5, 1.0], steps=11)
+    xr.testing.assert_identical(kept, plain)
+    cache.keep_solves()
+    try:
+        with cache.solves_kept():
+            pass
+        assert cache.kept_solves() == {"rows": 0, "bytes": 0, "hits": 0, "misses": 0} and cache._STATE["store"] is not None
+    finally:
+        original()

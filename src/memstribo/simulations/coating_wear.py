@@ -72,13 +72,16 @@ def wear_sweep(params, coating: Coating | str | None, wears, *, roughness=None, 
 
         states = tqdm(states, total=omega.size, desc="wear states", unit="cycle", file=sys.stderr, leave=False)
     known = {float(w): dataset for w, dataset in (known or {}).items()}
-    for i, w in states:  # one meshing-cycle simulation per wear state
-        dataset = known.get(float(w))
-        if dataset is None:
-            dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w))
-        summary = mesh.summarize(dataset)
-        for key in SWEEP_VARIABLES:
-            rows[key][i] = float(summary[key])
+    from memstribo.simulations.mesh.solve_cache import solves_kept
+
+    with solves_kept():  # a row's contact solve that another wear state repeats is taken, the same bits (issue 40)
+        for i, w in states:  # one meshing-cycle simulation per wear state
+            dataset = known.get(float(w))
+            if dataset is None:
+                dataset = mesh.simulate_mesh(params, roughness, steps=steps, coating=coating, wear=float(w))
+            summary = mesh.summarize(dataset)
+            for key in SWEEP_VARIABLES:
+                rows[key][i] = float(summary[key])
     sweep = xr.Dataset(
         {key: ("wear", rows[key], quantity_attrs(key)) for key in SWEEP_VARIABLES},
         coords={"wear": ("wear", omega, quantity_attrs("wear"))},
@@ -123,14 +126,22 @@ def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float 
     a few meshing-cycle runs (at most ``max_runs``; tolerance ``rtol`` on the cycle's mean COF).
     Raises :class:`InputError` if cof_elastic alone reaches the target.
     """
-    from memstribo.simulations import mesh
-
     if isinstance(coating, str):
         coating = get_coating(coating, params)
     if not (0 < target_cof < 10):
         raise InputError(f"target_cof must be a COF between 0 and 10, got {target_cof!r}.")
     current = coating
     history = []
+    from memstribo.simulations.mesh.solve_cache import solves_kept
+
+    with solves_kept():  # each run changes U_vdW only: its rows' contact solves are the first run's (same bits)
+        return _calibrate_runs(params, roughness, steps, current, target_cof, rtol, max_runs, history)
+
+
+def _calibrate_runs(params, roughness, steps, current, target_cof, rtol, max_runs, history):
+    """The runs of :func:`calibrate_vdw_bond_energy`."""
+    from memstribo.simulations import mesh
+
     for _ in range(max_runs):
         summary = mesh.summarize(mesh.simulate_mesh(params, roughness, steps=steps, coating=current, wear=0.0))
         cof, cof_elastic = float(summary["cof_mean"]), float(summary["cof_elastic"])
@@ -142,7 +153,7 @@ def calibrate_vdw_bond_energy(params, coating: Coating | str, target_cof: float 
                              f"does not leave room for the target {target_cof:g}.")
         current = current.updated(vdw_bond_energy=current.vdw_bond_energy * (target_cof - cof_elastic)
                                   / (cof - cof_elastic))
-    return current, {"vdw_bond_energy_before": coating.vdw_bond_energy,
+    return current, {"vdw_bond_energy_before": history[0][0],
                      "vdw_bond_energy_after": current.vdw_bond_energy,
                      "cof_before": history[0][1], "cof_after": history[-1][1], "runs": len(history),
                      "converged": abs(history[-1][1] - target_cof) <= rtol * target_cof}

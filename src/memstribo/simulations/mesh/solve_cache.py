@@ -13,13 +13,14 @@ the result is that of a new solve, bit-identical); the least recently used are d
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import threading
 from collections import OrderedDict
 
 import numpy as np
 
-__all__ = ["keep_solves", "stop_keeping", "kept_solves", "solve_digest", "lookup", "store", "DEFAULT_BYTES"]
+__all__ = ["keep_solves", "stop_keeping", "solves_kept", "kept_solves", "solve_digest", "lookup", "store", "DEFAULT_BYTES"]
 
 #: bytes of solves kept by default per process (a default cycle's row: ~0.9 MB; 256 MiB: ~28 cycles of 10 rows)
 DEFAULT_BYTES = 256 * 2**20
@@ -42,6 +43,21 @@ def stop_keeping() -> dict:
     counts = {"hits": _STATE["hits"], "misses": _STATE["misses"]}
     _STATE.update(store=None, bytes=0, max_bytes=0, hits=0, misses=0)
     return counts
+
+
+@contextlib.contextmanager
+def solves_kept(max_bytes: int = DEFAULT_BYTES):
+    """Keep the rows' contact solves inside a ``with`` block (cycles that differ in nothing the contact solve reads:
+    the wear states of one coating, a calibration's bond energies); a store kept already (an enclosing uncertainty
+    study) stays as it is, and is not stopped at the end."""
+    if _STATE["store"] is not None:
+        yield
+        return
+    keep_solves(max_bytes)
+    try:
+        yield
+    finally:
+        stop_keeping()
 
 
 def kept_solves() -> dict:
