@@ -50,4 +50,5 @@ def test_docs_build_as_one_site_without_warnings(tmp_path):
     assert (html / "model.html").is_file() and (html / "validation.html").is_file()  # the Markdown pages
     notebook = (html / "examples" / "worked_example.html").read_text(encoding="utf-8")
     assert "OTS intact: COF" in notebook and "stiction returns at Omega" in notebook  # executed: its outputs
-    assert notebook.count("<img") >= 3  # and its figures
+    assert notebook.count("<img") >= 4  # and its four figures (the AFM map, the cycle twice, the wear sweep)
+    assert "Traceback" not in notebook and "CellExecutionError" not in notebook
