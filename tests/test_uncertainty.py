@@ -411,11 +411,15 @@ def test_cli_analysis_options():
     assert _solve_sets(argparse.Namespace(solve_sets="3", calibration=None)) == 3
 
 
-def test_pairs_sharing_a_solve_give_the_same_probability_within_its_interval(params):
+def test_pairs_sharing_a_solve_give_the_same_probability_within_its_interval():
     """The default design of ``mesh --uncertainty`` and the run (issue 40 item 2): two constant sets share the solved
     constants; P(stiction) lies within the interval of every set solved apart and vice versa, at about half the
-    solves, and the interval carries the design effect (11-step cycles, where the verdict is split)."""
+    solves, and the interval carries the design effect (the default set, 11-step cycles, where the verdict is
+    split)."""
+    from memstribo.parameters import get_parameter_values
     from memstribo.uncertainty.study import uncertainty_study
+
+    params = get_parameter_values()  # the default vdW rule, as docs/uncertainty.md quotes
 
     kwargs = {"samples": 32, "realisations": 2, "steps": 11, "sensitivity": False}
     apart = uncertainty_study(params, **kwargs)
@@ -426,6 +430,10 @@ def test_pairs_sharing_a_solve_give_the_same_probability_within_its_interval(par
         assert low <= other["stiction_probability"] <= high
     assert pairs["solves"] == 2 + 2 * 8 and apart["solves"] >= 2 + 2 * 16 - 2  # nominal + solves (few repeats)
     assert pairs["solve_sets"] == 8 and apart["solve_sets"] is None
+    # the counts docs/uncertainty.md quotes ("Fewer solves, an honest interval")
+    assert (apart["stiction_count"], pairs["stiction_count"]) == (14, 13)
+    assert (apart["solves"], pairs["solves"]) == (34, 18)
+    assert pairs["design_effect"] == pytest.approx(1.72, abs=0.005)
     assert pairs["design_effect"] >= 1.0 and apart["design_effect"] == 1.0
 
 
