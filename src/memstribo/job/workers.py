@@ -31,13 +31,11 @@ RUN_CRITICAL = "rescaled"
 
 
 def machine_cores() -> int:
-    """The cores this process may run on (its CPU affinity where the system has one)."""
-    import os
+    """The cores this process may run on (its CPU affinity where the system has one): the rule the cycle's row
+    threads use (:mod:`memstribo.simulations.mesh.threads`), one place for both."""
+    from memstribo.simulations.mesh.threads import _cores
 
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except (AttributeError, OSError):  # pragma: no cover - not Linux
-        return max(1, os.cpu_count() or 1)
+    return _cores()
 
 
 def stage_cluster(samples, stage: str, threshold: int = PARALLEL_SAMPLES):
